@@ -1,0 +1,68 @@
+#pragma once
+// Places the posts of a DEM grid in the scene's local Cartesian frame.
+// Georeferenced rasters go map CRS -> WGS84 (GDAL/OSR) -> ECEF -> ENU
+// (GeographicLib), keeping Earth curvature; rasters without a CRS are taken
+// as local metres relative to a map origin.
+//
+// Post order: raster rows run north to south, VTK's j index south to north,
+// so grid point (i, j) is raster post (i, ny - 1 - j). For a north-up raster
+// this makes the grid right-handed and its cell normals point up.
+
+#include "geo_transform.h"
+#include "local_frame.h"
+#include "map_projection.h"
+
+#include <cstddef>
+#include <memory>
+
+namespace terralux
+{
+/// The posts of a (windowed, subsampled) DEM grid and where they are.
+struct GridGeoreference
+{
+  int nx = 0;
+  int ny = 0;
+  /// Pixel (i, row) of this transform is centred on post (i, row), raster order.
+  GeoTransform geoTransform;
+};
+
+/// Fractional raster position of the grid centre and the ground height there.
+struct GridCentre
+{
+  double col = 0.0; ///< pixel-corner convention: the centre post of a 3-wide grid is 1.5
+  double row = 0.0;
+  double heightM = 0.0;
+};
+
+/// Centre of the grid and its ground height: bilinear between the surrounding
+/// posts when all are valid, else the nearest valid post. Heights are raster
+/// order with NaN for no data; throws Error when no post is valid.
+template <typename HeightT>
+GridCentre findGridCentre(int nx, int ny, const HeightT* heights);
+
+/// Geodetic position of a fractional raster position (pixel-corner convention).
+GeodeticPoint geodeticOfPixel(
+  const GeoTransform& geoTransform, MapProjection& projection, double col, double row, double heightM);
+
+class TerrainPlacement
+{
+public:
+  /// Georeferenced placement about a geodetic frame.
+  TerrainPlacement(const GridGeoreference& grid, const MapProjection& projection, const LocalFrame& frame);
+  /// Local metres: x = X - mapOrigin[0], y = Y - mapOrigin[1], z = h - mapOrigin[2].
+  TerrainPlacement(const GridGeoreference& grid, const LocalPoint& mapOrigin);
+  ~TerrainPlacement();
+
+  /// Writes 3 * nx * ny coordinates in VTK order (see above). No-data posts (NaN)
+  /// are put at holeHeightM so that no spike or NaN reaches the geometry; callers
+  /// blank them. Runs in parallel; results do not depend on the thread count.
+  template <typename HeightT, typename PointT>
+  void place(const HeightT* heights, double holeHeightM, PointT* xyz) const;
+
+private:
+  GridGeoreference Grid;
+  std::unique_ptr<MapProjection> Projection; // null for local metres
+  std::unique_ptr<LocalFrame> Frame;
+  LocalPoint MapOrigin{ 0.0, 0.0, 0.0 };
+};
+} // namespace terralux

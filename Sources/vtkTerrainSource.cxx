@@ -1,0 +1,532 @@
+#include "vtkTerrainSource.h"
+
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "dem_raster.h"
+#include "error.h"
+#include "local_frame.h"
+#include "map_projection.h"
+#include "terrain_placement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <limits>
+#include <memory>
+
+vtkStandardNewMacro(vtkTerrainSource);
+
+// What RequestInformation and RequestData agree to read.
+struct vtkTerrainSource::RasterRequest
+{
+  std::unique_ptr<terralux::DemRaster> raster;
+  terralux::PixelWindow window;
+  int nx = 0;
+  int ny = 0;
+  bool clipped = false; // the PixelWindow reached beyond the raster
+};
+
+namespace
+{
+template <typename ArrayT>
+vtkSmartPointer<vtkDataArray> newValues(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+void addDoubles(vtkFieldData* fieldData, const char* name, const double* values, int count)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfTuples(count);
+  for (int k = 0; k < count; ++k)
+  {
+    array->SetValue(k, values[k]);
+  }
+  fieldData->AddArray(array);
+}
+
+// Marks no-data posts (NaN heights) hidden; returns the lowest valid height.
+template <typename HeightT>
+double blankNoDataPosts(const HeightT* heights, vtkIdType count, vtkUnsignedCharArray* ghosts)
+{
+  double lowest = std::numeric_limits<double>::infinity();
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    const bool valid = std::isfinite(heights[k]);
+    ghosts->SetValue(k, valid ? 0 : vtkDataSetAttributes::HIDDENPOINT);
+    if (valid && heights[k] < lowest)
+    {
+      lowest = heights[k];
+    }
+  }
+  return lowest;
+}
+
+// Raster order (row 0 first) -> VTK order (j = ny - 1 - row), in place.
+template <typename T>
+void flipRows(T* values, int nx, int ny)
+{
+  for (int row = 0; row < ny / 2; ++row)
+  {
+    std::swap_ranges(values + static_cast<std::size_t>(row) * nx,
+      values + static_cast<std::size_t>(row + 1) * nx,
+      values + static_cast<std::size_t>(ny - 1 - row) * nx);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkTerrainSource::vtkTerrainSource()
+  : FileName(nullptr)
+  , Band(1)
+  , PixelWindow{ 0, 0, 0, 0 }
+  , GeoBounds{ 0.0, 0.0, 0.0, 0.0 }
+  , Stride(1)
+  , GeoOrigin{ 0.0, 0.0, 0.0 }
+  , UseGeoOrigin(0)
+  , OutputPointsPrecision(SINGLE_PRECISION)
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+vtkTerrainSource::~vtkTerrainSource()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainSource::SetGeoOrigin(double latitude, double longitude, double height)
+{
+  if (this->GeoOrigin[0] != latitude || this->GeoOrigin[1] != longitude ||
+    this->GeoOrigin[2] != height || !this->UseGeoOrigin)
+  {
+    this->GeoOrigin[0] = latitude;
+    this->GeoOrigin[1] = longitude;
+    this->GeoOrigin[2] = height;
+    this->UseGeoOrigin = 1;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainSource::SetGeoOrigin(const double origin[3])
+{
+  this->SetGeoOrigin(origin[0], origin[1], origin[2]);
+}
+
+//------------------------------------------------------------------------------
+int vtkTerrainSource::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainSource::ResolveRasterRequest(RasterRequest& request)
+{
+  request.raster = std::make_unique<terralux::DemRaster>(this->FileName ? this->FileName : "", this->Band);
+  const terralux::RasterInfo& info = request.raster->info();
+  const bool useWindow = this->PixelWindow[2] > 0 && this->PixelWindow[3] > 0;
+  const bool useBounds = this->GeoBounds[0] < this->GeoBounds[1];
+  std::ostringstream message;
+
+  if (useWindow && useBounds)
+  {
+    throw terralux::Error("both PixelWindow and GeoBounds are set: use one of them "
+                          "(SetPixelWindow(0, 0, 0, 0) or SetGeoBounds(0, 0, 0, 0) clears it)");
+  }
+  if (useBounds)
+  {
+    const double* b = this->GeoBounds;
+    if (!(b[0] >= -90.0 && b[1] <= 90.0 && b[2] < b[3] && b[2] >= -180.0 && b[3] <= 360.0))
+    {
+      message << "GeoBounds (" << b[0] << ", " << b[1] << ", " << b[2] << ", " << b[3]
+              << ") is not a geographic box: give south < north within [-90, 90] and "
+                 "west < east, in degrees";
+      throw terralux::Error(message.str());
+    }
+    if (info.crsWkt.empty())
+    {
+      throw terralux::Error(std::string("GeoBounds needs a georeferenced raster, but '") +
+        this->FileName + "' has no CRS: use SetPixelWindow() instead");
+    }
+    terralux::MapProjection projection(info.crsWkt);
+    const auto map = projection.boundsFromGeographic(b[0], b[1], b[2], b[3]);
+    request.window = request.raster->windowCovering(map[0], map[1], map[2], map[3]);
+    if (request.window.isEmpty())
+    {
+      message << "GeoBounds (" << b[0] << ", " << b[1] << ", " << b[2] << ", " << b[3]
+              << ") does not overlap the raster '" << this->FileName << "' (an empty window)";
+      throw terralux::Error(message.str());
+    }
+  }
+  else if (useWindow)
+  {
+    const int* w = this->PixelWindow;
+    const int col0 = std::max(0, w[0]);
+    const int row0 = std::max(0, w[1]);
+    const long long col1 = std::min<long long>(info.width, static_cast<long long>(w[0]) + w[2]);
+    const long long row1 = std::min<long long>(info.height, static_cast<long long>(w[1]) + w[3]);
+    if (col1 <= col0 || row1 <= row0)
+    {
+      message << "PixelWindow (" << w[0] << ", " << w[1] << ", " << w[2] << ", " << w[3]
+              << ") does not overlap the " << info.width << " x " << info.height << " raster '"
+              << this->FileName << "' (an empty window)";
+      throw terralux::Error(message.str());
+    }
+    request.window = { col0, row0, static_cast<int>(col1 - col0), static_cast<int>(row1 - row0) };
+    request.clipped = request.window.col0 != w[0] || request.window.row0 != w[1] ||
+      request.window.width != w[2] || request.window.height != w[3];
+  }
+  else
+  {
+    request.window = request.raster->fullWindow();
+  }
+  request.nx = terralux::PixelWindow::postCount(request.window.width, this->Stride);
+  request.ny = terralux::PixelWindow::postCount(request.window.height, this->Stride);
+}
+
+//------------------------------------------------------------------------------
+int vtkTerrainSource::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo)
+  {
+    int inputExtent[6];
+    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), inputExtent);
+    extent[1] = inputExtent[1] - inputExtent[0];
+    extent[3] = inputExtent[3] - inputExtent[2];
+    extent[5] = inputExtent[5] - inputExtent[4];
+  }
+  else
+  {
+    // Errors are reported once, by RequestData, which also empties the output.
+    try
+    {
+      RasterRequest request;
+      this->ResolveRasterRequest(request);
+      extent[1] = request.nx - 1;
+      extent[3] = request.ny - 1;
+      extent[5] = 0;
+    }
+    catch (const terralux::Error&)
+    {
+    }
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
+{
+  RasterRequest request;
+  this->ResolveRasterRequest(request);
+  const terralux::RasterInfo& info = request.raster->info();
+  const int nx = request.nx;
+  const int ny = request.ny;
+  const vtkIdType count = static_cast<vtkIdType>(nx) * ny;
+  if (request.clipped)
+  {
+    vtkWarningMacro("PixelWindow extends beyond the " << info.width << " x " << info.height
+                                                      << " raster; it was clipped to it.");
+  }
+  this->UpdateProgress(0.05);
+
+  // The raster is read straight into the Elevation array (raster order first).
+  vtkSmartPointer<vtkDataArray> elevation = info.needsDoublePrecision
+    ? newValues<vtkDoubleArray>("Elevation", 1, count)
+    : newValues<vtkFloatArray>("Elevation", 1, count);
+  std::size_t valid = 0;
+  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
+  {
+    valid = request.raster->read(request.window, this->Stride, doubles->GetPointer(0));
+  }
+  else
+  {
+    valid = request.raster->read(
+      request.window, this->Stride, vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
+  }
+  if (valid == 0)
+  {
+    vtkErrorMacro("Every post of '" << this->FileName
+                                    << "' in the requested window is no data: choose another "
+                                       "window, band or file.");
+    return false;
+  }
+  this->UpdateProgress(0.4);
+  if (this->GetAbortExecute())
+  {
+    return false;
+  }
+
+  terralux::GridGeoreference grid;
+  grid.nx = nx;
+  grid.ny = ny;
+  grid.geoTransform =
+    info.geoTransform.window(request.window.col0, request.window.row0, this->Stride);
+
+  auto ghosts = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfTuples(count);
+  double lowest = 0.0;
+  terralux::GridCentre centre;
+  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
+  {
+    lowest = blankNoDataPosts(doubles->GetPointer(0), count, ghosts);
+    centre = terralux::findGridCentre(nx, ny, doubles->GetPointer(0));
+  }
+  else
+  {
+    const float* heights = vtkFloatArray::SafeDownCast(elevation)->GetPointer(0);
+    lowest = blankNoDataPosts(heights, count, ghosts);
+    centre = terralux::findGridCentre(nx, ny, heights);
+  }
+
+  vtkFieldData* fieldData = output->GetFieldData();
+  std::unique_ptr<terralux::TerrainPlacement> placement;
+  if (info.crsWkt.empty())
+  {
+    vtkWarningMacro("'" << this->FileName
+                        << "' has no coordinate reference system: its map coordinates are taken "
+                           "as local metres. Assign a CRS (gdal_edit.py -a_srs) to georeference it.");
+    double mapOrigin[3];
+    grid.geoTransform.pixelToMap(centre.col, centre.row, mapOrigin[0], mapOrigin[1]);
+    mapOrigin[2] = centre.heightM;
+    placement = std::make_unique<terralux::TerrainPlacement>(
+      grid, terralux::LocalPoint{ mapOrigin[0], mapOrigin[1], mapOrigin[2] });
+    addDoubles(fieldData, "LocalOrigin", mapOrigin, 3);
+  }
+  else
+  {
+    terralux::MapProjection projection(info.crsWkt);
+    terralux::GeodeticPoint origin{ this->GeoOrigin[0], this->GeoOrigin[1], this->GeoOrigin[2] };
+    if (!this->UseGeoOrigin)
+    {
+      origin = terralux::geodeticOfPixel(
+        grid.geoTransform, projection, centre.col, centre.row, centre.heightM);
+    }
+    const terralux::LocalFrame frame(origin);
+    placement = std::make_unique<terralux::TerrainPlacement>(grid, projection, frame);
+    const double originValues[3] = { origin.latitudeDeg, origin.longitudeDeg, origin.heightM };
+    addDoubles(fieldData, "GeoOrigin", originValues, 3);
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataType(this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
+  points->SetNumberOfPoints(count);
+  void* xyz = points->GetData()->GetVoidPointer(0);
+  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
+  {
+    if (points->GetDataType() == VTK_DOUBLE)
+      placement->place(doubles->GetPointer(0), lowest, static_cast<double*>(xyz));
+    else
+      placement->place(doubles->GetPointer(0), lowest, static_cast<float*>(xyz));
+    flipRows(doubles->GetPointer(0), nx, ny);
+  }
+  else
+  {
+    float* heights = vtkFloatArray::SafeDownCast(elevation)->GetPointer(0);
+    if (points->GetDataType() == VTK_DOUBLE)
+      placement->place(heights, lowest, static_cast<double*>(xyz));
+    else
+      placement->place(heights, lowest, static_cast<float*>(xyz));
+    flipRows(heights, nx, ny);
+  }
+  flipRows(ghosts->GetPointer(0), nx, ny);
+  this->UpdateProgress(0.9);
+
+  output->SetDimensions(nx, ny, 1);
+  output->SetPoints(points);
+  output->GetPointData()->AddArray(elevation);
+  output->GetPointData()->SetScalars(elevation);
+  if (valid < static_cast<std::size_t>(count))
+  {
+    output->GetPointData()->AddArray(ghosts);
+  }
+
+  auto crs = vtkSmartPointer<vtkStringArray>::New();
+  crs->SetName("CRS");
+  crs->InsertNextValue(info.crsWkt);
+  fieldData->AddArray(crs);
+  addDoubles(fieldData, "GeoTransform", grid.geoTransform.coefficients.data(), 6);
+  auto rasterSize = vtkSmartPointer<vtkIntArray>::New();
+  rasterSize->SetName("RasterSize");
+  rasterSize->InsertNextValue(nx);
+  rasterSize->InsertNextValue(ny);
+  fieldData->AddArray(rasterSize);
+  if (info.hasNoData)
+  {
+    addDoubles(fieldData, "NoDataValue", &info.noData, 1);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid* output)
+{
+  int dims[3];
+  input->GetDimensions(dims);
+  vtkDataArray* scalars = input->GetPointData()->GetScalars();
+  if (dims[0] < 1 || dims[1] < 1 || dims[2] != 1)
+  {
+    vtkErrorMacro("The input image must be a 2-D height field (dimensions nx x ny x 1), not "
+      << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
+    return false;
+  }
+  if (!scalars || scalars->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro("The input image needs one-component point scalars holding the heights.");
+    return false;
+  }
+  const vtkIdType count = input->GetNumberOfPoints();
+  vtkUnsignedCharArray* inputGhosts = input->GetPointGhostArray();
+  const bool useDouble = scalars->GetDataType() == VTK_DOUBLE ||
+    scalars->GetDataType() == VTK_INT || scalars->GetDataType() == VTK_UNSIGNED_INT ||
+    scalars->GetDataType() == VTK_LONG || scalars->GetDataType() == VTK_LONG_LONG;
+  vtkSmartPointer<vtkDataArray> elevation = useDouble
+    ? newValues<vtkDoubleArray>("Elevation", 1, count)
+    : newValues<vtkFloatArray>("Elevation", 1, count);
+  auto ghosts = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfTuples(count);
+
+  vtkIdType valid = 0;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    double h = scalars->GetComponent(k, 0);
+    if (inputGhosts && (inputGhosts->GetValue(k) & vtkDataSetAttributes::HIDDENPOINT))
+    {
+      h = std::numeric_limits<double>::quiet_NaN();
+    }
+    const bool isValid = std::isfinite(h);
+    elevation->SetComponent(k, 0, isValid ? h : std::numeric_limits<double>::quiet_NaN());
+    ghosts->SetValue(k, isValid ? 0 : vtkDataSetAttributes::HIDDENPOINT);
+    if (isValid)
+    {
+      ++valid;
+      lowest = std::min(lowest, h);
+    }
+  }
+  if (valid == 0)
+  {
+    vtkErrorMacro("Every height of the input image is NaN or blanked: nothing to build.");
+    return false;
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataType(this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
+  points->SetNumberOfPoints(count);
+  vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
+    double xyz[3];
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      input->GetPoint(k, xyz);
+      const double h = elevation->GetComponent(k, 0);
+      xyz[2] = std::isfinite(h) ? h : lowest;
+      points->SetPoint(k, xyz);
+    }
+  });
+
+  output->SetDimensions(dims[0], dims[1], 1);
+  output->SetPoints(points);
+  output->GetPointData()->AddArray(elevation);
+  output->GetPointData()->SetScalars(elevation);
+  if (valid < count)
+  {
+    output->GetPointData()->AddArray(ghosts);
+  }
+  if (this->UseGeoOrigin)
+  {
+    try
+    {
+      terralux::LocalFrame({ this->GeoOrigin[0], this->GeoOrigin[1], this->GeoOrigin[2] });
+    }
+    catch (const terralux::Error& error)
+    {
+      vtkErrorMacro("GeoOrigin: " << error.what());
+      output->Initialize();
+      return false;
+    }
+    addDoubles(output->GetFieldData(), "GeoOrigin", this->GeoOrigin, 3);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkTerrainSource::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkStructuredGrid* output = vtkStructuredGrid::GetData(outputVector, 0);
+  output->Initialize();
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+
+  bool ok = false;
+  try
+  {
+    ok = input ? this->ConvertHeightField(input, output) : this->ReadRaster(output);
+  }
+  catch (const terralux::Error& error)
+  {
+    vtkErrorMacro(<< error.what());
+    ok = false;
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory reading the DEM: use SetStride(), SetPixelWindow() or "
+                  "SetGeoBounds() to read fewer posts.");
+    ok = false;
+  }
+  if (!ok)
+  {
+    output->Initialize();
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Band: " << this->Band << "\n";
+  os << indent << "PixelWindow: (" << this->PixelWindow[0] << ", " << this->PixelWindow[1] << ", "
+     << this->PixelWindow[2] << ", " << this->PixelWindow[3] << ")\n";
+  os << indent << "GeoBounds: (" << this->GeoBounds[0] << ", " << this->GeoBounds[1] << ", "
+     << this->GeoBounds[2] << ", " << this->GeoBounds[3] << ")\n";
+  os << indent << "Stride: " << this->Stride << "\n";
+  os << indent << "GeoOrigin: (" << this->GeoOrigin[0] << ", " << this->GeoOrigin[1] << ", "
+     << this->GeoOrigin[2] << ")\n";
+  os << indent << "UseGeoOrigin: " << (this->UseGeoOrigin ? "On" : "Off") << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+}

@@ -1,0 +1,179 @@
+/**
+ * @class   vtkTerrainSource
+ * @brief   Georeferenced terrain from a DEM raster, in local east-north-up metres.
+ *
+ * vtkTerrainSource reads a digital elevation model with GDAL (GeoTIFF, SRTM .hgt,
+ * ESRI ASCII grid, USGS DEM, anything GDAL opens) and places every post in a local
+ * east-north-up (ENU) Cartesian frame in metres around a geographic origin: the
+ * raster's CRS is brought to WGS84 with GDAL/OSR, then geodetic coordinates go to
+ * ECEF and ENU with GeographicLib, so Earth curvature is kept (50 km from the
+ * origin, ground at constant ellipsoidal height lies about 196 m below the tangent
+ * plane). Rotated geotransforms are honoured. A raster without a CRS is taken as
+ * local metres (with a warning): x, y are map coordinates and z the height, all
+ * relative to the grid centre.
+ *
+ * Instead of a file, a vtkImageData height field (one scalar component, spacing in
+ * metres, no georeference) may be connected to the optional input port 0, e.g. the
+ * output of vtkDEMReader; its points keep the image's x, y and take the scalar as z.
+ *
+ * The output is a vtkStructuredGrid of dimensions (nx, ny, 1). Grid point (i, j)
+ * is raster post (i, ny - 1 - j): i runs along raster columns and j against raster
+ * rows, so for a north-up raster j grows northward and cell normals point up.
+ * Point data:
+ * - `Elevation`: the raster's values (float, or double for Float64/Int32 rasters),
+ *   NaN at no-data posts.
+ * - vtkGhostType: no-data posts are blanked (HIDDENPOINT), which hides every cell
+ *   that touches them; their points sit at the lowest valid height, never at the
+ *   file's no-data value.
+ *
+ * Field data, enough to write results back on the same raster grid:
+ * - `GeoOrigin` (latitude, longitude in degrees, height in metres above the WGS84
+ *   ellipsoid) of the ENU frame (absent for rasters without a CRS);
+ * - `CRS` (WKT of the raster's CRS, empty if none);
+ * - `GeoTransform` (6 values, GDAL convention, raster row order) of the output grid:
+ *   its pixel (i, row) is centred on grid point (i, ny - 1 - row), window and stride
+ *   included;
+ * - `RasterSize` (nx, ny);
+ * - `NoDataValue` (the band's no-data value, when it has one);
+ * - `LocalOrigin` (map x, y and height of the frame origin, rasters without a CRS).
+ *
+ * Subsetting is done by GDAL without reading the whole raster: a pixel window, a
+ * geographic box, and a stride that keeps every k-th post.
+ *
+ * @warning DEM heights are taken as heights above the WGS84 ellipsoid; geoid
+ * undulation (SRTM heights are above EGM96) shifts the whole scene by tens of metres
+ * at most, and its variation across a DEM is small.
+ *
+ * @warning Single-precision points (the default) are good to about 2 mm at 50 km
+ * from the origin; use SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION) for
+ * exact coordinates over large extents.
+ *
+ * @sa vtkGeodeticFrame vtkDEMReader vtkStructuredGrid
+ */
+
+#ifndef vtkTerrainSource_h
+#define vtkTerrainSource_h
+
+#include "TerraLuxSourcesModule.h" // For export macro
+#include "vtkStructuredGridAlgorithm.h"
+
+class vtkImageData;
+class vtkStructuredGrid;
+
+class TERRALUXSOURCES_EXPORT vtkTerrainSource : public vtkStructuredGridAlgorithm
+{
+public:
+  static vtkTerrainSource* New();
+  vtkTypeMacro(vtkTerrainSource, vtkStructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Set/Get the DEM file: any raster GDAL reads. Ignored when a vtkImageData is
+   * connected to input port 0. Default is nullptr.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the raster band holding the heights, numbered from 1. Default is 1.
+   */
+  vtkSetClampMacro(Band, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Band, int);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get a pixel window of the raster (first column, first row, width, height).
+   * A width or height of 0 or less selects the whole raster; a window partly outside
+   * the raster is clipped to it (with a warning). Default is (0, 0, 0, 0).
+   */
+  vtkSetVector4Macro(PixelWindow, int);
+  vtkGetVector4Macro(PixelWindow, int);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get a geographic box (south, north, west, east) in WGS84 degrees; the output
+   * covers the raster's pixels that overlap it. Used when south < north; cannot be
+   * combined with a PixelWindow. Default is (0, 0, 0, 0): unused.
+   */
+  vtkSetVector4Macro(GeoBounds, double);
+  vtkGetVector4Macro(GeoBounds, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the stride: every Stride-th post of the window is kept, starting with
+   * its first. Default is 1.
+   */
+  vtkSetClampMacro(Stride, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Stride, int);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the geographic origin of the ENU frame: latitude, longitude (degrees)
+   * and height above the WGS84 ellipsoid (metres). Setting it turns UseGeoOrigin on.
+   * Default is (0, 0, 0), unused: the origin is the grid centre at its ground height.
+   */
+  virtual void SetGeoOrigin(double latitude, double longitude, double height);
+  virtual void SetGeoOrigin(const double origin[3]);
+  vtkGetVector3Macro(GeoOrigin, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get whether GeoOrigin is the frame origin (on) or the grid centre at its
+   * ground height is (off). For a vtkImageData input, turning it on records
+   * GeoOrigin as the georeference of the image's local frame. Default is off.
+   */
+  vtkSetMacro(UseGeoOrigin, vtkTypeBool);
+  vtkGetMacro(UseGeoOrigin, vtkTypeBool);
+  vtkBooleanMacro(UseGeoOrigin, vtkTypeBool);
+  ///@}
+
+  /**
+   * Use the grid centre at its ground height as the frame origin (UseGeoOrigin off).
+   */
+  void SetGeoOriginToGridCenter() { this->SetUseGeoOrigin(0); }
+
+  ///@{
+  /**
+   * Set/Get the precision of the output points: vtkAlgorithm::SINGLE_PRECISION or
+   * vtkAlgorithm::DOUBLE_PRECISION. Default is SINGLE_PRECISION.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+protected:
+  vtkTerrainSource();
+  ~vtkTerrainSource() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName;
+  int Band;
+  int PixelWindow[4];
+  double GeoBounds[4];
+  int Stride;
+  double GeoOrigin[3];
+  vtkTypeBool UseGeoOrigin;
+  int OutputPointsPrecision;
+
+private:
+  vtkTerrainSource(const vtkTerrainSource&) = delete;
+  void operator=(const vtkTerrainSource&) = delete;
+
+  struct RasterRequest;
+  void ResolveRasterRequest(RasterRequest& request); // throws terralux::Error
+  bool ReadRaster(vtkStructuredGrid* output);
+  bool ConvertHeightField(vtkImageData* input, vtkStructuredGrid* output);
+};
+
+#endif

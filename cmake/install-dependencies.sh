@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Installs the Debian packages TerraLux needs and extracts the real test DEMs.
+# Idempotent: when everything is present it only checks and returns quickly.
+#
+# Usage: cmake/install-dependencies.sh [DATA_DIR]
+#   DATA_DIR (default: <repo>/Testing/Data/External) receives olinda_dem_utm25s.tif
+#   (r-cran-stars) and elev.tif (r-cran-terra), extracted with dpkg -x, R is not installed.
+set -euo pipefail
+
+repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+data_dir="${1:-${repo_dir}/Testing/Data/External}"
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libvtk9-dev python3-vtk9          # VTK 9.1 and its Python wrapping (never python3-paraview)
+  libglm-dev                        # vector maths in the engine
+  libembree-dev                     # ray casting (visibility)
+  libgeographiclib-dev              # geodetic <-> ECEF <-> ENU
+  libgdal-dev gdal-bin              # rasters, CRS (PROJ); gdalinfo for checks
+  libtbb-dev                        # vtkSMPTools backend
+  googletest libgtest-dev           # C++ unit tests
+  xvfb xauth                        # off-screen X for rendering
+  time                              # /usr/bin/time -v for the benchmarks
+)
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "install-dependencies: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# Real DEMs shipped inside R packages; unpack the .deb without installing R.
+extract_from_deb() { # package, path inside the package (below site-library), target file
+  local pkg="$1" inner="$2" target="$3"
+  [ -s "$target" ] && return 0
+  local tmp
+  tmp="$(mktemp -d)"
+  (cd "$tmp" && apt-get download -qq "$pkg" >/dev/null 2>&1) || {
+    "${sudo_cmd[@]}" apt-get update -qq
+    (cd "$tmp" && apt-get download -qq "$pkg" >/dev/null)
+  }
+  dpkg -x "$tmp"/"$pkg"_*.deb "$tmp/root"
+  local found
+  found="$(find "$tmp/root" -path "*/${inner}" | head -n 1)"
+  if [ -z "$found" ]; then
+    echo "install-dependencies: ${inner} not found in ${pkg}" >&2
+    rm -rf "$tmp"
+    return 1
+  fi
+  mkdir -p "$(dirname "$target")"
+  cp "$found" "$target"
+  rm -rf "$tmp"
+  echo "install-dependencies: extracted ${target}"
+}
+
+extract_from_deb r-cran-stars stars/tif/olinda_dem_utm25s.tif "${data_dir}/olinda_dem_utm25s.tif"
+extract_from_deb r-cran-terra terra/ex/elev.tif "${data_dir}/elev.tif"
