@@ -1,0 +1,178 @@
+// Engine tests: local ENU frame, geotransforms and map projections.
+#include "error.h"
+#include "geo_transform.h"
+#include "local_frame.h"
+#include "map_projection.h"
+
+#include <GeographicLib/Constants.hpp>
+#include <GeographicLib/Geocentric.hpp>
+#include <GeographicLib/UTMUPS.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace terralux;
+
+TEST(LocalFrame, OriginMapsToZero)
+{
+  const LocalFrame frame({ 45.0, 7.0, 1234.5 });
+  const LocalPoint p = frame.toLocal({ 45.0, 7.0, 1234.5 });
+  EXPECT_NEAR(p[0], 0.0, 1e-9);
+  EXPECT_NEAR(p[1], 0.0, 1e-9);
+  EXPECT_NEAR(p[2], 0.0, 1e-9);
+}
+
+TEST(LocalFrame, AxesPointEastNorthUp)
+{
+  const LocalFrame frame({ -8.0, -35.0, 0.0 });
+  const LocalPoint north = frame.toLocal({ -7.99, -35.0, 0.0 });
+  const LocalPoint east = frame.toLocal({ -8.0, -34.99, 0.0 });
+  EXPECT_GT(north[1], 1100.0); // 0.01 deg of latitude ~ 1.1 km
+  EXPECT_NEAR(north[0], 0.0, 1e-6);
+  EXPECT_GT(east[0], 1000.0);
+  // The parallel curves toward the pole: north offset x^2 tan(lat) / (2 N).
+  EXPECT_NEAR(east[1], east[0] * east[0] * std::tan(-8.0 * M_PI / 180) / (2 * 6378137.0), 1e-3);
+  const LocalPoint up = frame.toLocal({ -8.0, -35.0, 100.0 });
+  EXPECT_NEAR(up[2], 100.0, 1e-9);
+}
+
+// Curvature: ground at constant ellipsoidal height 50 km north of the origin lies
+// d^2 / (2 M) below the tangent plane (M: meridional radius of curvature), ~196 m.
+TEST(LocalFrame, CurvatureDropAtFiftyKilometres)
+{
+  const double latitude = 45.0;
+  const LocalFrame frame({ latitude, 10.0, 0.0 });
+  // Walk 50 km of tangent-plane distance north, then drop to the ellipsoid.
+  const GeodeticPoint above = frame.toGeodetic({ 0.0, 50000.0, 0.0 });
+  const LocalPoint ground = frame.toLocal({ above.latitudeDeg, above.longitudeDeg, 0.0 });
+  const double a = GeographicLib::Constants::WGS84_a();
+  const double f = GeographicLib::Constants::WGS84_f();
+  const double e2 = f * (2 - f);
+  const double s = std::sin(latitude * M_PI / 180.0);
+  const double meridionalRadius = a * (1 - e2) / std::pow(1 - e2 * s * s, 1.5);
+  const double expectedDrop = 50000.0 * 50000.0 / (2 * meridionalRadius);
+  EXPECT_NEAR(-ground[2], expectedDrop, 0.5);
+  EXPECT_NEAR(-ground[2], 196.0, 1.0);
+}
+
+TEST(LocalFrame, RoundTripFarFromOrigin)
+{
+  const LocalFrame frame({ 49.8, 6.1, 300.0 });
+  for (double d : { 1.0, 1e3, 1e5, 1e6 })
+  {
+    const LocalPoint local{ d, -0.5 * d, 0.01 * d };
+    const LocalPoint back = frame.toLocal(frame.toGeodetic(local));
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_NEAR(back[k], local[k], 1e-6 * std::max(1.0, d / 1e3));
+    }
+  }
+}
+
+TEST(LocalFrame, MatchesEcefDifferenceRotatedToEnu)
+{
+  // Independent construction: ECEF difference rotated by the ENU basis at the origin.
+  const double lat0 = 35.0, lon0 = 139.0, h0 = 40.0;
+  const LocalFrame frame({ lat0, lon0, h0 });
+  const auto& earth = GeographicLib::Geocentric::WGS84();
+  double x0, y0, z0, x1, y1, z1;
+  earth.Forward(lat0, lon0, h0, x0, y0, z0);
+  earth.Forward(35.2, 139.3, 900.0, x1, y1, z1);
+  const double phi = lat0 * M_PI / 180, lambda = lon0 * M_PI / 180;
+  const double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
+  const double east = -std::sin(lambda) * dx + std::cos(lambda) * dy;
+  const double north = -std::sin(phi) * std::cos(lambda) * dx - std::sin(phi) * std::sin(lambda) * dy +
+    std::cos(phi) * dz;
+  const double up = std::cos(phi) * std::cos(lambda) * dx + std::cos(phi) * std::sin(lambda) * dy +
+    std::sin(phi) * dz;
+  const LocalPoint p = frame.toLocal({ 35.2, 139.3, 900.0 });
+  EXPECT_NEAR(p[0], east, 1e-6);
+  EXPECT_NEAR(p[1], north, 1e-6);
+  EXPECT_NEAR(p[2], up, 1e-6);
+}
+
+TEST(LocalFrame, RejectsInvalidOrigins)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(LocalFrame({ nan, 0.0, 0.0 }), Error);
+  EXPECT_THROW(LocalFrame({ 0.0, nan, 0.0 }), Error);
+  EXPECT_THROW(LocalFrame({ 0.0, 0.0, std::numeric_limits<double>::infinity() }), Error);
+  EXPECT_THROW(LocalFrame({ 91.0, 0.0, 0.0 }), Error);
+  EXPECT_NO_THROW(LocalFrame({ 90.0, 0.0, 0.0 }));
+}
+
+TEST(GeoTransform, PixelMapRoundTripWithRotation)
+{
+  GeoTransform gt;
+  gt.coefficients = { 500000.0, 25.0, 5.0, 4000000.0, 3.0, -30.0 };
+  double x, y, col, row;
+  gt.pixelToMap(12.5, 7.25, x, y);
+  gt.mapToPixel(x, y, col, row);
+  EXPECT_NEAR(col, 12.5, 1e-9);
+  EXPECT_NEAR(row, 7.25, 1e-9);
+}
+
+TEST(GeoTransform, WindowKeepsPostCentres)
+{
+  GeoTransform gt;
+  gt.coefficients = { 1000.0, 10.0, 2.0, 2000.0, 1.0, -10.0 };
+  for (int stride : { 1, 2, 3, 7 })
+  {
+    const GeoTransform w = gt.window(4, 9, stride);
+    for (int i : { 0, 1, 5 })
+    {
+      for (int j : { 0, 2 })
+      {
+        double xw, yw, xo, yo;
+        w.pixelToMap(i + 0.5, j + 0.5, xw, yw);
+        gt.pixelToMap(4 + i * stride + 0.5, 9 + j * stride + 0.5, xo, yo);
+        EXPECT_NEAR(xw, xo, 1e-9);
+        EXPECT_NEAR(yw, yo, 1e-9);
+      }
+    }
+  }
+}
+
+TEST(GeoTransform, SingularIsRejected)
+{
+  GeoTransform gt;
+  gt.coefficients = { 0, 0, 0, 0, 0, 0 };
+  EXPECT_FALSE(gt.isValid());
+  double col, row;
+  EXPECT_THROW(gt.mapToPixel(1, 1, col, row), Error);
+}
+
+TEST(MapProjection, UtmSouthMatchesGeographicLib)
+{
+  MapProjection projection("EPSG:32725");
+  double x[2] = { 288776.25, 298765.591 };
+  double y[2] = { 9120760.75, 9110771.409 };
+  const double x0[2] = { x[0], x[1] }, y0[2] = { y[0], y[1] };
+  projection.toGeographic(2, x, y);
+  for (int k = 0; k < 2; ++k)
+  {
+    double lat, lon;
+    GeographicLib::UTMUPS::Reverse(25, false, x0[k], y0[k], lat, lon);
+    EXPECT_NEAR(x[k], lon, 1e-9);
+    EXPECT_NEAR(y[k], lat, 1e-9);
+  }
+  projection.fromGeographic(2, x, y);
+  EXPECT_NEAR(x[0], x0[0], 1e-6);
+  EXPECT_NEAR(y[1], y0[1], 1e-6);
+}
+
+TEST(MapProjection, GeographicAxisOrderIsLongitudeFirst)
+{
+  MapProjection projection("EPSG:4326");
+  EXPECT_TRUE(projection.isGeographic());
+  double x = 6.0, y = 49.5;
+  projection.toGeographic(1, &x, &y);
+  EXPECT_DOUBLE_EQ(x, 6.0);
+  EXPECT_DOUBLE_EQ(y, 49.5);
+}
+
+TEST(MapProjection, BadDefinitionsThrow)
+{
+  EXPECT_THROW(MapProjection("not a crs"), Error);
+}
