@@ -1,0 +1,33 @@
+"""Helpers shared by the Python tests: paths and error capture."""
+import os
+import tempfile
+
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING
+
+EXTERNAL_DATA_DIR = os.environ.get("TERRALUX_EXTERNAL_DATA_DIR", "")
+OLINDA = os.path.join(EXTERNAL_DATA_DIR, "olinda_dem_utm25s.tif")
+LUXEMBOURG = os.path.join(EXTERNAL_DATA_DIR, "elev.tif")
+
+
+def scratch_dir():
+    """A fresh folder for files a test writes."""
+    return tempfile.mkdtemp(prefix="terralux-py-")
+
+
+class ErrorCatcher:
+    """Collects vtkErrorMacro messages of an algorithm (and its executive)."""
+
+    def __init__(self, vtk_object):
+        self.messages = []
+        vtk_object.AddObserver("ErrorEvent", self._record)
+        if hasattr(vtk_object, "GetExecutive"):
+            vtk_object.GetExecutive().AddObserver("ErrorEvent", self._record)
+
+    # VTK passes the message only to observers that ask for it as call data.
+    @calldata_type(VTK_STRING)
+    def _record(self, caller, event, message=None):
+        self.messages.append(str(message))
+
+    def text(self):
+        return "\n".join(self.messages)
