@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Command (2) of the README: install what is needed, build, and run every test:
+# C++ (GoogleTest), Python and install tests, then the C++ tests again built with
+# AddressSanitizer and UndefinedBehaviorSanitizer.
+#   TERRALUX_BUILD_DIR   build folder (default: <repo>/build); the sanitizer build
+#                        goes to <that>-asan
+set -euo pipefail
+repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build_dir="${TERRALUX_BUILD_DIR:-${repo_dir}/build}"
+jobs="$(nproc)"
+
+bash "${repo_dir}/cmake/install-dependencies.sh"
+
+echo "== build (Release) in ${build_dir}"
+cmake -S "${repo_dir}" -B "${build_dir}" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+cmake --build "${build_dir}" -j "${jobs}"
+echo "== tests: C++, Python, install"
+ctest --test-dir "${build_dir}" --output-on-failure -j "${jobs}"
+
+echo "== build (AddressSanitizer + UndefinedBehaviorSanitizer) in ${build_dir}-asan"
+cmake -S "${repo_dir}" -B "${build_dir}-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DPython3_EXECUTABLE=/usr/bin/python3 -DTERRALUX_SANITIZE=ON -DTERRALUX_WRAP_PYTHON=OFF >/dev/null
+cmake --build "${build_dir}-asan" -j "${jobs}"
+echo "== tests: C++ under sanitizers"
+ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1" \
+UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+  ctest --test-dir "${build_dir}-asan" -L cxx --output-on-failure -j "${jobs}"
