@@ -1,0 +1,19 @@
+#pragma once
+// Generated test terrain: fractal (diamond-square) heights with a fixed seed, so
+// scale benchmarks run on the same "real-looking" DEM every time.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace terralux_bench
+{
+/// n = 2^k + 1 posts per side; roughness in (0, 1) (0.5 ~ natural terrain);
+/// heights in metres, about reliefM from lowest to highest.
+std::vector<float> fractalHeights(int n, std::uint32_t seed, double roughness, double reliefM);
+
+/// Writes heights as a float32 GeoTIFF in UTM zone 32N (EPSG:32632) with the given
+/// post spacing, its upper-left corner at (easting, northing).
+void writeGeoTiff(const std::string& path, int n, const std::vector<float>& heights, double spacingM,
+  double easting, double northing);
+} // namespace terralux_bench
