@@ -264,16 +264,16 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   vtkSmartPointer<vtkDataArray> elevation = info.needsDoublePrecision
     ? newValues<vtkDoubleArray>("Elevation", 1, count)
     : newValues<vtkFloatArray>("Elevation", 1, count);
-  std::size_t valid = 0;
-  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
-  {
-    valid = request.raster->read(request.window, this->Stride, doubles->GetPointer(0));
-  }
-  else
-  {
-    valid = request.raster->read(
-      request.window, this->Stride, vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
-  }
+  // Runs `work` on the heights as float* or double*, whichever the array holds.
+  auto withHeights = [&elevation](auto&& work) {
+    if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
+    {
+      return work(doubles->GetPointer(0));
+    }
+    return work(vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
+  };
+  const std::size_t valid = withHeights(
+    [&](auto* heights) { return request.raster->read(request.window, this->Stride, heights); });
   if (valid == 0)
   {
     vtkErrorMacro("Every post of '" << this->FileName
@@ -298,17 +298,10 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   ghosts->SetNumberOfTuples(count);
   double lowest = 0.0;
   terralux::GridCentre centre;
-  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
-  {
-    lowest = blankNoDataPosts(doubles->GetPointer(0), count, ghosts);
-    centre = terralux::findGridCentre(nx, ny, doubles->GetPointer(0));
-  }
-  else
-  {
-    const float* heights = vtkFloatArray::SafeDownCast(elevation)->GetPointer(0);
+  withHeights([&](const auto* heights) {
     lowest = blankNoDataPosts(heights, count, ghosts);
     centre = terralux::findGridCentre(nx, ny, heights);
-  }
+  });
 
   vtkFieldData* fieldData = output->GetFieldData();
   std::unique_ptr<terralux::TerrainPlacement> placement;
@@ -343,23 +336,17 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   points->SetDataType(this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
   points->SetNumberOfPoints(count);
   void* xyz = points->GetData()->GetVoidPointer(0);
-  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
-  {
+  withHeights([&](auto* heights) {
     if (points->GetDataType() == VTK_DOUBLE)
-      placement->place(doubles->GetPointer(0), lowest, static_cast<double*>(xyz));
-    else
-      placement->place(doubles->GetPointer(0), lowest, static_cast<float*>(xyz));
-    flipRows(doubles->GetPointer(0), nx, ny);
-  }
-  else
-  {
-    float* heights = vtkFloatArray::SafeDownCast(elevation)->GetPointer(0);
-    if (points->GetDataType() == VTK_DOUBLE)
+    {
       placement->place(heights, lowest, static_cast<double*>(xyz));
+    }
     else
+    {
       placement->place(heights, lowest, static_cast<float*>(xyz));
+    }
     flipRows(heights, nx, ny);
-  }
+  });
   flipRows(ghosts->GetPointer(0), nx, ny);
   this->UpdateProgress(0.9);
 
