@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "local_frame.h"
+#include "vtkTerraLuxFieldData.h"
 
 #include <limits>
 
@@ -32,15 +33,14 @@ vtkGeodeticFrame::~vtkGeodeticFrame() = default;
 //------------------------------------------------------------------------------
 bool vtkGeodeticFrame::SetOriginFromFieldData(vtkDataObject* data)
 {
-  vtkFieldData* fieldData = data ? data->GetFieldData() : nullptr;
-  vtkDataArray* origin = fieldData ? fieldData->GetArray("GeoOrigin") : nullptr;
-  if (!origin || origin->GetNumberOfValues() != 3)
+  double origin[3];
+  if (!vtkTerraLuxFieldData::GetVector(data, "GeoOrigin", origin, 3))
   {
     vtkErrorMacro("The data object has no 3-value `GeoOrigin` field data: take it from a "
                   "vtkTerrainSource output of a georeferenced raster, or call SetOrigin().");
     return false;
   }
-  this->SetOrigin(origin->GetComponent(0, 0), origin->GetComponent(1, 0), origin->GetComponent(2, 0));
+  this->SetOrigin(origin);
   return true;
 }
 

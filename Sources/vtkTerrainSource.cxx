@@ -23,6 +23,7 @@
 #include "local_frame.h"
 #include "map_projection.h"
 #include "terrain_placement.h"
+#include "vtkTerraLuxFieldData.h"
 
 #include <algorithm>
 #include <cmath>
@@ -52,18 +53,6 @@ vtkSmartPointer<vtkDataArray> newValues(const char* name, int components, vtkIdT
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(tuples);
   return array;
-}
-
-void addDoubles(vtkFieldData* fieldData, const char* name, const double* values, int count)
-{
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(name);
-  array->SetNumberOfTuples(count);
-  for (int k = 0; k < count; ++k)
-  {
-    array->SetValue(k, values[k]);
-  }
-  fieldData->AddArray(array);
 }
 
 // Marks no-data posts (NaN heights) hidden; returns the lowest valid height.
@@ -315,7 +304,7 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
     mapOrigin[2] = centre.heightM;
     placement = std::make_unique<terralux::TerrainPlacement>(
       grid, terralux::LocalPoint{ mapOrigin[0], mapOrigin[1], mapOrigin[2] });
-    addDoubles(fieldData, "LocalOrigin", mapOrigin, 3);
+    vtkTerraLuxFieldData::AddVector(fieldData, "LocalOrigin", mapOrigin, 3);
   }
   else
   {
@@ -329,7 +318,7 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
     const terralux::LocalFrame frame(origin);
     placement = std::make_unique<terralux::TerrainPlacement>(grid, projection, frame);
     const double originValues[3] = { origin.latitudeDeg, origin.longitudeDeg, origin.heightM };
-    addDoubles(fieldData, "GeoOrigin", originValues, 3);
+    vtkTerraLuxFieldData::AddVector(fieldData, "GeoOrigin", originValues, 3);
   }
 
   vtkNew<vtkPoints> points;
@@ -363,7 +352,7 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   crs->SetName("CRS");
   crs->InsertNextValue(info.crsWkt);
   fieldData->AddArray(crs);
-  addDoubles(fieldData, "GeoTransform", grid.geoTransform.coefficients.data(), 6);
+  vtkTerraLuxFieldData::AddVector(fieldData, "GeoTransform", grid.geoTransform.coefficients.data(), 6);
   auto rasterSize = vtkSmartPointer<vtkIntArray>::New();
   rasterSize->SetName("RasterSize");
   rasterSize->InsertNextValue(nx);
@@ -371,7 +360,7 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   fieldData->AddArray(rasterSize);
   if (info.hasNoData)
   {
-    addDoubles(fieldData, "NoDataValue", &info.noData, 1);
+    vtkTerraLuxFieldData::AddValue(fieldData, "NoDataValue", info.noData);
   }
   return true;
 }
@@ -463,7 +452,7 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
       output->Initialize();
       return false;
     }
-    addDoubles(output->GetFieldData(), "GeoOrigin", this->GeoOrigin, 3);
+    vtkTerraLuxFieldData::AddVector(output->GetFieldData(), "GeoOrigin", this->GeoOrigin, 3);
   }
   return true;
 }

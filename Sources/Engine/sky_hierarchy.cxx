@@ -1,0 +1,214 @@
+#include "sky_hierarchy.h"
+
+#include "error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace terralux
+{
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+constexpr double halfPi = pi / 2.0;
+constexpr double twoPi = 2.0 * pi;
+
+// 3-point Gauss-Legendre on [-1, 1]: exact for polynomials of degree 5.
+const double gaussNodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
+const double gaussWeights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+} // namespace
+
+double SkyTexture::sample(double compassAzimuthRad, double altitudeRad, int band) const
+{
+  double x = std::fmod(compassAzimuthRad / twoPi, 1.0);
+  if (x < 0.0)
+    x += 1.0;
+  x *= (this->width - 1);
+  const double y = std::clamp(altitudeRad / halfPi, 0.0, 1.0) * (this->height - 1);
+  const int i0 = std::min(static_cast<int>(x), this->width - 2 < 0 ? 0 : this->width - 2);
+  const int j0 = std::min(static_cast<int>(y), this->height - 2 < 0 ? 0 : this->height - 2);
+  const int i1 = std::min(i0 + 1, this->width - 1);
+  const int j1 = std::min(j0 + 1, this->height - 1);
+  const double fx = x - i0, fy = y - j0;
+  auto at = [&](int i, int j) {
+    return this->values[(static_cast<std::size_t>(j) * this->width + i) * this->components + band];
+  };
+  return (1 - fy) * ((1 - fx) * at(i0, j0) + fx * at(i1, j0)) + fy * ((1 - fx) * at(i0, j1) + fx * at(i1, j1));
+}
+
+double SkyPatch::u0() const { return halfPi * this->iu / (1 << this->level); }
+double SkyPatch::u1() const { return halfPi * (this->iu + 1) / (1 << this->level); }
+double SkyPatch::v0() const { return twoPi * this->iv / (1 << this->level); }
+double SkyPatch::v1() const { return twoPi * (this->iv + 1) / (1 << this->level); }
+
+double SkyPatch::solidAngle() const
+{
+  return (this->v1() - this->v0()) * (std::sin(this->u1()) - std::sin(this->u0()));
+}
+
+Direction SkyPatch::direction() const
+{
+  return directionFromSkyParameters(0.5 * (this->u0() + this->u1()), 0.5 * (this->v0() + this->v1()));
+}
+
+void SkyPatch::children(SkyPatch out[4]) const
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    out[k] = { this->level + 1, 2 * this->iu + k / 2, 2 * this->iv + k % 2 };
+  }
+}
+
+Direction directionFromSkyParameters(double u, double v)
+{
+  // Compass azimuth = v + pi: v = 0 is south, v = pi/2 west.
+  return { -std::sin(v) * std::cos(u), -std::cos(v) * std::cos(u), std::sin(u) };
+}
+
+SkyHierarchy::SkyHierarchy(
+  const SkyModel& model, double diffuseHorizontalWm2, int finestLevel, const SkyTexture* texture)
+  : FinestLevel(finestLevel)
+  , Bands(texture ? texture->components : 1)
+{
+  if (finestLevel < 1 || finestLevel > 10)
+  {
+    throw Error("sky hierarchy level " + std::to_string(finestLevel) + " is out of range 1..10");
+  }
+  if (!(diffuseHorizontalWm2 >= 0.0) || !std::isfinite(diffuseHorizontalWm2))
+  {
+    throw Error("the diffuse horizontal irradiance must be a finite value >= 0 W/m^2");
+  }
+  if (texture && (texture->components != 1 && texture->components != 3))
+  {
+    throw Error("a sky texture has 1 or 3 components");
+  }
+  if (texture && (texture->width < 1 || texture->height < 1 ||
+                   texture->values.size() != static_cast<std::size_t>(texture->width) * texture->height * texture->components))
+  {
+    throw Error("the sky texture's size does not match its values");
+  }
+
+  // Finest cells: integrate over s = sin u (dOmega = ds dv) with 3x3 Gauss points.
+  const int side = cellsPerSide(finestLevel);
+  std::vector<double> modelIntegral(static_cast<std::size_t>(side) * side * this->Bands);
+  std::vector<double> horizontalWeighted(this->Bands, 0.0);
+  double modelHorizontal = 0.0;
+  for (int iu = 0; iu < side; ++iu)
+  {
+    const SkyPatch row{ finestLevel, iu, 0 };
+    const double s0 = std::sin(row.u0()), s1 = std::sin(row.u1());
+    for (int iv = 0; iv < side; ++iv)
+    {
+      const SkyPatch cell{ finestLevel, iu, iv };
+      const double v0 = cell.v0(), v1 = cell.v1();
+      for (int a = 0; a < 3; ++a)
+      {
+        const double s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * gaussNodes[a];
+        const double u = std::asin(std::clamp(s, 0.0, 1.0));
+        for (int b = 0; b < 3; ++b)
+        {
+          const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * gaussNodes[b];
+          const double weight = 0.25 * (s1 - s0) * (v1 - v0) * gaussWeights[a] * gaussWeights[b];
+          const double relative = model.relativeRadiance(directionFromSkyParameters(u, v));
+          modelHorizontal += weight * relative * s;
+          for (int band = 0; band < this->Bands; ++band)
+          {
+            const double modulation = texture ? texture->sample(std::fmod(v + pi, twoPi), u, band) : 1.0;
+            modelIntegral[(static_cast<std::size_t>(iu) * side + iv) * this->Bands + band] +=
+              weight * relative * modulation;
+            horizontalWeighted[band] += weight * relative * modulation * s;
+          }
+        }
+      }
+    }
+  }
+  if (!(modelHorizontal > 0.0) || !std::isfinite(modelHorizontal))
+  {
+    throw Error("the sky model gives no light on a horizontal plane; check its parameters");
+  }
+  this->Scale = diffuseHorizontalWm2 / modelHorizontal;
+  this->Horizontal.resize(this->Bands);
+  for (int band = 0; band < this->Bands; ++band)
+  {
+    this->Horizontal[band] = this->Scale * horizontalWeighted[band];
+  }
+
+  // Pyramid: finest averages, then solid-angle weighted averages upward, so every
+  // level integrates to the same total.
+  this->Pyramid.resize(finestLevel + 1);
+  auto& finest = this->Pyramid[finestLevel];
+  finest.resize(modelIntegral.size());
+  for (int iu = 0; iu < side; ++iu)
+  {
+    const double omega = SkyPatch{ finestLevel, iu, 0 }.solidAngle();
+    for (int iv = 0; iv < side; ++iv)
+      for (int band = 0; band < this->Bands; ++band)
+      {
+        const std::size_t k = (static_cast<std::size_t>(iu) * side + iv) * this->Bands + band;
+        finest[k] = this->Scale * modelIntegral[k] / omega;
+      }
+  }
+  for (int level = finestLevel - 1; level >= 0; --level)
+  {
+    const int n = cellsPerSide(level);
+    auto& cells = this->Pyramid[level];
+    const auto& fine = this->Pyramid[level + 1];
+    cells.assign(static_cast<std::size_t>(n) * n * this->Bands, 0.0);
+    for (int iu = 0; iu < n; ++iu)
+      for (int iv = 0; iv < n; ++iv)
+      {
+        const SkyPatch parent{ level, iu, iv };
+        SkyPatch kids[4];
+        parent.children(kids);
+        for (int band = 0; band < this->Bands; ++band)
+        {
+          double power = 0.0;
+          for (const SkyPatch& kid : kids)
+            power += kid.solidAngle() * fine[(static_cast<std::size_t>(kid.iu) * 2 * n + kid.iv) * this->Bands + band];
+          cells[(static_cast<std::size_t>(iu) * n + iv) * this->Bands + band] = power / parent.solidAngle();
+        }
+      }
+  }
+}
+
+double SkyHierarchy::finestAverage(int iu, int iv, int band) const
+{
+  const int side = cellsPerSide(this->FinestLevel);
+  iu = std::clamp(iu, 0, side - 1);
+  iv = ((iv % side) + side) % side; // azimuth wraps
+  return this->Pyramid[this->FinestLevel][(static_cast<std::size_t>(iu) * side + iv) * this->Bands + band];
+}
+
+double SkyHierarchy::radiance(const SkyPatch& patch, int band) const
+{
+  if (patch.level <= this->FinestLevel)
+  {
+    const int n = cellsPerSide(patch.level);
+    return this->Pyramid[patch.level][(static_cast<std::size_t>(patch.iu) * n + patch.iv) * this->Bands + band];
+  }
+  // Subsample: bilinear between finest-cell centres at the patch centre.
+  const int side = cellsPerSide(this->FinestLevel);
+  const double x = 0.5 * (patch.u0() + patch.u1()) / halfPi * side - 0.5;
+  const double y = 0.5 * (patch.v0() + patch.v1()) / twoPi * side - 0.5;
+  const int i0 = static_cast<int>(std::floor(x)), j0 = static_cast<int>(std::floor(y));
+  const double fx = std::clamp(x - i0, 0.0, 1.0), fy = y - j0;
+  return (1 - fx) * ((1 - fy) * this->finestAverage(i0, j0, band) + fy * this->finestAverage(i0, j0 + 1, band)) +
+    fx * ((1 - fy) * this->finestAverage(i0 + 1, j0, band) + fy * this->finestAverage(i0 + 1, j0 + 1, band));
+}
+
+double SkyHierarchy::planeIrradiance(const Direction& normal, int level, int band) const
+{
+  const int n = cellsPerSide(level);
+  double irradiance = 0.0;
+  for (int iu = 0; iu < n; ++iu)
+    for (int iv = 0; iv < n; ++iv)
+    {
+      const SkyPatch patch{ level, iu, iv };
+      const Direction d = patch.direction();
+      const double receiverFactor = std::max(0.0, normal[0] * d[0] + normal[1] * d[1] + normal[2] * d[2]);
+      irradiance += skyIrradianceContribution(receiverFactor, 1.0, patch.solidAngle(), this->radiance(patch, band));
+    }
+  return irradiance;
+}
+} // namespace terralux

@@ -1,0 +1,97 @@
+#pragma once
+// The hierarchical sky of paper section 5.1: a quadtree over the hemisphere in
+// altitude u in [0, pi/2] and azimuth v in [0, 2 pi) (measured westward from
+// south, the paper's parameter), with a pyramid of cell-averaged radiances.
+// Level k has 2^k x 2^k cells. Below the finest level radiance is subsampled
+// (bilinear between finest-level averages).
+//   Solid angle of [u0,u1] x [v0,v1]:  Omega = (v1 - v0)(sin u1 - sin u0)
+//   Irradiance from a patch:           dE = R S Omega L
+
+#include "sky_model.h"
+
+#include <vector>
+
+namespace terralux
+{
+/// An optional multiplier of the sky radiance over (compass azimuth, altitude):
+/// clouds or colour. values[(j * width + i) * components + band] is the sample at
+/// azimuth 360 i / (width - 1) degrees and altitude 90 j / (height - 1) degrees.
+struct SkyTexture
+{
+  int width = 0;
+  int height = 0;
+  int components = 1; ///< 1 or 3
+  std::vector<double> values;
+
+  /// Bilinear sample; azimuth wraps, altitude is clamped.
+  double sample(double compassAzimuthRad, double altitudeRad, int band) const;
+};
+
+/// One patch of the sky quadtree: level and cell indices (iu along altitude from the
+/// horizon, iv along v from south).
+struct SkyPatch
+{
+  int level = 0;
+  int iu = 0;
+  int iv = 0;
+
+  double u0() const;
+  double u1() const;
+  double v0() const;
+  double v1() const;
+  /// Omega = (v1 - v0)(sin u1 - sin u0), steradians.
+  double solidAngle() const;
+  /// Unit ENU vector toward the patch centre (mid altitude, mid azimuth).
+  Direction direction() const;
+  /// The four children at level + 1.
+  void children(SkyPatch out[4]) const;
+};
+
+/// Unit ENU vector toward altitude u and azimuth v (westward from south), radians.
+Direction directionFromSkyParameters(double u, double v);
+
+/// dE = R S Omega L: receiver factor R (cosine for a surface, 1 for a cluster) and
+/// scale factor S (1 for a surface, 1/4 for a cluster), paper sections 3 and 5.1.
+inline double skyIrradianceContribution(
+  double receiverFactor, double scaleFactor, double solidAngle, double radiance)
+{
+  return receiverFactor * scaleFactor * solidAngle * radiance;
+}
+
+class SkyHierarchy
+{
+public:
+  /// Samples `model` into 2^finestLevel x 2^finestLevel cell averages (Gauss-Legendre
+  /// quadrature inside each cell, so peaks are integrated, not point-sampled), scaled
+  /// so that the untextured sky gives diffuseHorizontalWm2 on a horizontal plane, then
+  /// multiplied by the texture if one is given (bands = its components).
+  /// Throws Error for finestLevel outside 1..10 or a negative or non-finite irradiance.
+  SkyHierarchy(const SkyModel& model, double diffuseHorizontalWm2, int finestLevel,
+    const SkyTexture* texture = nullptr);
+
+  int finestLevel() const { return this->FinestLevel; }
+  int bands() const { return this->Bands; }
+  /// Cells per side at a level.
+  static int cellsPerSide(int level) { return 1 << level; }
+
+  /// Cell-averaged radiance (W/m^2/sr) of a patch; below the finest level, subsampled.
+  double radiance(const SkyPatch& patch, int band) const;
+  /// Radiance scale: W/m^2/sr per unit of the model's relative radiance.
+  double radianceScale() const { return this->Scale; }
+  /// Irradiance on a horizontal plane from the whole sky (W/m^2), per band.
+  double horizontalIrradiance(int band) const { return this->Horizontal[band]; }
+
+  /// Irradiance on a plane with unit normal `normal` from all patches of a level:
+  /// sum of R S Omega L with R = max(0, n . d) at each patch centre, S = 1.
+  double planeIrradiance(const Direction& normal, int level, int band) const;
+
+private:
+  double finestAverage(int iu, int iv, int band) const;
+
+  int FinestLevel;
+  int Bands;
+  double Scale = 0.0;
+  std::vector<double> Horizontal;
+  std::vector<std::vector<double>> Pyramid; // [level][(iu * side + iv) * bands + band]
+};
+} // namespace terralux

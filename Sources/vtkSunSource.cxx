@@ -1,0 +1,193 @@
+#include "vtkSunSource.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+
+#include "clear_sky.h"
+#include "date_time.h"
+#include "error.h"
+#include "sky_model.h"
+#include "solar_position.h"
+#include "vtkTerraLuxFieldData.h"
+
+#include <cmath>
+
+vtkStandardNewMacro(vtkSunSource);
+
+//------------------------------------------------------------------------------
+vtkSunSource::vtkSunSource()
+  : DateTime(nullptr)
+  , Latitude(0.0)
+  , Longitude(0.0)
+  , Height(0.0)
+  , Pressure(1013.25)
+  , Temperature(12.0)
+  , AtmosphericRefraction(1)
+  , DeltaT(69.0)
+  , IrradianceModel(ESRA)
+  , LinkeTurbidity(3.0)
+  , SolarConstant(terralux::solarConstantWm2)
+  , UserNormalIrradiance(800.0)
+  , UserDiffuseHorizontalIrradiance(100.0)
+  , DisplayDistance(10000.0)
+  , Zenith(0.0)
+  , Azimuth(0.0)
+  , Direction{ 0.0, 0.0, 1.0 }
+  , NormalIrradiance(0.0)
+  , DiffuseHorizontalIrradiance(0.0)
+  , ExtraterrestrialIrradiance(0.0)
+  , EarthSunDistance(1.0)
+{
+  this->SetDateTime("2000-01-01T12:00:00Z");
+  this->SetNumberOfInputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+vtkSunSource::~vtkSunSource()
+{
+  this->SetDateTime(nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkSunSource::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkSunSource::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  double place[3] = { this->Latitude, this->Longitude, this->Height };
+  if (vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0))
+  {
+    if (!vtkTerraLuxFieldData::GetVector(input, "GeoOrigin", place, 3))
+    {
+      vtkErrorMacro("The input has no `GeoOrigin` field data (latitude, longitude, height): "
+                    "connect a vtkTerrainSource of a georeferenced DEM, or disconnect the input "
+                    "and set Latitude, Longitude and Height.");
+      return 0;
+    }
+  }
+
+  terralux::SolarPosition position;
+  terralux::DateTime instant;
+  try
+  {
+    instant = terralux::DateTime::parse(this->DateTime ? this->DateTime : "");
+    terralux::SolarPositionInput in;
+    in.julianDayUT = instant.julianDay();
+    in.deltaT = this->DeltaT;
+    in.latitudeDeg = place[0];
+    in.longitudeDeg = place[1];
+    in.heightM = place[2];
+    in.pressureHPa = this->Pressure;
+    in.temperatureC = this->Temperature;
+    in.refraction = this->AtmosphericRefraction != 0;
+    position = terralux::computeSolarPosition(in);
+  }
+  catch (const terralux::Error& error)
+  {
+    vtkErrorMacro(<< error.what());
+    return 0;
+  }
+
+  const double degree = 3.14159265358979323846 / 180.0;
+  const terralux::Direction direction =
+    terralux::directionFromZenithAzimuth(position.zenithDeg * degree, position.azimuthDeg * degree);
+  this->Zenith = position.zenithDeg;
+  this->Azimuth = position.azimuthDeg;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Direction[k] = direction[k];
+  }
+  this->EarthSunDistance = position.earthSunDistanceAU;
+  this->ExtraterrestrialIrradiance =
+    this->SolarConstant / (position.earthSunDistanceAU * position.earthSunDistanceAU);
+
+  terralux::ClearSkyIrradiance irradiance;
+  switch (this->IrradianceModel)
+  {
+    case ESRA:
+      irradiance = terralux::esraClearSky(90.0 - position.geometricZenithDeg, place[2],
+        this->LinkeTurbidity, this->ExtraterrestrialIrradiance);
+      break;
+    case INEICHEN_PEREZ:
+      irradiance = terralux::ineichenPerezClearSky(
+        position.zenithDeg, place[2], this->LinkeTurbidity, this->ExtraterrestrialIrradiance);
+      break;
+    default:
+      if (position.zenithDeg < 90.0)
+      {
+        irradiance.directNormalWm2 = this->UserNormalIrradiance;
+        irradiance.diffuseHorizontalWm2 = this->UserDiffuseHorizontalIrradiance;
+        irradiance.globalHorizontalWm2 =
+          irradiance.directNormalWm2 * std::cos(position.zenithDeg * degree) + irradiance.diffuseHorizontalWm2;
+      }
+  }
+  if (position.zenithDeg >= 90.0) // the apparent sun is below the horizon
+  {
+    irradiance = terralux::ClearSkyIrradiance{};
+  }
+  this->NormalIrradiance = irradiance.directNormalWm2;
+  this->DiffuseHorizontalIrradiance = irradiance.diffuseHorizontalWm2;
+
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(this->DisplayDistance * direction[0],
+    this->DisplayDistance * direction[1], this->DisplayDistance * direction[2]);
+  vtkNew<vtkCellArray> vertices;
+  const vtkIdType vertex = 0;
+  vertices->InsertNextCell(1, &vertex);
+  output->SetPoints(points);
+  output->SetVerts(vertices);
+
+  vtkFieldData* fieldData = output->GetFieldData();
+  vtkTerraLuxFieldData::AddVector(fieldData, "SunDirection", this->Direction, 3);
+  vtkTerraLuxFieldData::AddValue(fieldData, "SunZenith", this->Zenith);
+  vtkTerraLuxFieldData::AddValue(fieldData, "SunAzimuth", this->Azimuth);
+  vtkTerraLuxFieldData::AddValue(fieldData, "SunAltitude", 90.0 - this->Zenith);
+  vtkTerraLuxFieldData::AddValue(fieldData, "SunNormalIrradiance", this->NormalIrradiance);
+  vtkTerraLuxFieldData::AddValue(fieldData, "DiffuseHorizontalIrradiance", this->DiffuseHorizontalIrradiance);
+  vtkTerraLuxFieldData::AddValue(fieldData, "GlobalHorizontalIrradiance", irradiance.globalHorizontalWm2);
+  vtkTerraLuxFieldData::AddValue(fieldData, "ExtraterrestrialIrradiance", this->ExtraterrestrialIrradiance);
+  vtkTerraLuxFieldData::AddValue(fieldData, "EarthSunDistance", this->EarthSunDistance);
+  vtkTerraLuxFieldData::AddVector(fieldData, "GeoOrigin", place, 3);
+  auto utc = vtkSmartPointer<vtkStringArray>::New();
+  utc->SetName("DateTime");
+  utc->InsertNextValue(instant.toUtcString());
+  fieldData->AddArray(utc);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkSunSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DateTime: " << (this->DateTime ? this->DateTime : "(none)") << "\n";
+  os << indent << "Latitude: " << this->Latitude << "\n";
+  os << indent << "Longitude: " << this->Longitude << "\n";
+  os << indent << "Height: " << this->Height << "\n";
+  os << indent << "Pressure: " << this->Pressure << "\n";
+  os << indent << "Temperature: " << this->Temperature << "\n";
+  os << indent << "AtmosphericRefraction: " << (this->AtmosphericRefraction ? "On" : "Off") << "\n";
+  os << indent << "DeltaT: " << this->DeltaT << "\n";
+  os << indent << "IrradianceModel: " << this->IrradianceModel << "\n";
+  os << indent << "LinkeTurbidity: " << this->LinkeTurbidity << "\n";
+  os << indent << "SolarConstant: " << this->SolarConstant << "\n";
+  os << indent << "UserNormalIrradiance: " << this->UserNormalIrradiance << "\n";
+  os << indent << "UserDiffuseHorizontalIrradiance: " << this->UserDiffuseHorizontalIrradiance << "\n";
+  os << indent << "DisplayDistance: " << this->DisplayDistance << "\n";
+}

@@ -1,0 +1,22 @@
+// Field-data helpers shared by the TerraLux adapters (not wrapped): small named
+// double arrays such as `GeoOrigin` or `SunZenith`.
+#ifndef vtkTerraLuxFieldData_h
+#define vtkTerraLuxFieldData_h
+
+class vtkDataObject;
+class vtkFieldData;
+
+struct vtkTerraLuxFieldData
+{
+  /// Adds (or replaces) a double array of `count` values.
+  static void AddVector(vtkFieldData* fieldData, const char* name, const double* values, int count);
+  static void AddValue(vtkFieldData* fieldData, const char* name, double value)
+  {
+    AddVector(fieldData, name, &value, 1);
+  }
+  /// Reads exactly `count` finite values of a numeric field array; false if absent,
+  /// of another size, or not finite.
+  static bool GetVector(vtkDataObject* data, const char* name, double* values, int count);
+};
+
+#endif
