@@ -1,0 +1,296 @@
+// Engine tests: CIE and Perez sky models and the sky hierarchy against closed forms
+// and an independent brute-force integration.
+#include "cie_sky.h"
+#include "error.h"
+#include "perez_sky.h"
+#include "sky_hierarchy.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace terralux;
+
+namespace
+{
+constexpr double degree = M_PI / 180.0;
+
+// Brute force: midpoint rule over (zenith, azimuth), independent of the hierarchy.
+double horizontalIntegral(const SkyModel& model, int steps = 360)
+{
+  double sum = 0.0;
+  const double dz = 0.5 * M_PI / steps, da = 2.0 * M_PI / (4 * steps);
+  for (int i = 0; i < steps; ++i)
+  {
+    const double z = (i + 0.5) * dz;
+    for (int j = 0; j < 4 * steps; ++j)
+    {
+      const Direction d = directionFromZenithAzimuth(z, (j + 0.5) * da);
+      sum += model.relativeRadiance(d) * std::cos(z) * std::sin(z) * dz * da;
+    }
+  }
+  return sum;
+}
+
+// Horizontal irradiance from the finest-level cell averages: sum of L * int sin u dOmega.
+double mapHorizontalIrradiance(const SkyHierarchy& sky, int band = 0)
+{
+  const int n = SkyHierarchy::cellsPerSide(sky.finestLevel());
+  double sum = 0.0;
+  for (int iu = 0; iu < n; ++iu)
+    for (int iv = 0; iv < n; ++iv)
+    {
+      const SkyPatch p{ sky.finestLevel(), iu, iv };
+      const double weight =
+        (p.v1() - p.v0()) * 0.5 * (std::pow(std::sin(p.u1()), 2) - std::pow(std::sin(p.u0()), 2));
+      sum += sky.radiance(p, band) * weight;
+    }
+  return sum;
+}
+
+SkyPatch brightestFinestPatch(const SkyHierarchy& sky)
+{
+  const int n = SkyHierarchy::cellsPerSide(sky.finestLevel());
+  SkyPatch best;
+  double value = -1.0;
+  for (int iu = 0; iu < n; ++iu)
+    for (int iv = 0; iv < n; ++iv)
+    {
+      const SkyPatch p{ sky.finestLevel(), iu, iv };
+      if (sky.radiance(p, 0) > value)
+      {
+        value = sky.radiance(p, 0);
+        best = p;
+      }
+    }
+  return best;
+}
+} // namespace
+
+TEST(SkyHierarchy, SolidAnglesOfEveryLevelSumToTwoPi)
+{
+  for (int level = 0; level <= 9; ++level)
+  {
+    // Neumaier summation, so the test measures the solid angles, not rounding.
+    const int n = SkyHierarchy::cellsPerSide(level);
+    double sum = 0.0, compensation = 0.0;
+    for (int iu = 0; iu < n; ++iu)
+      for (int iv = 0; iv < n; ++iv)
+      {
+        const double omega = SkyPatch{ level, iu, iv }.solidAngle();
+        const double t = sum + omega;
+        compensation += std::abs(sum) >= omega ? (sum - t) + omega : (omega - t) + sum;
+        sum = t;
+      }
+    EXPECT_NEAR(sum + compensation, 2.0 * M_PI, 1e-12) << level;
+  }
+}
+
+TEST(SkyHierarchy, ParametersMapToCompassDirections)
+{
+  const Direction south = directionFromSkyParameters(0.0, 0.0);
+  const Direction west = directionFromSkyParameters(0.0, 0.5 * M_PI);
+  EXPECT_NEAR(south[1], -1.0, 1e-12);
+  EXPECT_NEAR(west[0], -1.0, 1e-12);
+  EXPECT_NEAR(directionFromSkyParameters(0.5 * M_PI, 1.0)[2], 1.0, 1e-12);
+}
+
+TEST(SkyHierarchy, UniformSkyClosedForms)
+{
+  const double radiance = 30.0;
+  const SkyHierarchy sky(UniformSky(), M_PI * radiance, 7);
+  EXPECT_NEAR(sky.radianceScale(), radiance, 1e-9); // E = pi L
+  EXPECT_NEAR(sky.horizontalIrradiance(0), M_PI * radiance, 1e-9);
+  for (int level : { 0, 3, 7, 9 })
+  {
+    EXPECT_NEAR(sky.radiance(SkyPatch{ level, 0, 0 }, 0), radiance, 1e-9);
+  }
+  // Tilted plane: pi L (1 + cos beta) / 2, summing R S Omega L over patches.
+  for (double tilt : { 0.0, 30.0, 60.0, 90.0 })
+  {
+    const Direction normal{ 0.0, std::sin(tilt * degree), std::cos(tilt * degree) };
+    const double expected = M_PI * radiance * (1.0 + std::cos(tilt * degree)) / 2.0;
+    EXPECT_NEAR(sky.planeIrradiance(normal, 9, 0) / expected, 1.0, 2e-3) << tilt;
+  }
+  EXPECT_DOUBLE_EQ(skyIrradianceContribution(0.5, 0.25, 2.0, 10.0), 2.5);
+}
+
+TEST(SkyHierarchy, TraditionalOvercastClosedForm)
+{
+  // E = 7 pi Lz / 9 for L = Lz (1 + 2 cos Z) / 3.
+  const SkyHierarchy sky(CieOvercastSky(), 100.0, 6);
+  EXPECT_NEAR(sky.radianceScale() * 7.0 * M_PI / 9.0, 100.0, 1e-9);
+  EXPECT_NEAR(mapHorizontalIrradiance(sky), 100.0, 0.05);
+}
+
+TEST(SkyHierarchy, EveryCieTypeIntegratesBackToItsDiffuseIrradiance)
+{
+  const Direction sun = directionFromZenithAzimuth(50.0 * degree, 200.0 * degree);
+  for (int type = 1; type <= 15; ++type)
+  {
+    const CieGeneralSky model(type, sun);
+    const SkyHierarchy sky(model, 120.0, 7);
+    // The map's own integral and an independent brute-force integral of the scaled model.
+    EXPECT_NEAR(mapHorizontalIrradiance(sky) / 120.0, 1.0, 1e-3) << type;
+    EXPECT_NEAR(sky.radianceScale() * horizontalIntegral(model) / 120.0, 1.0, 1e-3) << type;
+    // Every level of the pyramid carries the same power.
+    double total7 = 0.0, total2 = 0.0;
+    for (int level : { 2, 7 })
+    {
+      const int n = SkyHierarchy::cellsPerSide(level);
+      double& total = level == 2 ? total2 : total7;
+      for (int iu = 0; iu < n; ++iu)
+        for (int iv = 0; iv < n; ++iv)
+          total += sky.radiance(SkyPatch{ level, iu, iv }, 0) * SkyPatch{ level, iu, iv }.solidAngle();
+    }
+    EXPECT_NEAR(total2 / total7, 1.0, 1e-12);
+
+    const SkyPatch brightest = brightestFinestPatch(sky);
+    if (type >= 11)
+    {
+      EXPECT_LT(angleBetween(brightest.direction(), sun), 5.0 * degree) << type;
+    }
+    if (type == 1 || type == 3)
+    {
+      EXPECT_GT(brightest.u0(), 85.0 * degree) << type; // overcast: brightest at the zenith
+    }
+    if (type <= 4)
+    {
+      // Steep gradation: the zenith outshines the horizon even away from the sun.
+      const SkyPatch zenith{ 7, 127, 0 };
+      const SkyPatch horizonAwayFromSun{ 7, 0, 64 + 16 };
+      EXPECT_GT(sky.radiance(zenith, 0), 1.2 * sky.radiance(horizonAwayFromSun, 0)) << type;
+    }
+    if (type == 5) // sky of uniform luminance
+    {
+      EXPECT_NEAR(sky.radiance(SkyPatch{ 7, 127, 0 }, 0), sky.radiance(SkyPatch{ 7, 0, 9 }, 0), 1e-9);
+    }
+  }
+}
+
+TEST(SkyModels, CieType12IsRadianceGenskyClearSky)
+{
+  // Radiance's gensky +s (CIE clear sky), written from its documented formula:
+  //   L / Lz = (0.91 + 10 exp(-3 g) + 0.45 cos^2 g)(1 - exp(-0.32 / cos Z))
+  //          / ((0.91 + 10 exp(-3 Zs) + 0.45 cos^2 Zs)(1 - exp(-0.32)))
+  const double zs = 35.0 * degree;
+  const Direction sun = directionFromZenithAzimuth(zs, 120.0 * degree);
+  const CieGeneralSky cie(12, sun);
+  auto gensky = [&](const Direction& d) {
+    const double g = angleBetween(d, sun);
+    const double z = std::acos(d[2]);
+    auto f = [](double x) { return 0.91 + 10.0 * std::exp(-3.0 * x) + 0.45 * std::cos(x) * std::cos(x); };
+    return f(g) * (1.0 - std::exp(-0.32 / std::cos(z))) / (f(zs) * (1.0 - std::exp(-0.32)));
+  };
+  for (double z = 0.0; z < 89.0; z += 7.0)
+    for (double a = 0.0; a < 360.0; a += 30.0)
+    {
+      const Direction d = directionFromZenithAzimuth(z * degree, a * degree);
+      // gensky rounds 1 - 10 exp(-3 pi / 2) = 0.9102 to 0.91: agreement to 0.05 %.
+      EXPECT_NEAR(cie.relativeRadiance(d) / gensky(d), 1.0, 5e-4) << z << " " << a;
+    }
+}
+
+TEST(SkyModels, StableAtTheEdges)
+{
+  const Direction zenithSun{ 0.0, 0.0, 1.0 };
+  const Direction horizonSun{ 0.0, -1.0, 0.0 };
+  const Direction belowSun = directionFromZenithAzimuth(90.5 * degree, 180.0 * degree);
+  const Direction horizon{ 1.0, 0.0, 0.0 };
+  for (int type = 1; type <= 15; ++type)
+    for (const Direction& sun : { zenithSun, horizonSun, belowSun })
+    {
+      const CieGeneralSky model(type, sun);
+      for (const Direction& d : { horizon, zenithSun, horizonSun, sun })
+      {
+        const double value = model.relativeRadiance(d);
+        EXPECT_TRUE(std::isfinite(value) && value >= 0.0) << type;
+      }
+      const SkyHierarchy sky(model, 50.0, 5);
+      EXPECT_TRUE(std::isfinite(sky.radianceScale()));
+      EXPECT_NEAR(sky.horizontalIrradiance(0), 50.0, 1e-9);
+    }
+  for (const Direction& sun : { zenithSun, horizonSun, belowSun })
+  {
+    const PerezSky perez(sun, 600.0, 120.0, 1367.0);
+    for (const Direction& d : { horizon, zenithSun, horizonSun })
+    {
+      EXPECT_TRUE(std::isfinite(perez.relativeRadiance(d)));
+    }
+    const SkyHierarchy sky(perez, 120.0, 5);
+    EXPECT_NEAR(mapHorizontalIrradiance(sky), 120.0, 0.12);
+  }
+  EXPECT_THROW(CieGeneralSky(16, zenithSun), Error);
+  EXPECT_THROW(CieGeneralSky(0, zenithSun), Error);
+  EXPECT_THROW(SkyHierarchy(UniformSky(), NAN, 5), Error);
+  EXPECT_THROW(SkyHierarchy(UniformSky(), 10.0, 11), Error);
+  EXPECT_THROW(PerezSky(zenithSun, -1.0, 100.0, 1367.0), Error);
+}
+
+TEST(SkyModels, PerezClearAndOvercast)
+{
+  const Direction sun = directionFromZenithAzimuth(40.0 * degree, 150.0 * degree);
+  const PerezSky clear(sun, 850.0, 90.0, 1367.0);
+  EXPECT_GT(clear.clearness(), 6.2); // the clearest bin
+  const SkyHierarchy clearSky(clear, 90.0, 7);
+  EXPECT_LT(angleBetween(brightestFinestPatch(clearSky).direction(), sun), 5.0 * degree);
+  EXPECT_NEAR(mapHorizontalIrradiance(clearSky) / 90.0, 1.0, 1e-3);
+  EXPECT_NEAR(clearSky.radianceScale() * horizontalIntegral(clear) / 90.0, 1.0, 1e-3);
+
+  const PerezSky overcast(sun, 0.0, 150.0, 1367.0);
+  EXPECT_DOUBLE_EQ(overcast.clearness(), 1.0);
+  const SkyHierarchy overcastSky(overcast, 150.0, 7);
+  EXPECT_GT(brightestFinestPatch(overcastSky).u0(), 60.0 * degree); // high in the sky
+  EXPECT_NEAR(mapHorizontalIrradiance(overcastSky) / 150.0, 1.0, 1e-3);
+}
+
+TEST(SkyHierarchy, TextureModulatesRadiance)
+{
+  SkyTexture half;
+  half.width = 4;
+  half.height = 3;
+  half.components = 1;
+  half.values.assign(12, 0.5);
+  const SkyHierarchy dimmed(UniformSky(), 100.0, 6, &half);
+  EXPECT_NEAR(dimmed.horizontalIrradiance(0), 50.0, 1e-9);
+
+  // RGB texture: red 1, green 0.5, blue 0 everywhere; and a west-only cloud check.
+  SkyTexture colour;
+  colour.width = 2;
+  colour.height = 2;
+  colour.components = 3;
+  colour.values = { 1, 0.5, 0, 1, 0.5, 0, 1, 0.5, 0, 1, 0.5, 0 };
+  const SkyHierarchy tinted(CieOvercastSky(), 100.0, 6, &colour);
+  EXPECT_EQ(tinted.bands(), 3);
+  EXPECT_NEAR(tinted.horizontalIrradiance(0), 100.0, 1e-9);
+  EXPECT_NEAR(tinted.horizontalIrradiance(1), 50.0, 1e-9);
+  EXPECT_NEAR(tinted.horizontalIrradiance(2), 0.0, 1e-12);
+
+  // Azimuth samples: 0 deg (north) bright, 180 deg (south) dark.
+  SkyTexture northern;
+  northern.width = 3; // azimuth 0, 180, 360
+  northern.height = 2;
+  northern.components = 1;
+  northern.values = { 1, 0, 1, 1, 0, 1 };
+  const SkyHierarchy north(UniformSky(), 100.0, 6, &northern);
+  const SkyPatch southPatch{ 6, 5, 0 }; // v near 0: south
+  const SkyPatch northPatch{ 6, 5, 32 }; // v near pi: north
+  EXPECT_LT(north.radiance(southPatch, 0), 0.1 * north.radiance(northPatch, 0));
+}
+
+TEST(SkyHierarchy, SubsamplingBelowTheFinestLevel)
+{
+  const Direction sun = directionFromZenithAzimuth(30.0 * degree, 180.0 * degree);
+  const SkyHierarchy sky(CieGeneralSky(12, sun), 100.0, 5);
+  // A level-8 patch inside a level-5 cell: interpolated, close to its parent cell.
+  const SkyPatch fine{ 8, 8 * 10 + 3, 8 * 7 + 4 };
+  const SkyPatch parent{ 5, 10, 7 };
+  EXPECT_NEAR(sky.radiance(fine, 0) / sky.radiance(parent, 0), 1.0, 0.15);
+  // Children of a patch tile it.
+  SkyPatch kids[4];
+  parent.children(kids);
+  double omega = 0.0;
+  for (const SkyPatch& kid : kids)
+    omega += kid.solidAngle();
+  EXPECT_NEAR(omega, parent.solidAngle(), 1e-15);
+}
