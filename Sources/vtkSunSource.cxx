@@ -146,6 +146,7 @@ int vtkSunSource::RequestData(
   this->DiffuseHorizontalIrradiance = irradiance.diffuseHorizontalWm2;
 
   vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
   points->InsertNextPoint(this->DisplayDistance * direction[0],
     this->DisplayDistance * direction[1], this->DisplayDistance * direction[2]);
   vtkNew<vtkCellArray> vertices;
