@@ -5,11 +5,11 @@ import unittest
 class Package(unittest.TestCase):
     def test_classes_are_exported(self):
         import terralux
-        from terralux import vtkGeodeticFrame, vtkTerrainSource
+        from terralux import vtkGeodeticFrame, vtkSkySource, vtkSunSource, vtkTerrainSource
 
         self.assertTrue(terralux.__version__)
-        self.assertEqual(vtkTerrainSource().GetClassName(), "vtkTerrainSource")
-        self.assertEqual(vtkGeodeticFrame().GetClassName(), "vtkGeodeticFrame")
+        for cls in (vtkTerrainSource, vtkGeodeticFrame, vtkSunSource, vtkSkySource):
+            self.assertEqual(cls().GetClassName(), cls.__name__)
 
     def test_vtk_conventions(self):
         from terralux import vtkTerrainSource
