@@ -1,0 +1,82 @@
+#include "bf_oracle.h"
+
+#include "cluster.h"
+#include "sky_patch_element.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace terralux
+{
+namespace
+{
+constexpr double twoPi = 6.28318530717958647692;
+
+// Size on a common scale: fraction of the scene's area, or of the hemisphere.
+double relativeSize(const HElement& element, double sceneArea)
+{
+  if (element.kind() == HElement::Kind::SkyPatch)
+  {
+    return static_cast<const SkyPatchElement&>(element).solidAngle() / twoPi;
+  }
+  if (element.kind() == HElement::Kind::Sun)
+  {
+    return 0.0;
+  }
+  return element.area() / sceneArea;
+}
+} // namespace
+
+// Bounding radius of the cluster(s) of a link over the distance between centres.
+double clusterSizeOverDistance(const HElement& receiver, const HElement& sender)
+{
+  auto radius = [](const HElement& e) {
+    return e.isCluster() ? 0.5 * glm::length(static_cast<const Cluster&>(e).high() - static_cast<const Cluster&>(e).low()) : 0.0;
+  };
+  const double distance = glm::length(sender.centre() - receiver.centre());
+  const double size = std::max(radius(receiver), radius(sender));
+  return distance > 0.0 ? size / distance : std::numeric_limits<double>::infinity();
+}
+
+double linkPower(const HElement& receiver, const Link& link)
+{
+  const Spectrum e = link.sender->emittance();
+  const double emittance = std::max({ e[0], e[1], e[2] });
+  return emittance * link.kernel * link.visibility * receiver.area() * (link.directional ? 0.25 : 1.0);
+}
+
+Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSettings& settings)
+{
+  const double power = linkPower(receiver, link);
+  const bool partial = link.visibility > 0.0 && link.visibility < 1.0;
+  // Besides BF, the kernel's variation over the receiver bounds the error of using one
+  // value for the whole element (the bounds-based refinement the paper cites [10, 5]).
+  const Spectrum e = link.sender->emittance();
+  const double variation = std::max({ e[0], e[1], e[2] }) * link.kernelSpread * link.visibility * receiver.area();
+  // Cluster kernels are far-field estimates: near the other element they are refined
+  // while they carry any noticeable power.
+  const bool nearCluster = (receiver.isCluster() || link.sender->isCluster()) &&
+    clusterSizeOverDistance(receiver, *link.sender) > 0.25 && power > 0.01 * settings.powerThreshold;
+  const bool refine = nearCluster || power > settings.powerThreshold ||
+    variation > settings.powerThreshold * settings.partialVisibilityFactor ||
+    (partial && power > settings.partialVisibilityFactor * settings.powerThreshold);
+  if (!refine)
+  {
+    return Refinement::Keep;
+  }
+  HElement& sender = *link.sender;
+  const bool receiverSplits = receiver.canSplit();
+  const bool senderSplits = sender.canSplit();
+  if (!receiverSplits && !senderSplits)
+  {
+    return Refinement::Keep;
+  }
+  if (receiverSplits && senderSplits)
+  {
+    return relativeSize(receiver, settings.sceneArea) >= relativeSize(sender, settings.sceneArea)
+      ? Refinement::SplitReceiver
+      : Refinement::SplitSender;
+  }
+  return receiverSplits ? Refinement::SplitReceiver : Refinement::SplitSender;
+}
+} // namespace terralux

@@ -1,0 +1,121 @@
+#pragma once
+// The abstract hierarchical element of paper section 3.1: radiosity, reflectance,
+// area, incoming links, lazy split, sample points, and the receiver and scale
+// factors of section 5.1. Subclasses: PolygonElement (surfaces), Cluster (groups),
+// SkyPatchElement and SunElement (external sources, section 5).
+
+#include "radiosity_types.h"
+#include "sampling.h"
+
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace terralux
+{
+class HElement;
+
+/// Light transport from `sender` to the element that stores the link. Geometry is
+/// cached at creation: irradiance = kernel * visibility * sender->emittance().
+struct Link
+{
+  HElement* sender = nullptr;
+  double kernel = 0.0;     ///< form factor, R S Omega, or R S, per unit sender emittance
+  double kernelSpread = 0.0; ///< max - min of the kernel over the receiver's sample points
+  double visibility = 1.0; ///< fraction in [0, 1]
+  Vec3 direction{ 0.0 };   ///< unit vector toward the sender (receiver centre to sender)
+  bool directional = false; ///< received by a cluster: evaluated for each contained surface
+};
+
+/// A point on an element's surface with the surface's normal.
+struct SurfaceSample
+{
+  Vec3 position;
+  Vec3 normal;
+};
+
+class HElement
+{
+public:
+  enum class Kind
+  {
+    Polygon,
+    Cluster,
+    SkyPatch,
+    Sun
+  };
+
+  virtual ~HElement() = default;
+  virtual Kind kind() const = 0;
+  bool isSurface() const { return this->kind() == Kind::Polygon; }
+  bool isCluster() const { return this->kind() == Kind::Cluster; }
+  bool isExternal() const { return this->kind() == Kind::SkyPatch || this->kind() == Kind::Sun; }
+
+  /// Deterministic id (creation order), used to seed the link's samples.
+  std::uint64_t id() const { return this->Id; }
+  int level() const { return this->Level; }
+
+  /// Surface area in m^2 (clusters: the sum of their surfaces; sources: 0).
+  virtual double area() const { return 0.0; }
+  /// Centre used for directions and distances.
+  virtual Vec3 centre() const { return Vec3(0.0); }
+  /// What this element sends per unit kernel: radiosity B (W/m^2) for surfaces and
+  /// clusters, radiance (W/m^2/sr) for sky patches, flux density (W/m^2) for the sun.
+  virtual Spectrum emittance() const { return this->Radiosity; }
+
+  /// Children, created on the first call; empty when the element cannot split.
+  virtual const std::vector<HElement*>& children() = 0;
+  /// Whether children() would return anything (without creating them).
+  virtual bool canSplit() const = 0;
+
+  /// The k-th of n stratified points on the element's surfaces.
+  virtual SurfaceSample sample(int k, int n, SampleGenerator& random) const = 0;
+
+  // Receiver and scale factors (paper eq. 1): cosine and 1 for surfaces, 1 and 1/4
+  // for clusters.
+  virtual double receiverFactor(const Vec3& towardSender) const = 0;
+  virtual double scaleFactor() const { return 1.0; }
+
+  // State of the solution.
+  Spectrum Radiosity{};
+  std::array<Spectrum, lightCategories> Gathered{}; ///< irradiance gathered at this level
+  std::vector<Link> Incoming;
+
+protected:
+  HElement(std::uint64_t id, int level)
+    : Id(id)
+    , Level(level)
+  {
+  }
+
+private:
+  std::uint64_t Id;
+  int Level;
+};
+
+/// Owns every element and hands out ids in creation order; refinement creates
+/// elements sequentially, so ids (and the samples seeded by them) are deterministic.
+class ElementStore
+{
+public:
+  template <typename T, typename... Args>
+  T* make(int level, Args&&... args)
+  {
+    auto element = std::unique_ptr<T>(new T(this->Elements.size(), level, std::forward<Args>(args)...));
+    T* raw = element.get();
+    this->Elements.push_back(std::move(element));
+    return raw;
+  }
+  std::size_t size() const { return this->Elements.size(); }
+  const std::vector<std::unique_ptr<HElement>>& all() const { return this->Elements; }
+
+  /// Smallest area a polygon may be split into (its children's area), m^2.
+  double MinimumArea = 0.0;
+  /// Deepest sky-patch level.
+  int MaximumSkyLevel = 10;
+
+private:
+  std::vector<std::unique_ptr<HElement>> Elements;
+};
+} // namespace terralux

@@ -1,0 +1,238 @@
+#include "link_transport.h"
+
+#include "cluster.h"
+#include "point_form_factor.h"
+#include "polygon_element.h"
+#include "sky_patch_element.h"
+#include "visibility.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace terralux
+{
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+// Clusters of up to this many input polygons send through their polygons' exact
+// form factors rather than through the cluster model.
+constexpr std::size_t exactClusterSurfaces = 8;
+
+// Fraction of receiver samples that see a direction at infinity; samples on surfaces
+// facing away do not count (their cosine is zero anyway).
+template <typename DirectionOf>
+double visibilityToward(HElement& receiver, const Visibility& visibility, int samples,
+  SampleGenerator& random, DirectionOf directionOf)
+{
+  int counted = 0, visible = 0;
+  for (int k = 0; k < samples; ++k)
+  {
+    const SurfaceSample s = receiver.sample(k, samples, random);
+    const Vec3 d = directionOf(k);
+    if (glm::dot(s.normal, d) <= 0.0)
+    {
+      continue;
+    }
+    ++counted;
+    visible += !visibility.occludedToward(s.position, s.normal, d);
+  }
+  return counted ? static_cast<double>(visible) / counted : 0.0;
+}
+
+// The centre twice (it weighs most) and the points halfway to three corners, or the
+// centre and the points halfway to the four corners of a quad.
+std::array<Vec3, 5> receiverPoints(const PolygonElement& p)
+{
+  const Vec3 c = p.centre();
+  const Vec3* v = p.corners();
+  if (p.cornerCount() == 3)
+  {
+    return { c, c, 0.5 * (c + v[0]), 0.5 * (c + v[1]), 0.5 * (c + v[2]) };
+  }
+  return { c, 0.5 * (c + v[0]), 0.5 * (c + v[1]), 0.5 * (c + v[2]), 0.5 * (c + v[3]) };
+}
+
+// Integral of max(0, n . d) over a sky patch (3 x 3 Gauss points in sin u and v).
+double projectedSolidAngle(const HElement& receiver, const SkyPatch& patch)
+{
+  static const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
+  static const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+  const double s0 = std::sin(patch.u0()), s1 = std::sin(patch.u1());
+  const double v0 = patch.v0(), v1 = patch.v1();
+  double sum = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * nodes[a];
+    const double u = std::asin(std::min(1.0, std::max(0.0, s)));
+    for (int b = 0; b < 3; ++b)
+    {
+      const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * nodes[b];
+      const Direction d = directionFromSkyParameters(u, v);
+      sum += 0.25 * (s1 - s0) * (v1 - v0) * weights[a] * weights[b] * receiver.receiverFactor(Vec3(d[0], d[1], d[2]));
+    }
+  }
+  return sum;
+}
+
+double visibilityBetween(HElement& receiver, HElement& sender, const Visibility& visibility,
+  int samples, SampleGenerator& random)
+{
+  int counted = 0, visible = 0;
+  for (int k = 0; k < samples; ++k)
+  {
+    const SurfaceSample x = receiver.sample(k, samples, random);
+    const SurfaceSample y = sender.sample(k, samples, random);
+    const Vec3 xy = y.position - x.position;
+    if (glm::dot(x.normal, xy) <= 0.0 || glm::dot(y.normal, xy) >= 0.0)
+    {
+      continue; // the pair does not face each other
+    }
+    ++counted;
+    visible += !visibility.occluded(x.position, x.normal, y.position, y.normal);
+  }
+  return counted ? static_cast<double>(visible) / counted : 0.0;
+}
+
+// Cluster sender seen from `distance` along `towardSender`: its projected area toward
+// the receiver over pi r^2, regularised like a disc so the kernel stays below 1 at
+// short range.
+double clusterKernel(const HElement& sender, const Vec3& towardSender, double distance)
+{
+  const double projected = static_cast<const Cluster&>(sender).projectedArea(-towardSender);
+  return projected / (pi * distance * distance + projected);
+}
+} // namespace
+
+double surfaceKernel(const PolygonElement& receiver, const HElement& sender, double* spread)
+{
+  if (!sender.isSurface())
+  {
+    const auto& cluster = static_cast<const Cluster&>(sender);
+    if (cluster.surfaces().size() <= exactClusterSurfaces)
+    {
+      // Few surfaces: the sum of their exact form factors beats any cluster model.
+      double sum = 0.0, spreadSum = 0.0;
+      for (const PolygonElement* surface : cluster.surfaces())
+      {
+        double s = 0.0;
+        sum += surfaceKernel(receiver, *surface, &s);
+        spreadSum += s;
+      }
+      if (spread)
+        *spread = spreadSum;
+      return sum;
+    }
+    const Vec3 toSender = sender.centre() - receiver.centre();
+    const double distance = glm::length(toSender);
+    const Vec3 direction = distance > 0.0 ? toSender / distance : receiver.normal();
+    if (spread)
+      *spread = 0.0;
+    return clusterKernel(sender, direction, distance) * receiver.receiverFactor(direction);
+  }
+  const auto& polygon = static_cast<const PolygonElement&>(sender);
+  double low = 1.0, high = 0.0, sum = 0.0;
+  for (const Vec3& x : receiverPoints(receiver))
+  {
+    const double f =
+      pointToPolygonFormFactor(x, receiver.normal(), polygon.corners(), polygon.cornerCount(), polygon.normal());
+    low = std::min(low, f);
+    high = std::max(high, f);
+    sum += f;
+  }
+  if (spread)
+    *spread = high - low;
+  return sum / 5.0;
+}
+
+double kernelAtSurface(const PolygonElement& receiver, HElement& sender)
+{
+  switch (sender.kind())
+  {
+    case HElement::Kind::Sun:
+      return receiver.receiverFactor(static_cast<SunElement&>(sender).direction());
+    case HElement::Kind::SkyPatch:
+      return projectedSolidAngle(receiver, static_cast<SkyPatchElement&>(sender).patch());
+    default:
+      return surfaceKernel(receiver, sender);
+  }
+}
+
+int lightCategoryOf(const HElement& sender)
+{
+  switch (sender.kind())
+  {
+    case HElement::Kind::Sun:
+      return SunLight;
+    case HElement::Kind::SkyPatch:
+      return SkyLight;
+    default:
+      return ReflectedLight;
+  }
+}
+
+Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples)
+{
+  Link link;
+  link.sender = &sender;
+  link.directional = receiver.isCluster();
+  SampleGenerator random(linkSeed(receiver.id(), sender.id()));
+
+  if (sender.kind() == HElement::Kind::Sun)
+  {
+    const Vec3 d = static_cast<SunElement&>(sender).direction();
+    link.direction = d;
+    link.kernel = link.directional ? 1.0 : receiver.receiverFactor(d);
+    if (link.kernel > 0.0)
+    {
+      link.visibility = visibilityToward(receiver, visibility, samples, random, [&](int) { return d; });
+    }
+    return link;
+  }
+  if (sender.kind() == HElement::Kind::SkyPatch)
+  {
+    auto& patch = static_cast<SkyPatchElement&>(sender);
+    link.direction = patch.direction();
+    // R S Omega: for a surface, the patch's projected solid angle integrated over the
+    // patch (a patch straddling the surface's horizon counts only its visible part).
+    link.kernel = link.directional ? patch.solidAngle() : projectedSolidAngle(receiver, patch.patch());
+    if (link.kernel > 0.0)
+    {
+      // Directions jittered inside the patch, so partial sky occlusion is sampled.
+      const SkyPatch& range = patch.patch();
+      link.visibility = visibilityToward(receiver, visibility, samples, random, [&](int) {
+        const double u = range.u0() + random.uniform() * (range.u1() - range.u0());
+        const double v = range.v0() + random.uniform() * (range.v1() - range.v0());
+        const Direction d = directionFromSkyParameters(u, v);
+        return Vec3(d[0], d[1], d[2]);
+      });
+    }
+    return link;
+  }
+
+  // Surface or cluster sender.
+  const Vec3 toSender = sender.centre() - receiver.centre();
+  const double distance = glm::length(toSender);
+  link.direction = distance > 0.0 ? toSender / distance : Vec3(0.0, 0.0, 1.0);
+  if (receiver.isSurface())
+  {
+    link.kernel = surfaceKernel(static_cast<PolygonElement&>(receiver), sender, &link.kernelSpread);
+  }
+  else if (sender.isSurface())
+  {
+    // Cluster receiver: the form factor onto a surface facing the sender.
+    auto& polygon = static_cast<PolygonElement&>(sender);
+    link.kernel = pointToPolygonFormFactor(
+      receiver.centre(), link.direction, polygon.corners(), polygon.cornerCount(), polygon.normal());
+  }
+  else
+  {
+    link.kernel = clusterKernel(sender, link.direction, distance);
+  }
+  if (link.kernel > 0.0)
+  {
+    link.visibility = visibilityBetween(receiver, sender, visibility, samples, random);
+  }
+  return link;
+}
+} // namespace terralux

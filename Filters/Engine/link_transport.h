@@ -1,0 +1,29 @@
+#pragma once
+// Geometry of a link, computed once when the link is made: the transport kernel
+// (form factor for surfaces, R S Omega for sky patches, R S for the sun) and the
+// visibility fraction from stratified, jittered rays seeded by the two element ids.
+// External sources compute their own transport (paper section 5.3).
+
+#include "helement.h"
+
+namespace terralux
+{
+class Visibility;
+
+/// Category of light a sender contributes.
+int lightCategoryOf(const HElement& sender);
+
+class PolygonElement;
+
+/// Kernel of a surface or cluster sender at a surface receiver: the form factor
+/// averaged over five points of the receiver (polygon senders) or the isotropic
+/// cluster estimate; `spread` gets the variation over those points.
+double surfaceKernel(const PolygonElement& receiver, const HElement& sender, double* spread = nullptr);
+
+/// Kernel of any sender at a surface receiver, from the receiver's own geometry:
+/// R for the sun, the projected solid angle for a sky patch, surfaceKernel otherwise.
+double kernelAtSurface(const PolygonElement& receiver, HElement& sender);
+
+/// Kernel, visibility and direction of the link receiver <- sender.
+Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples);
+} // namespace terralux

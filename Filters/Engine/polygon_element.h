@@ -1,0 +1,54 @@
+#pragma once
+// Surface H-element: a planar triangle or quad, split regularly into four children
+// (triangles at edge midpoints, quads at edge midpoints and centre).
+
+#include "helement.h"
+
+namespace terralux
+{
+class PolygonElement : public HElement
+{
+public:
+  /// rootPolygon: index of the input polygon this element subdivides.
+  PolygonElement(std::uint64_t id, int level, ElementStore* store, const Vec3* corners, int count,
+    const Spectrum& reflectance, const Spectrum& emission, int rootPolygon);
+
+  Kind kind() const override { return Kind::Polygon; }
+  double area() const override { return this->Area; }
+  Vec3 centre() const override { return this->Centre; }
+  const Vec3& normal() const { return this->Normal; }
+  int cornerCount() const { return this->Count; }
+  const Vec3* corners() const { return this->Corners; }
+  const Spectrum& reflectance() const { return this->Reflectance; }
+  const Spectrum& emission() const { return this->Emission; }
+  int rootPolygon() const { return this->RootPolygon; }
+
+  const std::vector<HElement*>& children() override;
+  bool canSplit() const override { return this->Area >= 4.0 * this->Store->MinimumArea; }
+  bool hasChildren() const { return !this->Children.empty(); }
+  SurfaceSample sample(int k, int n, SampleGenerator& random) const override;
+  double receiverFactor(const Vec3& towardSender) const override;
+
+  /// Area of a planar polygon and its unit normal (right-handed corner order);
+  /// returns 0 area for degenerate input.
+  static double areaAndNormal(const Vec3* corners, int count, Vec3& normal);
+
+  /// Irradiance by category once push-pull has run (leaves only).
+  std::array<Spectrum, lightCategories> Irradiance{};
+  /// Kernels of the links evaluated at this leaf during push, kept while the link
+  /// structure does not change.
+  std::vector<double> LeafKernels;
+
+private:
+  ElementStore* Store;
+  Vec3 Corners[4];
+  int Count;
+  Vec3 Normal{ 0.0, 0.0, 1.0 };
+  Vec3 Centre{ 0.0 };
+  double Area = 0.0;
+  Spectrum Reflectance;
+  Spectrum Emission;
+  int RootPolygon;
+  std::vector<HElement*> Children;
+};
+} // namespace terralux

@@ -1,0 +1,48 @@
+#pragma once
+// Shared value types of the radiosity engine: vectors (GLM), spectra of up to three
+// bands, and the scene as the VTK adapter hands it over.
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace terralux
+{
+using Vec3 = glm::dvec3;
+constexpr int maxBands = 3;
+using Spectrum = std::array<double, maxBands>;
+
+inline Spectrum uniformSpectrum(double value)
+{
+  return { value, value, value };
+}
+
+/// Where irradiance comes from, kept apart for the outputs.
+enum LightCategory
+{
+  SunLight = 0,
+  SkyLight = 1,
+  ReflectedLight = 2,
+  lightCategories = 3
+};
+
+/// One planar input polygon (triangle or quad) with its material.
+struct ScenePolygon
+{
+  int vertexCount = 3;           ///< 3 or 4
+  std::array<int, 4> vertices{}; ///< indices into RadiosityScene::points
+  Spectrum reflectance{};        ///< in [0, 1) per band
+  Spectrum emission{};           ///< emitted radiosity, W/m^2
+  int owner = 0;                 ///< which input data set
+  std::int64_t cell = 0;         ///< cell id in that data set
+};
+
+/// Everything the engine needs about the geometry.
+struct RadiosityScene
+{
+  std::vector<Vec3> points;
+  std::vector<ScenePolygon> polygons;
+};
+} // namespace terralux

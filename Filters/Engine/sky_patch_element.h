@@ -1,0 +1,60 @@
+#pragma once
+// Sky patch H-element (paper section 5.1): a range of altitude and azimuth at
+// infinity with the cell-averaged radiance of the sky pyramid (subsampled below its
+// finest level). It computes its own transport: dE = R S Omega L (eq. 1).
+
+#include "helement.h"
+#include "sky_hierarchy.h"
+
+namespace terralux
+{
+class SkyPatchElement : public HElement
+{
+public:
+  SkyPatchElement(std::uint64_t id, int level, ElementStore* store, const SkyHierarchy* sky, SkyPatch patch);
+
+  Kind kind() const override { return Kind::SkyPatch; }
+  Spectrum emittance() const override { return this->Radiance; }
+  const std::vector<HElement*>& children() override;
+  bool canSplit() const override { return this->Patch.level < this->Store->MaximumSkyLevel; }
+  SurfaceSample sample(int, int, SampleGenerator&) const override { return { Vec3(0.0), this->Direction }; }
+  double receiverFactor(const Vec3&) const override { return 0.0; } // never receives
+
+  double solidAngle() const { return this->SolidAngle; }
+  const Vec3& direction() const { return this->Direction; }
+  const SkyPatch& patch() const { return this->Patch; }
+
+private:
+  ElementStore* Store;
+  const SkyHierarchy* Sky;
+  SkyPatch Patch;
+  Spectrum Radiance{};
+  double SolidAngle;
+  Vec3 Direction;
+  std::vector<HElement*> Children;
+};
+
+/// The sun as a parallel source (paper section 5.2): never splits; dE = R S phi.
+class SunElement : public HElement
+{
+public:
+  SunElement(std::uint64_t id, int level, const Vec3& direction, const Spectrum& flux)
+    : HElement(id, level)
+    , Direction(glm::normalize(direction))
+    , Flux(flux)
+  {
+  }
+  Kind kind() const override { return Kind::Sun; }
+  Spectrum emittance() const override { return this->Flux; }
+  const std::vector<HElement*>& children() override { return this->None; }
+  bool canSplit() const override { return false; }
+  SurfaceSample sample(int, int, SampleGenerator&) const override { return { Vec3(0.0), this->Direction }; }
+  double receiverFactor(const Vec3&) const override { return 0.0; }
+  const Vec3& direction() const { return this->Direction; }
+
+private:
+  Vec3 Direction;
+  Spectrum Flux;
+  std::vector<HElement*> None;
+};
+} // namespace terralux

@@ -1,0 +1,428 @@
+#include "solver.h"
+
+#include "bf_oracle.h"
+#include "cluster.h"
+#include "error.h"
+#include "link_transport.h"
+#include "polygon_element.h"
+#include "sky_hierarchy.h"
+#include "sky_patch_element.h"
+#include "visibility.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace terralux
+{
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double largest(const Spectrum& s)
+{
+  return std::max({ s[0], s[1], s[2] });
+}
+} // namespace
+
+HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options)
+  : Options(options)
+  , Store(std::make_unique<ElementStore>())
+{
+  if (options.visibilitySamples < 1 || options.maximumIterations < 1 || !(options.errorTolerance > 0.0))
+  {
+    throw Error("radiosity options: VisibilitySamples and MaximumIterations must be >= 1 and "
+                "ErrorTolerance > 0");
+  }
+  std::vector<PolygonElement*> polygons;
+  this->Roots.assign(scene.polygons.size(), nullptr);
+  for (std::size_t k = 0; k < scene.polygons.size(); ++k)
+  {
+    const ScenePolygon& input = scene.polygons[k];
+    Vec3 corners[4];
+    bool finite = true;
+    for (int c = 0; c < input.vertexCount; ++c)
+    {
+      corners[c] = scene.points[input.vertices[c]];
+      finite = finite && std::isfinite(corners[c].x) && std::isfinite(corners[c].y) && std::isfinite(corners[c].z);
+    }
+    Vec3 normal;
+    const double area = finite ? PolygonElement::areaAndNormal(corners, input.vertexCount, normal) : 0.0;
+    if (!(area > 0.0))
+    {
+      ++this->Degenerate;
+      continue;
+    }
+    PolygonElement* element = this->Store->make<PolygonElement>(
+      0, this->Store.get(), corners, input.vertexCount, input.reflectance, input.emission, static_cast<int>(k));
+    this->Roots[k] = element;
+    polygons.push_back(element);
+    this->SceneArea += area;
+  }
+  if (polygons.empty())
+  {
+    throw Error("the scene has no polygon with a non-zero area");
+  }
+  this->Store->MinimumArea =
+    options.minimumElementArea > 0.0 ? options.minimumElementArea : 1e-6 * this->SceneArea;
+  this->Store->MaximumSkyLevel = options.maximumSkyLevel;
+  this->RootCluster = Cluster::build(*this->Store, polygons, 0);
+
+  const auto start = std::chrono::steady_clock::now();
+  this->Rays = std::make_unique<Visibility>(scene);
+  this->Stats.secondsVisibilityBuild = secondsSince(start);
+}
+
+HierarchicalRadiosity::~HierarchicalRadiosity() = default;
+
+void HierarchicalRadiosity::setSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance)
+{
+  this->Sun = largest(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0
+    ? this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance)
+    : nullptr;
+}
+
+void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
+{
+  this->Sky = sky;
+  this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
+}
+
+double HierarchicalRadiosity::referencePower() const
+{
+  // Direct light on every polygon without occlusion, plus emission: the scale of the
+  // oracle's tolerance.
+  Vec3 sun(0.0);
+  Spectrum flux{};
+  if (this->Sun)
+  {
+    sun = static_cast<const SunElement*>(this->Sun)->direction();
+    flux = this->Sun->emittance();
+  }
+  double total = 0.0;
+  for (const PolygonElement* polygon : this->Roots)
+  {
+    if (!polygon)
+      continue;
+    double incident = 0.0;
+    for (int band = 0; band < maxBands; ++band)
+    {
+      double e = flux[band] * std::max(0.0, glm::dot(polygon->normal(), sun)) + polygon->emission()[band];
+      if (this->Sky)
+      {
+        e += this->Sky->horizontalIrradiance(std::min(band, this->Sky->bands() - 1)) *
+          0.5 * (1.0 + polygon->normal().z);
+      }
+      incident = std::max(incident, e);
+    }
+    total += incident * polygon->area();
+  }
+  return total;
+}
+
+std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated)
+{
+  std::size_t splits = 0;
+  OracleSettings oracle;
+  oracle.powerThreshold = this->Options.errorTolerance * this->Stats.referencePowerW;
+  oracle.sceneArea = this->SceneArea;
+  std::vector<std::pair<HElement*, Link>> next;
+  while (!pending.empty())
+  {
+    if (!evaluated)
+    {
+      tbb::parallel_for(std::size_t(0), pending.size(), [&](std::size_t k) {
+        HElement* receiver = pending[k].first;
+        HElement* sender = pending[k].second.sender;
+        if (receiver != sender)
+        {
+          pending[k].second = evaluateLink(*receiver, *sender, *this->Rays, this->Options.visibilitySamples);
+        }
+      });
+    }
+    next.clear();
+    for (auto& [receiver, link] : pending)
+    {
+      HElement* sender = link.sender;
+      if (receiver == sender)
+      {
+        // A cluster's self-link becomes links between all pairs of its members;
+        // a planar surface does not light itself.
+        if (receiver->isCluster())
+        {
+          for (HElement* a : receiver->children())
+            for (HElement* b : receiver->children())
+            {
+              Link child;
+              child.sender = b;
+              next.emplace_back(a, child);
+            }
+        }
+        continue;
+      }
+      if (!(link.kernel > 0.0) || !(link.visibility > 0.0))
+      {
+        continue; // carries nothing, now or later
+      }
+      switch (decideRefinement(*receiver, link, oracle))
+      {
+        case Refinement::Keep:
+          receiver->Incoming.push_back(link);
+          break;
+        case Refinement::SplitReceiver:
+          ++splits;
+          for (HElement* child : receiver->children())
+          {
+            Link sub;
+            sub.sender = sender;
+            next.emplace_back(child, sub);
+          }
+          break;
+        case Refinement::SplitSender:
+          ++splits;
+          for (HElement* child : sender->children())
+          {
+            Link sub;
+            sub.sender = child;
+            next.emplace_back(receiver, sub);
+          }
+          break;
+      }
+    }
+    pending.swap(next);
+    evaluated = false;
+  }
+  return splits;
+}
+
+void HierarchicalRadiosity::gather()
+{
+  // Sun and sky links stored on surfaces: their irradiance holds for every descendant
+  // (same normal). Everything else is evaluated at the leaves during push.
+  const auto& all = this->Store->all();
+  tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) {
+    HElement& element = *all[k];
+    element.Gathered = {};
+    if (!element.isSurface())
+    {
+      return;
+    }
+    for (const Link& link : element.Incoming)
+    {
+      const int category = lightCategoryOf(*link.sender);
+      if (category == ReflectedLight)
+      {
+        continue;
+      }
+      const Spectrum emittance = link.sender->emittance();
+      for (int band = 0; band < maxBands; ++band)
+        element.Gathered[category][band] += link.kernel * link.visibility * emittance[band];
+    }
+  });
+}
+
+namespace
+{
+struct PushPullState
+{
+  double maximumChange = 0.0;
+  double maximumRadiosity = 0.0;
+  bool reuseKernels = false; // the links are those the leaf kernels were cached for
+  double incidentPower = 0.0; // sum over leaves of irradiance x area (largest band)
+};
+
+// A link waiting to be evaluated at the leaves below the element that stores it.
+struct DeferredLink
+{
+  const Link* link;
+  const HElement* owner;
+};
+
+// Pushes irradiance down and pulls area-weighted radiosity up; returns the element's
+// radiosity. Sun and sky irradiance gathered on a surface passes to its children as
+// is (they share its normal). Links stored on clusters, and links from other surfaces,
+// are evaluated at each leaf with the leaf's own geometry: a cluster hands irradiance
+// to each contained surface by that surface's orientation, and every leaf sees every
+// sender through kernels taken at its own points, whatever level the link lives on,
+// which keeps closed scenes conservative to the last leaf.
+Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>& inherited,
+  std::vector<DeferredLink>& deferred, PushPullState& state)
+{
+  const std::size_t mark = deferred.size();
+  for (const Link& link : element.Incoming)
+  {
+    if (element.isCluster() || lightCategoryOf(*link.sender) == ReflectedLight)
+      deferred.push_back({ &link, &element });
+  }
+  Spectrum radiosity{};
+  if (element.isSurface())
+  {
+    auto& polygon = static_cast<PolygonElement&>(element);
+    std::array<Spectrum, lightCategories> irradiance = inherited;
+    for (int c = 0; c < lightCategories; ++c)
+      for (int band = 0; band < maxBands; ++band)
+        irradiance[c][band] += polygon.Gathered[c][band];
+    if (!polygon.hasChildren())
+    {
+      if (!state.reuseKernels || polygon.LeafKernels.size() != deferred.size())
+      {
+        polygon.LeafKernels.resize(deferred.size());
+        for (std::size_t k = 0; k < deferred.size(); ++k)
+        {
+          const DeferredLink& item = deferred[k];
+          polygon.LeafKernels[k] =
+            item.owner == &polygon ? item.link->kernel : kernelAtSurface(polygon, *item.link->sender);
+        }
+      }
+      for (std::size_t k = 0; k < deferred.size(); ++k)
+      {
+        const Link& link = *deferred[k].link;
+        const double kernel = polygon.LeafKernels[k];
+        const Spectrum e = link.sender->emittance();
+        const int category = lightCategoryOf(*link.sender);
+        for (int band = 0; band < maxBands; ++band)
+          irradiance[category][band] += kernel * link.visibility * e[band];
+      }
+      polygon.Irradiance = irradiance;
+      double incident = 0.0;
+      for (int band = 0; band < maxBands; ++band)
+      {
+        const double total = irradiance[0][band] + irradiance[1][band] + irradiance[2][band];
+        incident = std::max(incident, total);
+        radiosity[band] = polygon.emission()[band] + polygon.reflectance()[band] * total;
+        state.maximumChange = std::max(state.maximumChange, std::abs(radiosity[band] - polygon.Radiosity[band]));
+        state.maximumRadiosity = std::max(state.maximumRadiosity, radiosity[band]);
+      }
+      state.incidentPower += incident * polygon.area();
+      polygon.Radiosity = radiosity;
+      deferred.resize(mark);
+      return radiosity;
+    }
+    double area = 0.0;
+    for (HElement* child : polygon.children())
+    {
+      const Spectrum b = pushPull(*child, irradiance, deferred, state);
+      for (int band = 0; band < maxBands; ++band)
+        radiosity[band] += b[band] * child->area();
+      area += child->area();
+    }
+    for (double& value : radiosity)
+      value /= area;
+  }
+  else
+  {
+    const std::array<Spectrum, lightCategories> nothing{};
+    double area = 0.0;
+    for (HElement* child : element.children())
+    {
+      const Spectrum b = pushPull(*child, nothing, deferred, state);
+      for (int band = 0; band < maxBands; ++band)
+        radiosity[band] += b[band] * child->area();
+      area += child->area();
+    }
+    for (double& value : radiosity)
+      value /= area;
+  }
+  deferred.resize(mark);
+  element.Radiosity = radiosity;
+  return radiosity;
+}
+} // namespace
+
+double HierarchicalRadiosity::pushPull()
+{
+  PushPullState state;
+  state.reuseKernels = !this->StructureChanged;
+  this->StructureChanged = false;
+  std::vector<DeferredLink> deferred;
+  terralux::pushPull(*this->RootCluster, {}, deferred, state);
+  // The oracle's tolerance is relative to the power the scene receives, which
+  // interreflection raises above the direct estimate.
+  this->Stats.referencePowerW = std::max(this->Stats.referencePowerW, state.incidentPower);
+  return state.maximumRadiosity > 0.0 ? state.maximumChange / state.maximumRadiosity : 0.0;
+}
+
+bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
+{
+  this->Stats.referencePowerW = this->referencePower();
+  std::vector<std::pair<HElement*, Link>> pending;
+  auto addInitial = [&](HElement* sender) {
+    if (sender)
+    {
+      Link link;
+      link.sender = sender;
+      pending.emplace_back(this->RootCluster, link);
+    }
+  };
+  addInitial(this->RootCluster); // the self-link (paper Fig. 3)
+  addInitial(this->Sun);
+  addInitial(this->SkyRoot);
+
+  // Clusters start with the area-weighted emission of their surfaces, so the oracle
+  // sees emitters before the first gather.
+  this->pushPull();
+  this->StructureChanged = true;
+  auto start = std::chrono::steady_clock::now();
+  this->refine(pending, false);
+  this->Stats.secondsRefine += secondsSince(start);
+
+  for (int iteration = 0; iteration < this->Options.maximumIterations; ++iteration)
+  {
+    start = std::chrono::steady_clock::now();
+    this->gather();
+    this->Stats.secondsGather += secondsSince(start);
+    start = std::chrono::steady_clock::now();
+    const double change = this->pushPull();
+    this->Stats.secondsPushPull += secondsSince(start);
+    this->Stats.iterations = iteration + 1;
+    if (progress && !progress->report(static_cast<double>(iteration + 1) / this->Options.maximumIterations))
+    {
+      return false;
+    }
+    if (change < this->Options.convergenceTolerance || iteration + 1 == this->Options.maximumIterations)
+    {
+      break;
+    }
+    // Radiosity changed: links that now carry too much power are refined further;
+    // the others stay where they are.
+    start = std::chrono::steady_clock::now();
+    OracleSettings oracle;
+    oracle.powerThreshold = this->Options.errorTolerance * this->Stats.referencePowerW;
+    oracle.sceneArea = this->SceneArea;
+    pending.clear();
+    const std::size_t count = this->Store->size(); // refinement appends elements
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      HElement* element = this->Store->all()[k].get();
+      auto& links = element->Incoming;
+      auto keep = std::stable_partition(links.begin(), links.end(),
+        [&](const Link& link) { return decideRefinement(*element, link, oracle) == Refinement::Keep; });
+      for (auto it = keep; it != links.end(); ++it)
+        pending.emplace_back(element, *it);
+      links.erase(keep, links.end());
+    }
+    if (!pending.empty())
+    {
+      this->refine(pending, true);
+      this->StructureChanged = true;
+    }
+    this->Stats.secondsRefine += secondsSince(start);
+  }
+
+  this->Stats.elements = this->Store->size();
+  this->Stats.links = 0;
+  for (const auto& element : this->Store->all())
+    this->Stats.links += element->Incoming.size();
+  this->Stats.rays = this->Rays->raysCast();
+  if (progress)
+  {
+    progress->report(1.0);
+  }
+  return true;
+}
+} // namespace terralux

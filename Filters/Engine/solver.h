@@ -1,0 +1,95 @@
+#pragma once
+// Hierarchical radiosity with clustering (paper sections 3 and 5.3): build the
+// cluster hierarchy over the scene, start from the root's self-link plus one link
+// from each external source, then refine -> gather -> push/pull until radiosity
+// converges. Gather and ray casting run in parallel (TBB); element creation is
+// sequential, so results are identical for any thread count.
+
+#include "helement.h"
+#include "radiosity_types.h"
+
+#include <memory>
+
+namespace terralux
+{
+class Cluster;
+class PolygonElement;
+class SkyHierarchy;
+class Visibility;
+
+struct RadiosityOptions
+{
+  double errorTolerance = 1e-3;     ///< link power threshold / reference power
+  double minimumElementArea = 0.0;  ///< m^2; 0: 1e-6 of the scene's area
+  int visibilitySamples = 4;
+  int maximumIterations = 30;
+  double convergenceTolerance = 1e-3; ///< max change of B / max B
+  int maximumSkyLevel = 9;
+};
+
+struct RadiosityStatistics
+{
+  std::size_t elements = 0;
+  std::size_t links = 0;
+  std::uint64_t rays = 0;
+  int iterations = 0;
+  double referencePowerW = 0.0;
+  double secondsVisibilityBuild = 0.0;
+  double secondsRefine = 0.0;
+  double secondsGather = 0.0;
+  double secondsPushPull = 0.0;
+};
+
+class RadiosityProgress
+{
+public:
+  virtual ~RadiosityProgress() = default;
+  /// Fraction in [0, 1]; return false to abort.
+  virtual bool report(double fraction) = 0;
+};
+
+class HierarchicalRadiosity
+{
+public:
+  /// The scene's polygons become the leaves of the initial cluster hierarchy;
+  /// degenerate ones (zero area) are left out and counted. Throws Error when nothing
+  /// usable remains.
+  HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options);
+  ~HierarchicalRadiosity();
+
+  /// External sources. Sky: the hierarchy must outlive the solver.
+  void setSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance);
+  void setSky(const SkyHierarchy* sky);
+
+  /// Solves; returns false when aborted through `progress`.
+  bool solve(RadiosityProgress* progress = nullptr);
+
+  const RadiosityStatistics& statistics() const { return this->Stats; }
+  std::size_t degeneratePolygons() const { return this->Degenerate; }
+  /// Root element of each input polygon (null for degenerate ones).
+  const std::vector<PolygonElement*>& polygonRoots() const { return this->Roots; }
+  /// Every element with its links, for the links output.
+  const ElementStore& elements() const { return *this->Store; }
+  const Cluster* root() const { return this->RootCluster; }
+
+private:
+  /// Refines pending links; returns how many were split.
+  std::size_t refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated);
+  void gather();
+  double pushPull();
+  double referencePower() const;
+
+  RadiosityOptions Options;
+  std::unique_ptr<ElementStore> Store;
+  std::unique_ptr<Visibility> Rays;
+  std::vector<PolygonElement*> Roots;
+  Cluster* RootCluster = nullptr;
+  HElement* Sun = nullptr;
+  HElement* SkyRoot = nullptr;
+  const SkyHierarchy* Sky = nullptr;
+  double SceneArea = 0.0;
+  std::size_t Degenerate = 0;
+  bool StructureChanged = true; // links changed since the leaf kernels were cached
+  RadiosityStatistics Stats;
+};
+} // namespace terralux

@@ -1,0 +1,127 @@
+#include "visibility.h"
+
+#include "error.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace terralux
+{
+Visibility::Visibility(const RadiosityScene& scene)
+{
+  this->Device = rtcNewDevice("verbose=0");
+  if (!this->Device)
+  {
+    throw Error("Embree could not create a device");
+  }
+  this->Scene = rtcNewScene(this->Device);
+  rtcSetSceneBuildQuality(this->Scene, RTC_BUILD_QUALITY_HIGH);
+
+  // Vertices relative to the scene's centre keep float precision for large coordinates.
+  Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
+  for (const Vec3& p : scene.points)
+  {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  this->Offset = std::max(1e-9, 1e-5 * glm::length(high - low));
+  this->Centre = 0.5 * (low + high);
+
+  std::size_t triangleCount = 0;
+  for (const ScenePolygon& polygon : scene.polygons)
+  {
+    triangleCount += polygon.vertexCount - 2;
+  }
+  RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+    RTC_FORMAT_FLOAT3, 3 * sizeof(float), scene.points.size()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangleCount));
+  if (!vertices || !indices)
+  {
+    rtcReleaseGeometry(geometry);
+    throw Error("Embree could not allocate the scene's buffers (out of memory?)");
+  }
+  for (std::size_t k = 0; k < scene.points.size(); ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      vertices[3 * k + c] = static_cast<float>(scene.points[k][c] - this->Centre[c]);
+    }
+  }
+  std::size_t t = 0;
+  for (const ScenePolygon& polygon : scene.polygons)
+  {
+    for (int k = 1; k + 1 < polygon.vertexCount; ++k, ++t)
+    {
+      indices[3 * t + 0] = static_cast<unsigned>(polygon.vertices[0]);
+      indices[3 * t + 1] = static_cast<unsigned>(polygon.vertices[k]);
+      indices[3 * t + 2] = static_cast<unsigned>(polygon.vertices[k + 1]);
+    }
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(this->Scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(this->Scene);
+  if (rtcGetDeviceError(this->Device) != RTC_ERROR_NONE)
+  {
+    throw Error("Embree failed to build the visibility structure");
+  }
+}
+
+Visibility::~Visibility()
+{
+  if (this->Scene)
+    rtcReleaseScene(this->Scene);
+  if (this->Device)
+    rtcReleaseDevice(this->Device);
+}
+
+namespace
+{
+bool castOcclusion(RTCScene scene, const Vec3& origin, const Vec3& direction, double tnear, double tfar)
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray;
+  ray.org_x = static_cast<float>(origin.x);
+  ray.org_y = static_cast<float>(origin.y);
+  ray.org_z = static_cast<float>(origin.z);
+  ray.dir_x = static_cast<float>(direction.x);
+  ray.dir_y = static_cast<float>(direction.y);
+  ray.dir_z = static_cast<float>(direction.z);
+  ray.tnear = static_cast<float>(tnear);
+  ray.tfar = static_cast<float>(tfar);
+  ray.time = 0.0f;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+  rtcOccluded1(scene, &context, &ray);
+  return ray.tfar < 0.0f; // Embree marks a hit by tfar = -inf
+}
+} // namespace
+
+bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, const Vec3& bNormal) const
+{
+  ++this->Rays;
+  const Vec3 from = a + this->Offset * aNormal;
+  const Vec3 to = b + this->Offset * bNormal;
+  const Vec3 d = to - from;
+  const double length = glm::length(d);
+  if (length <= 2.0 * this->Offset)
+  {
+    return false;
+  }
+  return castOcclusion(this->Scene, from - this->Centre, d / length, 0.0, length - this->Offset);
+}
+
+bool Visibility::occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const
+{
+  ++this->Rays;
+  return castOcclusion(this->Scene, a + this->Offset * aNormal - this->Centre, d, 0.0,
+    std::numeric_limits<float>::infinity());
+}
+} // namespace terralux

@@ -1,0 +1,44 @@
+#pragma once
+// Visibility queries against the full-resolution scene with Embree 3: occlusion
+// rays between two points or from a point toward infinity. Ray ends are pulled in
+// by an offset that scales with the scene, never a fixed epsilon.
+
+#include "radiosity_types.h"
+
+#include <atomic>
+#include <cstdint>
+
+struct RTCDeviceTy;
+struct RTCSceneTy;
+
+namespace terralux
+{
+class Visibility
+{
+public:
+  /// Builds the Embree scene of every polygon (quads as two triangles). Throws Error
+  /// when Embree fails.
+  explicit Visibility(const RadiosityScene& scene);
+  ~Visibility();
+  Visibility(const Visibility&) = delete;
+  Visibility& operator=(const Visibility&) = delete;
+
+  /// True when the segment between surface points a and b (with their surfaces' unit
+  /// normals, facing the segment) is blocked. Ends are lifted off their surfaces by
+  /// offset() along the normals, so grazing rays do not hit their own polygons.
+  bool occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, const Vec3& bNormal) const;
+  /// True when the ray from surface point a (unit normal aNormal) along unit direction
+  /// d hits anything.
+  bool occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const;
+  /// Offset (metres) of ray ends: 1e-5 of the scene's bounding diagonal.
+  double offset() const { return this->Offset; }
+  std::uint64_t raysCast() const { return this->Rays.load(); }
+
+private:
+  RTCDeviceTy* Device = nullptr;
+  RTCSceneTy* Scene = nullptr;
+  double Offset = 1e-6;
+  Vec3 Centre{ 0.0 }; // Embree's float vertices are stored relative to it
+  mutable std::atomic<std::uint64_t> Rays{ 0 };
+};
+} // namespace terralux

