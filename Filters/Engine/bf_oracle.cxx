@@ -73,7 +73,10 @@ Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSe
   }
   if (receiverSplits && senderSplits)
   {
-    return relativeSize(receiver, settings.sceneArea) >= relativeSize(sender, settings.sceneArea)
+    // Partial visibility is an error in space: the receiver splits unless the sender
+    // is much the larger.
+    const double bias = partial ? 4.0 : 1.0;
+    return bias * relativeSize(receiver, settings.sceneArea) >= relativeSize(sender, settings.sceneArea)
       ? Refinement::SplitReceiver
       : Refinement::SplitSender;
   }

@@ -171,6 +171,31 @@ int lightCategoryOf(const HElement& sender)
   }
 }
 
+double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Visibility& visibility, int samples)
+{
+  SampleGenerator random(linkSeed(receiver.id(), sender.id()));
+  switch (sender.kind())
+  {
+    case HElement::Kind::Sun:
+    {
+      const Vec3 d = static_cast<SunElement&>(sender).direction();
+      return visibilityToward(receiver, visibility, samples, random, [&](int) { return d; });
+    }
+    case HElement::Kind::SkyPatch:
+    {
+      const SkyPatch& range = static_cast<SkyPatchElement&>(sender).patch();
+      return visibilityToward(receiver, visibility, samples, random, [&](int) {
+        const double u = range.u0() + random.uniform() * (range.u1() - range.u0());
+        const double v = range.v0() + random.uniform() * (range.v1() - range.v0());
+        const Direction d = directionFromSkyParameters(u, v);
+        return Vec3(d[0], d[1], d[2]);
+      });
+    }
+    default:
+      return visibilityBetween(receiver, sender, visibility, samples, random);
+  }
+}
+
 Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples)
 {
   Link link;

@@ -24,6 +24,9 @@ double surfaceKernel(const PolygonElement& receiver, const HElement& sender, dou
 /// R for the sun, the projected solid angle for a sky patch, surfaceKernel otherwise.
 double kernelAtSurface(const PolygonElement& receiver, HElement& sender);
 
+/// Visibility fraction of `sender` from a surface receiver, sampled like a new link.
+double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Visibility& visibility, int samples);
+
 /// Kernel, visibility and direction of the link receiver <- sender.
 Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples);
 } // namespace terralux

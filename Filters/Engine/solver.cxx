@@ -233,6 +233,8 @@ struct PushPullState
   double maximumChange = 0.0;
   double maximumRadiosity = 0.0;
   bool reuseKernels = false; // the links are those the leaf kernels were cached for
+  const Visibility* rays = nullptr;
+  int samples = 4;
   double incidentPower = 0.0; // sum over leaves of irradiance x area (largest band)
 };
 
@@ -249,7 +251,9 @@ struct DeferredLink
 // are evaluated at each leaf with the leaf's own geometry: a cluster hands irradiance
 // to each contained surface by that surface's orientation, and every leaf sees every
 // sender through kernels taken at its own points, whatever level the link lives on,
-// which keeps closed scenes conservative to the last leaf.
+// which keeps closed scenes conservative to the last leaf. A partially visible link
+// from above is re-sampled at the leaf, so shadow boundaries are resolved by the leaves
+// even where no single link is worth refining.
 Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>& inherited,
   std::vector<DeferredLink>& deferred, PushPullState& state)
 {
@@ -275,18 +279,26 @@ Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>
         for (std::size_t k = 0; k < deferred.size(); ++k)
         {
           const DeferredLink& item = deferred[k];
-          polygon.LeafKernels[k] =
-            item.owner == &polygon ? item.link->kernel : kernelAtSurface(polygon, *item.link->sender);
+          const Link& link = *item.link;
+          if (item.owner == &polygon)
+          {
+            polygon.LeafKernels[k] = link.kernel * link.visibility;
+            continue;
+          }
+          const double visibility = link.visibility < 1.0
+            ? visibilityAtSurface(polygon, *link.sender, *state.rays, state.samples)
+            : 1.0;
+          polygon.LeafKernels[k] = kernelAtSurface(polygon, *link.sender) * visibility;
         }
       }
       for (std::size_t k = 0; k < deferred.size(); ++k)
       {
         const Link& link = *deferred[k].link;
-        const double kernel = polygon.LeafKernels[k];
+        const double transport = polygon.LeafKernels[k]; // kernel x visibility
         const Spectrum e = link.sender->emittance();
         const int category = lightCategoryOf(*link.sender);
         for (int band = 0; band < maxBands; ++band)
-          irradiance[category][band] += kernel * link.visibility * e[band];
+          irradiance[category][band] += transport * e[band];
       }
       polygon.Irradiance = irradiance;
       double incident = 0.0;
@@ -338,6 +350,8 @@ double HierarchicalRadiosity::pushPull()
 {
   PushPullState state;
   state.reuseKernels = !this->StructureChanged;
+  state.rays = this->Rays.get();
+  state.samples = this->Options.visibilitySamples;
   this->StructureChanged = false;
   std::vector<DeferredLink> deferred;
   terralux::pushPull(*this->RootCluster, {}, deferred, state);

@@ -200,3 +200,92 @@ TEST(Radiosity, FurnacesReachEmissionOverOneMinusReflectance)
     }
   }
 }
+
+TEST(Radiosity, WallCastsItsShadowWhereGeometryPutsIt)
+{
+  RadiosityScene scene;
+  addWallOnGround(scene, 10.0, 10.0, 3.0, 0.2);
+  const double zenith = 50.0 * degree;
+  const Vec3 sun(0.0, -std::sin(zenith), std::cos(zenith)); // due south
+  RadiosityOptions options = fine();
+  options.minimumElementArea = 0.005;
+  HierarchicalRadiosity solver(scene, options);
+  solver.setSun(sun, uniformSpectrum(800.0));
+  ASSERT_TRUE(solver.solve());
+  const double shadowLength = 3.0 * std::tan(zenith);
+  int inside = 0, outside = 0;
+  std::function<void(HElement*)> visit = [&](HElement* e) {
+    auto* p = static_cast<PolygonElement*>(e);
+    if (p->hasChildren())
+    {
+      for (HElement* c : p->children())
+        visit(c);
+      return;
+    }
+    const double size = std::sqrt(p->area());
+    const Vec3 c = p->centre();
+    const double sunIrradiance = p->Irradiance[SunLight][0];
+    if (p->rootPolygon() == 1)
+    {
+      EXPECT_EQ(sunIrradiance, 0.0); // the wall faces north, away from the sun
+      return;
+    }
+    if (c.y > size && c.y < shadowLength - size && std::abs(c.x) < 5.0 - size)
+    {
+      EXPECT_LT(sunIrradiance, 1e-9) << c.x << " " << c.y;
+      ++inside;
+    }
+    else if (c.y < -size || c.y > shadowLength + size || std::abs(c.x) > 5.0 + size + shadowLength * 0.0)
+    {
+      EXPECT_NEAR(sunIrradiance, 800.0 * std::cos(zenith), 1e-6) << c.x << " " << c.y;
+      ++outside;
+    }
+  };
+  visit(solver.polygonRoots()[0]);
+  visit(solver.polygonRoots()[1]);
+  EXPECT_GT(inside, 10);
+  EXPECT_GT(outside, 10);
+}
+
+TEST(Radiosity, SameResultForOneAndTwoThreads)
+{
+  auto run = [](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    RadiosityScene scene;
+    addWallOnGround(scene, 10.0, 10.0, 3.0, 0.4);
+    addPolygon(scene, { { -3, 3, 0.01 }, { -1, 3, 0.01 }, { -1, 3, 2 }, { -3, 3, 2 } }, 0.6); // facing south? no: +y
+    const Direction sunDir = directionFromZenithAzimuth(40.0 * degree, 170.0 * degree);
+    const SkyHierarchy sky(CieGeneralSky(12, sunDir), 100.0, 6);
+    RadiosityOptions options = fine();
+    options.errorTolerance = 5e-4;
+    HierarchicalRadiosity solver(scene, options);
+    solver.setSun(Vec3(sunDir[0], sunDir[1], sunDir[2]), uniformSpectrum(700.0));
+    solver.setSky(&sky);
+    EXPECT_TRUE(solver.solve());
+    std::vector<double> values;
+    for (const auto& element : solver.elements().all())
+      for (double b : element->Radiosity)
+        values.push_back(b);
+    return values;
+  };
+  const std::vector<double> one = run(1), two = run(2);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t k = 0; k < one.size(); ++k)
+    ASSERT_EQ(one[k], two[k]) << k; // bitwise
+}
+
+TEST(Radiosity, BadScenes)
+{
+  RadiosityScene empty;
+  EXPECT_THROW(HierarchicalRadiosity(empty, fine()), Error);
+  RadiosityScene degenerate;
+  addPolygon(degenerate, { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, 0.5);
+  EXPECT_THROW(HierarchicalRadiosity(degenerate, fine()), Error);
+  addPolygon(degenerate, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, 0.5);
+  HierarchicalRadiosity mixed(degenerate, fine());
+  EXPECT_EQ(mixed.degeneratePolygons(), 1u);
+  EXPECT_EQ(mixed.polygonRoots()[0], nullptr);
+  RadiosityScene nan;
+  addPolygon(nan, { { 0, 0, 0 }, { NAN, 0, 0 }, { 0, 1, 0 } }, 0.5);
+  EXPECT_THROW(HierarchicalRadiosity(nan, fine()), Error);
+}

@@ -68,3 +68,29 @@ inline void addInwardSphere(RadiosityScene& scene, double r, int rings, int segm
     }
 }
 } // namespace terralux_test
+
+namespace terralux_test
+{
+/// A cylindrical pit of radius r and depth h: floor disc (fan of `segments` triangles,
+/// facing up) and wall (quads facing inward), open to the sky.
+inline void addPit(RadiosityScene& scene, double r, double h, int segments, double reflectance)
+{
+  for (int j = 0; j < segments; ++j)
+  {
+    const double a0 = 2 * M_PI * j / segments, a1 = 2 * M_PI * (j + 1) / segments;
+    const Vec3 p0(r * std::cos(a0), r * std::sin(a0), -h), p1(r * std::cos(a1), r * std::sin(a1), -h);
+    addPolygon(scene, { Vec3(0, 0, -h), p0, p1 }, reflectance);
+    const Vec3 q0(p0.x, p0.y, 0.0), q1(p1.x, p1.y, 0.0);
+    addPolygon(scene, { p0, q0, q1, p1 }, reflectance); // faces the axis
+  }
+}
+
+/// Ground square [-half, half]^2 at z = 0 facing up, and a wall along the x axis from
+/// x = -length/2 to length/2, `height` tall, facing north (+y).
+inline void addWallOnGround(RadiosityScene& scene, double half, double length, double height, double reflectance)
+{
+  addPolygon(scene, { { -half, -half, 0 }, { half, -half, 0 }, { half, half, 0 }, { -half, half, 0 } }, reflectance);
+  const double l = 0.5 * length;
+  addPolygon(scene, { { l, 0, 0 }, { -l, 0, 0 }, { -l, 0, height }, { l, 0, height } }, reflectance, 0.0, 1);
+}
+} // namespace terralux_test
