@@ -73,6 +73,11 @@ Cluster* Cluster::build(
     members.push_back(build(store, std::move(left), level + 1, leafSize));
     members.push_back(build(store, std::move(right), level + 1, leafSize));
   }
-  return store.make<Cluster>(level, std::move(members), std::move(polygons));
+  Cluster* cluster = store.make<Cluster>(level, members, std::move(polygons));
+  for (HElement* member : members)
+  {
+    member->Parent = cluster;
+  }
+  return cluster;
 }
 } // namespace terralux

@@ -77,9 +77,13 @@ public:
   virtual double receiverFactor(const Vec3& towardSender) const = 0;
   virtual double scaleFactor() const { return 1.0; }
 
+  /// The element whose children() holds this one (null for roots and sources' roots).
+  HElement* Parent = nullptr;
+
   // State of the solution.
   Spectrum Radiosity{};
   std::array<Spectrum, lightCategories> Gathered{}; ///< irradiance gathered at this level
+  double GatheredPartial = 0.0; ///< the part of it from partially visible links (largest band)
   std::vector<Link> Incoming;
 
 protected:

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 
 namespace terralux
 {
@@ -38,6 +39,18 @@ double visibilityToward(HElement& receiver, const Visibility& visibility, int sa
     visible += !visibility.occludedToward(s.position, s.normal, d);
   }
   return counted ? static_cast<double>(visible) / counted : 0.0;
+}
+
+// A direction in a sky patch, distributed like the patch's irradiance on a horizontal
+// plane (density proportional to sin u over dOmega = d(sin u) dv), so sampled visibility
+// weighs directions as the projected solid angle does.
+Vec3 sampleSkyDirection(const SkyPatch& patch, SampleGenerator& random)
+{
+  const double s0 = std::sin(patch.u0()), s1 = std::sin(patch.u1());
+  const double s = std::sqrt(s0 * s0 + random.uniform() * (s1 * s1 - s0 * s0));
+  const double v = patch.v0() + random.uniform() * (patch.v1() - patch.v0());
+  const Direction d = directionFromSkyParameters(std::asin(std::min(1.0, s)), v);
+  return Vec3(d[0], d[1], d[2]);
 }
 
 // The centre twice (it weighs most) and the points halfway to three corners, or the
@@ -184,15 +197,72 @@ double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Vis
     case HElement::Kind::SkyPatch:
     {
       const SkyPatch& range = static_cast<SkyPatchElement&>(sender).patch();
-      return visibilityToward(receiver, visibility, samples, random, [&](int) {
-        const double u = range.u0() + random.uniform() * (range.u1() - range.u0());
-        const double v = range.v0() + random.uniform() * (range.v1() - range.v0());
-        const Direction d = directionFromSkyParameters(u, v);
-        return Vec3(d[0], d[1], d[2]);
-      });
+      return visibilityToward(
+        receiver, visibility, samples, random, [&](int) { return sampleSkyDirection(range, random); });
     }
     default:
       return visibilityBetween(receiver, sender, visibility, samples, random);
+  }
+}
+
+double transportToPoint(const Vec3& point, const PolygonElement& surface, HElement& sender,
+  const Visibility& visibility, int samples, std::uint64_t seed)
+{
+  SampleGenerator random(seed);
+  const Vec3& n = surface.normal();
+  auto seen = [&](const std::function<Vec3(int)>& directionOf) {
+    int counted = 0, visible = 0;
+    for (int k = 0; k < samples; ++k)
+    {
+      const Vec3 d = directionOf(k);
+      if (glm::dot(n, d) <= 0.0)
+        continue;
+      ++counted;
+      visible += !visibility.occludedToward(point, n, d);
+    }
+    return counted ? static_cast<double>(visible) / counted : 0.0;
+  };
+  switch (sender.kind())
+  {
+    case HElement::Kind::Sun:
+    {
+      const Vec3 d = static_cast<SunElement&>(sender).direction();
+      const double r = surface.receiverFactor(d);
+      return r > 0.0 ? r * !visibility.occludedToward(point, n, d) : 0.0;
+    }
+    case HElement::Kind::SkyPatch:
+    {
+      const SkyPatch& range = static_cast<SkyPatchElement&>(sender).patch();
+      const double kernel = projectedSolidAngle(surface, range);
+      if (!(kernel > 0.0))
+        return 0.0;
+      return kernel * seen([&](int) { return sampleSkyDirection(range, random); });
+    }
+    default:
+    {
+      double kernel = 0.0;
+      if (sender.isSurface())
+      {
+        const auto& polygon = static_cast<const PolygonElement&>(sender);
+        kernel = pointToPolygonFormFactor(point, n, polygon.corners(), polygon.cornerCount(), polygon.normal());
+      }
+      else
+      {
+        kernel = surfaceKernel(surface, sender);
+      }
+      if (!(kernel > 0.0))
+        return 0.0;
+      int counted = 0, visible = 0;
+      for (int k = 0; k < samples; ++k)
+      {
+        const SurfaceSample y = sender.sample(k, samples, random);
+        if (glm::dot(n, y.position - point) <= 0.0 || glm::dot(y.normal, point - y.position) <= 0.0)
+          continue;
+        ++counted;
+        visible += !visibility.occluded(point, n, y.position, y.normal);
+      }
+      return counted ? kernel * visible / counted : 0.0;
+    }
   }
 }
 
@@ -225,12 +295,8 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
     {
       // Directions jittered inside the patch, so partial sky occlusion is sampled.
       const SkyPatch& range = patch.patch();
-      link.visibility = visibilityToward(receiver, visibility, samples, random, [&](int) {
-        const double u = range.u0() + random.uniform() * (range.u1() - range.u0());
-        const double v = range.v0() + random.uniform() * (range.v1() - range.v0());
-        const Direction d = directionFromSkyParameters(u, v);
-        return Vec3(d[0], d[1], d[2]);
-      });
+      link.visibility = visibilityToward(
+        receiver, visibility, samples, random, [&](int) { return sampleSkyDirection(range, random); });
     }
     return link;
   }

@@ -27,6 +27,12 @@ double kernelAtSurface(const PolygonElement& receiver, HElement& sender);
 /// Visibility fraction of `sender` from a surface receiver, sampled like a new link.
 double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Visibility& visibility, int samples);
 
+/// Transport kernel x visibility from `sender` to one point (with unit normal) of a
+/// surface: the exact point form factor (or R for the sun, the projected solid angle
+/// for a sky patch) and visibility sampled from that point. `seed` makes it repeatable.
+double transportToPoint(const Vec3& point, const PolygonElement& surface, HElement& sender,
+  const Visibility& visibility, int samples, std::uint64_t seed);
+
 /// Kernel, visibility and direction of the link receiver <- sender.
 Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples);
 } // namespace terralux

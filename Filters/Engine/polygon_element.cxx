@@ -72,6 +72,7 @@ const std::vector<HElement*>& PolygonElement::children()
   for (HElement* kid : this->Children)
   {
     kid->Radiosity = this->Radiosity;
+    kid->Parent = this;
   }
   return this->Children;
 }

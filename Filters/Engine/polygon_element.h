@@ -38,6 +38,10 @@ public:
   /// Kernels of the links evaluated at this leaf during push, kept while the link
   /// structure does not change.
   std::vector<double> LeafKernels;
+  /// Irradiance (largest band) this leaf receives through partially visible links;
+  /// where it is large the leaf is split so shadows are resolved in space.
+  double PartialIrradiance = 0.0;
+  double DeferredPartial = 0.0; ///< the part from links evaluated at this leaf (cached)
 
 private:
   ElementStore* Store;

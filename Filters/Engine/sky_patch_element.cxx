@@ -28,6 +28,7 @@ const std::vector<HElement*>& SkyPatchElement::children()
     for (const SkyPatch& kid : kids)
     {
       this->Children.push_back(this->Store->make<SkyPatchElement>(this->level() + 1, this->Store, this->Sky, kid));
+      this->Children.back()->Parent = this;
     }
   }
   return this->Children;

@@ -165,9 +165,27 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
         }
         continue;
       }
-      if (!(link.kernel > 0.0) || !(link.visibility > 0.0))
+      if (!(link.kernel > 0.0))
       {
         continue; // carries nothing, now or later
+      }
+      if (!(link.visibility > 0.0))
+      {
+        // No sample saw the sender; parts of a large receiver still may. Split the
+        // receiver while the unoccluded transport would matter, else drop the link.
+        Link unoccluded = link;
+        unoccluded.visibility = 1.0;
+        if (receiver->canSplit() && linkPower(*receiver, unoccluded) > oracle.partialVisibilityFactor * oracle.powerThreshold)
+        {
+          ++splits;
+          for (HElement* child : receiver->children())
+          {
+            Link sub;
+            sub.sender = sender;
+            next.emplace_back(child, sub);
+          }
+        }
+        continue;
       }
       switch (decideRefinement(*receiver, link, oracle))
       {
@@ -208,6 +226,7 @@ void HierarchicalRadiosity::gather()
   tbb::parallel_for(std::size_t(0), all.size(), [&](std::size_t k) {
     HElement& element = *all[k];
     element.Gathered = {};
+    element.GatheredPartial = 0.0;
     if (!element.isSurface())
     {
       return;
@@ -222,6 +241,11 @@ void HierarchicalRadiosity::gather()
       const Spectrum emittance = link.sender->emittance();
       for (int band = 0; band < maxBands; ++band)
         element.Gathered[category][band] += link.kernel * link.visibility * emittance[band];
+      if (link.visibility < 1.0)
+      {
+        element.GatheredPartial +=
+          link.kernel * link.visibility * std::max({ emittance[0], emittance[1], emittance[2] });
+      }
     }
   });
 }
@@ -255,7 +279,7 @@ struct DeferredLink
 // from above is re-sampled at the leaf, so shadow boundaries are resolved by the leaves
 // even where no single link is worth refining.
 Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>& inherited,
-  std::vector<DeferredLink>& deferred, PushPullState& state)
+  double inheritedPartial, std::vector<DeferredLink>& deferred, PushPullState& state)
 {
   const std::size_t mark = deferred.size();
   for (const Link& link : element.Incoming)
@@ -271,24 +295,32 @@ Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>
     for (int c = 0; c < lightCategories; ++c)
       for (int band = 0; band < maxBands; ++band)
         irradiance[c][band] += polygon.Gathered[c][band];
+    const double partial = inheritedPartial + polygon.GatheredPartial;
     if (!polygon.hasChildren())
     {
       if (!state.reuseKernels || polygon.LeafKernels.size() != deferred.size())
       {
         polygon.LeafKernels.resize(deferred.size());
+        polygon.DeferredPartial = 0.0;
         for (std::size_t k = 0; k < deferred.size(); ++k)
         {
           const DeferredLink& item = deferred[k];
           const Link& link = *item.link;
+          double visibility = link.visibility;
           if (item.owner == &polygon)
           {
             polygon.LeafKernels[k] = link.kernel * link.visibility;
-            continue;
           }
-          const double visibility = link.visibility < 1.0
-            ? visibilityAtSurface(polygon, *link.sender, *state.rays, state.samples)
-            : 1.0;
-          polygon.LeafKernels[k] = kernelAtSurface(polygon, *link.sender) * visibility;
+          else
+          {
+            visibility = link.visibility < 1.0 ? visibilityAtSurface(polygon, *link.sender, *state.rays, state.samples) : 1.0;
+            polygon.LeafKernels[k] = kernelAtSurface(polygon, *link.sender) * visibility;
+          }
+          if (visibility > 0.0 && visibility < 1.0)
+          {
+            const Spectrum e = link.sender->emittance();
+            polygon.DeferredPartial += polygon.LeafKernels[k] * std::max({ e[0], e[1], e[2] });
+          }
         }
       }
       for (std::size_t k = 0; k < deferred.size(); ++k)
@@ -301,6 +333,7 @@ Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>
           irradiance[category][band] += transport * e[band];
       }
       polygon.Irradiance = irradiance;
+      polygon.PartialIrradiance = partial + polygon.DeferredPartial;
       double incident = 0.0;
       for (int band = 0; band < maxBands; ++band)
       {
@@ -318,7 +351,7 @@ Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>
     double area = 0.0;
     for (HElement* child : polygon.children())
     {
-      const Spectrum b = pushPull(*child, irradiance, deferred, state);
+      const Spectrum b = pushPull(*child, irradiance, partial, deferred, state);
       for (int band = 0; band < maxBands; ++band)
         radiosity[band] += b[band] * child->area();
       area += child->area();
@@ -332,7 +365,7 @@ Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>
     double area = 0.0;
     for (HElement* child : element.children())
     {
-      const Spectrum b = pushPull(*child, nothing, deferred, state);
+      const Spectrum b = pushPull(*child, nothing, 0.0, deferred, state);
       for (int band = 0; band < maxBands; ++band)
         radiosity[band] += b[band] * child->area();
       area += child->area();
@@ -354,11 +387,71 @@ double HierarchicalRadiosity::pushPull()
   state.samples = this->Options.visibilitySamples;
   this->StructureChanged = false;
   std::vector<DeferredLink> deferred;
-  terralux::pushPull(*this->RootCluster, {}, deferred, state);
+  terralux::pushPull(*this->RootCluster, {}, 0.0, deferred, state);
   // The oracle's tolerance is relative to the power the scene receives, which
   // interreflection raises above the direct estimate.
   this->Stats.referencePowerW = std::max(this->Stats.referencePowerW, state.incidentPower);
   return state.maximumRadiosity > 0.0 ? state.maximumChange / state.maximumRadiosity : 0.0;
+}
+
+std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
+  const PolygonElement& leaf, const Vec3& point) const
+{
+  std::array<Spectrum, lightCategories> irradiance{};
+  // Visibility from a point is noisier than over an element: use more samples.
+  const int samples = 8 * this->Options.visibilitySamples;
+  std::uint64_t salt = 0;
+  for (const HElement* element = &leaf; element; element = element->Parent)
+  {
+    for (const Link& link : element->Incoming)
+    {
+      const std::uint64_t seed = linkSeed(leaf.id() * 31 + (salt++), link.sender->id());
+      const double transport = transportToPoint(point, leaf, *link.sender, *this->Rays, samples, seed);
+      const Spectrum e = link.sender->emittance();
+      const int category = lightCategoryOf(*link.sender);
+      for (int band = 0; band < maxBands; ++band)
+        irradiance[category][band] += transport * e[band];
+    }
+  }
+  return irradiance;
+}
+
+std::size_t HierarchicalRadiosity::splitShadowedLeaves()
+{
+  // A leaf lit through many partially visible links, none worth refining alone, still
+  // averages a shadow over its area: split it when that light carries enough power.
+  const double threshold = this->Options.errorTolerance * this->Stats.referencePowerW;
+  std::vector<std::pair<HElement*, Link>> pending;
+  std::size_t splits = 0;
+  const std::size_t count = this->Store->size();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    HElement* element = this->Store->all()[k].get();
+    if (!element->isSurface())
+      continue;
+    auto* polygon = static_cast<PolygonElement*>(element);
+    if (polygon->hasChildren() || !polygon->canSplit() ||
+      polygon->PartialIrradiance * polygon->area() <= threshold)
+      continue;
+    ++splits;
+    for (HElement* child : polygon->children())
+      for (const Link& link : polygon->Incoming)
+      {
+        Link sub;
+        sub.sender = link.sender;
+        pending.emplace_back(child, sub);
+      }
+    polygon->Incoming.clear();
+  }
+  if (!pending.empty())
+  {
+    this->refine(pending, false);
+  }
+  if (splits)
+  {
+    this->StructureChanged = true;
+  }
+  return splits;
 }
 
 bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
@@ -398,7 +491,9 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     {
       return false;
     }
-    if (change < this->Options.convergenceTolerance || iteration + 1 == this->Options.maximumIterations)
+    const std::size_t shadowSplits = this->splitShadowedLeaves();
+    if ((change < this->Options.convergenceTolerance && shadowSplits == 0) ||
+      iteration + 1 == this->Options.maximumIterations)
     {
       break;
     }

@@ -72,9 +72,16 @@ public:
   const ElementStore& elements() const { return *this->Store; }
   const Cluster* root() const { return this->RootCluster; }
 
+  /// Irradiance by light category at a point of a leaf surface, every link that reaches
+  /// the leaf (at any level) re-evaluated at that point: exact form factors and
+  /// visibility sampled from the point. This is what per-vertex outputs use, so
+  /// values at vertices are not smeared over the elements around them.
+  std::array<Spectrum, lightCategories> irradianceAt(const PolygonElement& leaf, const Vec3& point) const;
+
 private:
   /// Refines pending links; returns how many were split.
   std::size_t refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated);
+  std::size_t splitShadowedLeaves();
   void gather();
   double pushPull();
   double referencePower() const;

@@ -19,6 +19,8 @@ Visibility::Visibility(const RadiosityScene& scene)
   }
   this->Scene = rtcNewScene(this->Device);
   rtcSetSceneBuildQuality(this->Scene, RTC_BUILD_QUALITY_HIGH);
+  // Watertight intersection: rays must not slip between triangles that share an edge.
+  rtcSetSceneFlags(this->Scene, RTC_SCENE_FLAG_ROBUST);
 
   // Vertices relative to the scene's centre keep float precision for large coordinates.
   Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());

@@ -201,6 +201,36 @@ TEST(Radiosity, FurnacesReachEmissionOverOneMinusReflectance)
   }
 }
 
+TEST(Radiosity, SkyViewFactorAtTheBottomOfAPit)
+{
+  // From the centre of the floor the open sky is a cone of half-angle atan(r / h):
+  // under a uniform sky the floor gets sin^2(atan(r / h)) of the open-field irradiance.
+  // The pit is a 96-sided prism; its opening is 0.07 % smaller than the circle's.
+  const SkyHierarchy uniform(UniformSky(), 1.0, 7);
+  // A deeper pit shows a narrower cone, whose rim needs a finer tolerance.
+  for (const auto& [depth, tolerance] : { std::pair{ 0.5, 1e-4 }, std::pair{ 1.0, 1e-4 }, std::pair{ 2.0, 1e-5 } })
+  {
+    RadiosityScene scene;
+    addPit(scene, 1.0, depth, 96, 0.0);
+    RadiosityOptions options = fine();
+    options.errorTolerance = tolerance;
+    options.minimumElementArea = 1e-6;
+    options.visibilitySamples = 16;
+    HierarchicalRadiosity solver(scene, options);
+    solver.setSky(&uniform);
+    ASSERT_TRUE(solver.solve());
+    const Vec3 centre(0, 0, -depth);
+    // Any leaf of the floor touching the centre.
+    const PolygonElement* leaf = solver.polygonRoots()[0];
+    while (leaf->hasChildren())
+      leaf = static_cast<const PolygonElement*>(const_cast<PolygonElement*>(leaf)->children()[0]);
+    ASSERT_LT(glm::length(leaf->corners()[0] - centre), 1e-12);
+    const double got = solver.irradianceAt(*leaf, centre)[SkyLight][0];
+    const double expected = std::pow(std::sin(std::atan(1.0 / depth)), 2);
+    EXPECT_NEAR(got / expected, 1.0, 0.01) << depth;
+  }
+}
+
 TEST(Radiosity, WallCastsItsShadowWhereGeometryPutsIt)
 {
   RadiosityScene scene;
