@@ -149,6 +149,54 @@ SkyHierarchy::SkyHierarchy(
         finest[k] = this->Scale * modelIntegral[k] / omega;
       }
   }
+  this->buildPyramid();
+}
+
+SkyHierarchy::SkyHierarchy(int finestLevel, int bands)
+  : FinestLevel(finestLevel)
+  , Bands(bands)
+{
+}
+
+SkyHierarchy SkyHierarchy::fromCellAverages(int finestLevel, int bands, const std::vector<double>& averages)
+{
+  if (finestLevel < 1 || finestLevel > 10 || (bands != 1 && bands != 3))
+  {
+    throw Error("a sky map needs 2^k x 2^k cells (k in 1..10) and 1 or 3 bands");
+  }
+  const int side = cellsPerSide(finestLevel);
+  if (averages.size() != static_cast<std::size_t>(side) * side * bands)
+  {
+    throw Error("the sky map's radiance array does not match its cells");
+  }
+  SkyHierarchy sky(finestLevel, bands);
+  sky.Pyramid.resize(finestLevel + 1);
+  sky.Pyramid[finestLevel] = averages;
+  sky.Horizontal.assign(bands, 0.0);
+  for (int iu = 0; iu < side; ++iu)
+  {
+    const SkyPatch row{ finestLevel, iu, 0 };
+    const double weight = (row.v1() - row.v0()) * 0.5 *
+      (std::pow(std::sin(row.u1()), 2) - std::pow(std::sin(row.u0()), 2));
+    for (int iv = 0; iv < side; ++iv)
+      for (int band = 0; band < bands; ++band)
+      {
+        const double value = averages[(static_cast<std::size_t>(iu) * side + iv) * bands + band];
+        if (!(value >= 0.0) || !std::isfinite(value))
+        {
+          throw Error("the sky map holds a negative or non-finite radiance");
+        }
+        sky.Horizontal[band] += value * weight;
+      }
+  }
+  sky.Scale = 1.0;
+  sky.buildPyramid();
+  return sky;
+}
+
+void SkyHierarchy::buildPyramid()
+{
+  const int finestLevel = this->FinestLevel;
   for (int level = finestLevel - 1; level >= 0; --level)
   {
     const int n = cellsPerSide(level);

@@ -69,6 +69,11 @@ public:
   SkyHierarchy(const SkyModel& model, double diffuseHorizontalWm2, int finestLevel,
     const SkyTexture* texture = nullptr);
 
+  /// A hierarchy over given finest-level cell averages (W/m^2/sr), e.g. a radiance map
+  /// read back from vtkSkySource: averages[(iu * side + iv) * bands + band] with
+  /// side = 2^finestLevel. Throws Error on a size mismatch or a negative value.
+  static SkyHierarchy fromCellAverages(int finestLevel, int bands, const std::vector<double>& averages);
+
   int finestLevel() const { return this->FinestLevel; }
   int bands() const { return this->Bands; }
   /// Cells per side at a level.
@@ -86,6 +91,8 @@ public:
   double planeIrradiance(const Direction& normal, int level, int band) const;
 
 private:
+  SkyHierarchy(int finestLevel, int bands);
+  void buildPyramid();
   double finestAverage(int iu, int iv, int band) const;
 
   int FinestLevel;

@@ -1,0 +1,166 @@
+/**
+ * @class   vtkHierarchicalRadiosity
+ * @brief   Outdoor lighting by hierarchical radiosity with clustering under sun and sky.
+ *
+ * vtkHierarchicalRadiosity solves the light exchange of a scene lit by the sun and
+ * the sky following Daubert, Schirmacher, Sillion & Drettakis (EGWR 1997): a cluster
+ * hierarchy over every input surface, the root's self-link plus one link from each
+ * external source, BF refinement relative to the scene's incident power, and
+ * gather / push-pull iterations until radiosity converges. Visibility is ray cast
+ * with Embree against the full-resolution scene.
+ *
+ * Input port 0 (repeatable): vtkPolyData (triangles, quads, polygons, strips),
+ * vtkStructuredGrid (e.g. vtkTerrainSource output; each visible cell becomes two
+ * triangles) or a composite data set of them. Reflectance per cell from the cell
+ * array ReflectanceArrayName (1 or 3 components) or DefaultReflectance; optional
+ * emission (radiosity, W/m^2) from EmissionArrayName.
+ * Input port 1 (optional, repeatable): the light sources, vtkSkySource output 0 (its
+ * radiance map) and vtkSunSource output.
+ *
+ * Output port 0: the input geometry (same points and cells; a vtkMultiBlockDataSet when
+ * there are several inputs or a composite one) with point data `Irradiance` (global),
+ * `SunIrradiance`, `SkyIrradiance`, `ReflectedIrradiance` and `Radiosity` in W/m^2
+ * (NumberOfBands components), area-weighted over the elements around each point; field
+ * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons` and seconds per
+ * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`).
+ * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
+ * `Level`, and the same point arrays, continuous across elements (values at
+ * T-vertices interpolated along the coarser edge).
+ * Output port 2: the links as lines from receiver to sender (sun and sky links drawn
+ * toward the sky) with cell data `Level` and transported `Power` (W), as in the
+ * paper's Fig. 9.
+ *
+ * @sa vtkTerrainSource vtkSunSource vtkSkySource
+ */
+
+#ifndef vtkHierarchicalRadiosity_h
+#define vtkHierarchicalRadiosity_h
+
+#include "TerraLuxFiltersModule.h" // For export macro
+#include "vtkAlgorithm.h"
+
+class vtkPolyData;
+
+class TERRALUXFILTERS_EXPORT vtkHierarchicalRadiosity : public vtkAlgorithm
+{
+public:
+  static vtkHierarchicalRadiosity* New();
+  vtkTypeMacro(vtkHierarchicalRadiosity, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Set/Get the refinement tolerance: a link is refined when the power it carries
+   * exceeds this fraction of the power the scene receives. Default is 1e-3.
+   */
+  vtkSetClampMacro(ErrorTolerance, double, 1e-9, 1.0);
+  vtkGetMacro(ErrorTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the smallest element area in m^2 (0: a millionth of the scene's area).
+   * Default is 0.
+   */
+  vtkSetClampMacro(MinimumElementArea, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MinimumElementArea, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the visibility rays per link. Default is 4.
+   */
+  vtkSetClampMacro(VisibilitySamples, int, 1, 1024);
+  vtkGetMacro(VisibilitySamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the most gather / push-pull iterations. Default is 30.
+   */
+  vtkSetClampMacro(MaximumIterations, int, 1, 100000);
+  vtkGetMacro(MaximumIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the convergence tolerance: iterations stop when the largest change of
+   * radiosity falls below this fraction of the largest radiosity. Default is 1e-3.
+   */
+  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkGetMacro(ConvergenceTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the reflectance of cells without a reflectance array, in [0, 1).
+   * Default is 0.2.
+   */
+  vtkSetClampMacro(DefaultReflectance, double, 0.0, 0.999);
+  vtkGetMacro(DefaultReflectance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the names of the cell arrays holding reflectance (values in [0, 1)) and
+   * emitted radiosity (W/m^2, >= 0), 1 or 3 components. Default is nullptr: none.
+   */
+  vtkSetStringMacro(ReflectanceArrayName);
+  vtkGetStringMacro(ReflectanceArrayName);
+  vtkSetStringMacro(EmissionArrayName);
+  vtkGetStringMacro(EmissionArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the number of bands, 1 (broadband) or 3 (RGB). Default is 1.
+   */
+  vtkSetClampMacro(NumberOfBands, int, 1, 3);
+  vtkGetMacro(NumberOfBands, int);
+  ///@}
+
+  /**
+   * Connect a light source (vtkSkySource output 0 or vtkSunSource output).
+   */
+  void AddLightConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
+
+  /**
+   * Output 0: the input geometry with the point arrays (its type, or a multiblock).
+   */
+  vtkDataObject* GetOutput() { return this->GetOutputDataObject(0); }
+
+  ///@{
+  /**
+   * The adaptive leaf mesh (port 1) and the links (port 2).
+   */
+  vtkPolyData* GetLeafMeshOutput();
+  vtkPolyData* GetLinksOutput();
+  ///@}
+
+  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+protected:
+  vtkHierarchicalRadiosity();
+  ~vtkHierarchicalRadiosity() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  double ErrorTolerance;
+  double MinimumElementArea;
+  int VisibilitySamples;
+  int MaximumIterations;
+  double ConvergenceTolerance;
+  double DefaultReflectance;
+  char* ReflectanceArrayName;
+  char* EmissionArrayName;
+  int NumberOfBands;
+
+private:
+  vtkHierarchicalRadiosity(const vtkHierarchicalRadiosity&) = delete;
+  void operator=(const vtkHierarchicalRadiosity&) = delete;
+};
+
+#endif

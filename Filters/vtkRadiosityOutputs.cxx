@@ -1,0 +1,278 @@
+#include "vtkRadiosityOutputs.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityScene.h"
+#include "vtkSmartPointer.h"
+
+#include "bf_oracle.h"
+#include "cluster.h"
+#include "polygon_element.h"
+#include "sky_patch_element.h"
+#include "solver.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <functional>
+#include <unordered_map>
+
+namespace
+{
+using terralux::Spectrum;
+using terralux::Vec3;
+
+// The five output quantities of a leaf: global, sun, sky, reflected irradiance, radiosity.
+constexpr int quantities = 5;
+const char* const quantityNames[quantities] = { "Irradiance", "SunIrradiance", "SkyIrradiance",
+  "ReflectedIrradiance", "Radiosity" };
+using Values = std::array<Spectrum, quantities>;
+
+Values valuesOf(const terralux::PolygonElement& leaf)
+{
+  Values v{};
+  for (int band = 0; band < terralux::maxBands; ++band)
+  {
+    v[1][band] = leaf.Irradiance[terralux::SunLight][band];
+    v[2][band] = leaf.Irradiance[terralux::SkyLight][band];
+    v[3][band] = leaf.Irradiance[terralux::ReflectedLight][band];
+    v[0][band] = v[1][band] + v[2][band] + v[3][band];
+    v[4][band] = leaf.Radiosity[band];
+  }
+  return v;
+}
+
+void accumulate(Values& sum, const Values& v, double weight)
+{
+  for (int q = 0; q < quantities; ++q)
+    for (int band = 0; band < terralux::maxBands; ++band)
+      sum[q][band] += weight * v[q][band];
+}
+
+void collectLeaves(terralux::PolygonElement* element, std::vector<terralux::PolygonElement*>& leaves)
+{
+  if (!element->hasChildren())
+  {
+    leaves.push_back(element);
+    return;
+  }
+  for (terralux::HElement* child : element->children())
+    collectLeaves(static_cast<terralux::PolygonElement*>(child), leaves);
+}
+
+// The leaf below `root` that has `corner` as one of its corners.
+terralux::PolygonElement* leafAtCorner(terralux::PolygonElement* element, const Vec3& corner)
+{
+  while (element->hasChildren())
+  {
+    terralux::PolygonElement* next = nullptr;
+    for (terralux::HElement* child : element->children())
+    {
+      auto* polygon = static_cast<terralux::PolygonElement*>(child);
+      for (int k = 0; k < polygon->cornerCount() && !next; ++k)
+        if (polygon->corners()[k] == corner)
+          next = polygon;
+    }
+    if (!next)
+      break;
+    element = next;
+  }
+  return element;
+}
+
+std::vector<vtkSmartPointer<vtkDoubleArray>> makeArrays(int bands, vtkIdType tuples)
+{
+  std::vector<vtkSmartPointer<vtkDoubleArray>> arrays;
+  for (int q = 0; q < quantities; ++q)
+  {
+    auto array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetName(quantityNames[q]);
+    array->SetNumberOfComponents(bands);
+    array->SetNumberOfTuples(tuples);
+    array->Fill(0.0);
+    arrays.push_back(array);
+  }
+  return arrays;
+}
+
+void store(const std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkIdType tuple, const Values& v, int bands)
+{
+  for (int q = 0; q < quantities; ++q)
+    for (int band = 0; band < bands; ++band)
+      arrays[q]->SetComponent(tuple, band, v[q][band]);
+}
+
+struct PositionHash
+{
+  std::size_t operator()(const Vec3& p) const
+  {
+    std::size_t h = 1469598103934665603ull;
+    for (int k = 0; k < 3; ++k)
+    {
+      std::uint64_t bits;
+      const double value = p[k] == 0.0 ? 0.0 : p[k]; // -0 and +0 alike
+      std::memcpy(&bits, &value, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+    return h;
+  }
+};
+} // namespace
+
+void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& solver,
+  const vtkRadiosityScene& scene, int index, int bands, vtkDataSet* output)
+{
+  const vtkRadiosityScene::Input& input = scene.Inputs[index];
+  const vtkIdType count = input.data->GetNumberOfPoints();
+  std::vector<Values> sums(count, Values{});
+  std::vector<double> weights(count, 0.0);
+  const auto& roots = solver.polygonRoots();
+  for (std::size_t k = 0; k < roots.size(); ++k)
+  {
+    const terralux::ScenePolygon& polygon = scene.Scene.polygons[k];
+    if (!roots[k] || polygon.owner != index)
+      continue;
+    for (int c = 0; c < polygon.vertexCount; ++c)
+    {
+      const vtkIdType point = polygon.vertices[c] - input.firstPoint;
+      terralux::PolygonElement* leaf = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
+      accumulate(sums[point], valuesOf(*leaf), leaf->area());
+      weights[point] += leaf->area();
+    }
+  }
+  const auto arrays = makeArrays(bands, count);
+  for (vtkIdType p = 0; p < count; ++p)
+  {
+    if (weights[p] > 0.0)
+    {
+      Values v{};
+      accumulate(v, sums[p], 1.0 / weights[p]);
+      store(arrays, p, v, bands);
+    }
+  }
+  for (const auto& array : arrays)
+    output->GetPointData()->AddArray(array);
+  output->GetPointData()->SetActiveScalars("Irradiance");
+}
+
+void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& solver, int bands, vtkPolyData* output)
+{
+  std::vector<terralux::PolygonElement*> leaves;
+  for (terralux::PolygonElement* root : solver.polygonRoots())
+    if (root)
+      collectLeaves(root, leaves);
+
+  std::unordered_map<Vec3, vtkIdType, PositionHash> index;
+  std::vector<Vec3> positions;
+  std::vector<Values> values;
+  std::vector<double> weights;
+  vtkNew<vtkCellArray> polygons;
+  vtkNew<vtkIntArray> level;
+  level->SetName("Level");
+  for (terralux::PolygonElement* leaf : leaves)
+  {
+    vtkIdType ids[4];
+    const Values v = valuesOf(*leaf);
+    for (int c = 0; c < leaf->cornerCount(); ++c)
+    {
+      auto [it, added] = index.emplace(leaf->corners()[c], static_cast<vtkIdType>(positions.size()));
+      if (added)
+      {
+        positions.push_back(leaf->corners()[c]);
+        values.emplace_back();
+        weights.push_back(0.0);
+      }
+      ids[c] = it->second;
+      accumulate(values[it->second], v, leaf->area());
+      weights[it->second] += leaf->area();
+    }
+    polygons->InsertNextCell(leaf->cornerCount(), ids);
+    level->InsertNextValue(leaf->level());
+  }
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    Values normalised{};
+    accumulate(normalised, values[k], 1.0 / weights[k]);
+    values[k] = normalised;
+  }
+
+  // T-vertices: a vertex in the middle of a coarser leaf's edge takes the value linear
+  // interpolation along that edge gives, coarse leaves first, so shading is continuous.
+  std::sort(leaves.begin(), leaves.end(),
+    [](const terralux::PolygonElement* a, const terralux::PolygonElement* b) { return a->area() > b->area(); });
+  std::function<void(vtkIdType, vtkIdType)> anchor = [&](vtkIdType a, vtkIdType b) {
+    const auto it = index.find(0.5 * (positions[a] + positions[b]));
+    if (it == index.end())
+      return;
+    Values mid{};
+    accumulate(mid, values[a], 0.5);
+    accumulate(mid, values[b], 0.5);
+    values[it->second] = mid;
+    anchor(a, it->second);
+    anchor(it->second, b);
+  };
+  for (terralux::PolygonElement* leaf : leaves)
+    for (int c = 0; c < leaf->cornerCount(); ++c)
+      anchor(index[leaf->corners()[c]], index[leaf->corners()[(c + 1) % leaf->cornerCount()]]);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
+  const auto arrays = makeArrays(bands, static_cast<vtkIdType>(positions.size()));
+  for (std::size_t k = 0; k < positions.size(); ++k)
+  {
+    points->SetPoint(static_cast<vtkIdType>(k), positions[k].x, positions[k].y, positions[k].z);
+    store(arrays, static_cast<vtkIdType>(k), values[k], bands);
+  }
+  output->SetPoints(points);
+  output->SetPolys(polygons);
+  for (const auto& array : arrays)
+    output->GetPointData()->AddArray(array);
+  output->GetPointData()->SetActiveScalars("Irradiance");
+  output->GetCellData()->AddArray(level);
+}
+
+void vtkRadiosityOutputs::BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output)
+{
+  const terralux::Cluster* root = solver.root();
+  const double reach = glm::length(root->high() - root->low());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIntArray> level;
+  level->SetName("Level");
+  vtkNew<vtkDoubleArray> power;
+  power->SetName("Power");
+  for (const auto& element : solver.elements().all())
+  {
+    for (const terralux::Link& link : element->Incoming)
+    {
+      const Vec3 from = element->centre();
+      Vec3 to = link.sender->centre();
+      if (link.sender->isExternal())
+      {
+        const Vec3 d = link.sender->kind() == terralux::HElement::Kind::Sun
+          ? static_cast<const terralux::SunElement*>(link.sender)->direction()
+          : static_cast<const terralux::SkyPatchElement*>(link.sender)->direction();
+        to = from + reach * d; // sources at infinity: drawn toward the sky
+      }
+      const vtkIdType a = points->InsertNextPoint(from.x, from.y, from.z);
+      const vtkIdType b = points->InsertNextPoint(to.x, to.y, to.z);
+      const vtkIdType ids[2] = { a, b };
+      lines->InsertNextCell(2, ids);
+      level->InsertNextValue(element->level());
+      power->InsertNextValue(terralux::linkPower(*element, link));
+    }
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(level);
+  output->GetCellData()->AddArray(power);
+}

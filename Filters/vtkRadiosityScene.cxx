@@ -1,0 +1,206 @@
+#include "vtkRadiosityScene.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkStructuredGrid.h"
+
+#include "error.h"
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+// Per-cell spectrum from an optional cell array; values checked against [low, high).
+class CellSpectrum
+{
+public:
+  CellSpectrum(vtkDataSet* data, const char* name, double fallback, double low, double high, const char* what)
+    : Fallback(fallback)
+  {
+    if (!name || !*name)
+      return;
+    this->Array = data->GetCellData()->GetArray(name);
+    if (!this->Array)
+    {
+      throw terralux::Error(std::string(what) + " array '" + name + "' is not a cell array of the input");
+    }
+    const int components = this->Array->GetNumberOfComponents();
+    if ((components != 1 && components != 3) || this->Array->GetNumberOfTuples() != data->GetNumberOfCells())
+    {
+      throw terralux::Error(std::string(what) + " array '" + name +
+        "' must have 1 or 3 components and one tuple per cell");
+    }
+    for (vtkIdType k = 0; k < this->Array->GetNumberOfTuples(); ++k)
+      for (int c = 0; c < components; ++c)
+      {
+        const double v = this->Array->GetComponent(k, c);
+        if (!(v >= low && v < high))
+        {
+          throw terralux::Error(std::string(what) + " array '" + name + "' holds " + std::to_string(v) +
+            " at cell " + std::to_string(k) + ": values must lie in [" + std::to_string(low) + ", " +
+            (std::isinf(high) ? std::string("inf") : std::to_string(high)) + ")");
+        }
+      }
+  }
+  terralux::Spectrum at(vtkIdType cell) const
+  {
+    if (!this->Array)
+      return terralux::uniformSpectrum(this->Fallback);
+    if (this->Array->GetNumberOfComponents() == 1)
+      return terralux::uniformSpectrum(this->Array->GetComponent(cell, 0));
+    return { this->Array->GetComponent(cell, 0), this->Array->GetComponent(cell, 1), this->Array->GetComponent(cell, 2) };
+  }
+  bool present() const { return this->Array != nullptr; }
+
+private:
+  vtkDataArray* Array = nullptr;
+  double Fallback;
+};
+} // namespace
+
+void vtkRadiosityScene::AddDataSet(
+  vtkDataSet* data, double defaultReflectance, const char* reflectanceName, const char* emissionName)
+{
+  const CellSpectrum reflectance(data, reflectanceName, defaultReflectance, 0.0, 1.0, "reflectance");
+  const CellSpectrum emission(data, emissionName, 0.0, 0.0, INFINITY, "emission");
+  this->HasEmission = this->HasEmission || emission.present();
+  const vtkIdType first = static_cast<vtkIdType>(this->Scene.points.size());
+  this->Inputs.push_back({ data, first });
+  const int owner = static_cast<int>(this->Inputs.size()) - 1;
+  for (vtkIdType k = 0; k < data->GetNumberOfPoints(); ++k)
+  {
+    double p[3];
+    data->GetPoint(k, p);
+    this->Scene.points.emplace_back(p[0], p[1], p[2]);
+  }
+  auto addPolygon = [&](vtkIdType cell, int count, const vtkIdType* ids) {
+    terralux::ScenePolygon polygon;
+    polygon.vertexCount = count;
+    for (int c = 0; c < count; ++c)
+    {
+      const terralux::Vec3& p = this->Scene.points[first + ids[c]];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      {
+        throw terralux::Error("point " + std::to_string(ids[c]) + " of input " + std::to_string(owner) +
+          " has a NaN or infinite coordinate: remove or repair it");
+      }
+      polygon.vertices[c] = static_cast<int>(first + ids[c]);
+    }
+    polygon.reflectance = reflectance.at(cell);
+    polygon.emission = emission.at(cell);
+    polygon.owner = owner;
+    polygon.cell = cell;
+    this->Scene.polygons.push_back(polygon);
+  };
+
+  if (auto* grid = vtkStructuredGrid::SafeDownCast(data))
+  {
+    int dims[3];
+    grid->GetDimensions(dims);
+    if (dims[2] != 1)
+    {
+      throw terralux::Error("structured grids must be 2-D surfaces (dimensions nx x ny x 1), as "
+                            "vtkTerrainSource makes them");
+    }
+    // Terrain cells are not planar: two triangles each, skipping blanked cells.
+    for (int j = 0; j + 1 < dims[1]; ++j)
+      for (int i = 0; i + 1 < dims[0]; ++i)
+      {
+        const vtkIdType cell = i + static_cast<vtkIdType>(j) * (dims[0] - 1);
+        if (!grid->IsCellVisible(cell))
+          continue;
+        const vtkIdType p00 = i + static_cast<vtkIdType>(j) * dims[0], p10 = p00 + 1;
+        const vtkIdType p01 = p00 + dims[0], p11 = p01 + 1;
+        const vtkIdType a[3] = { p00, p10, p11 }, b[3] = { p00, p11, p01 };
+        addPolygon(cell, 3, a);
+        addPolygon(cell, 3, b);
+      }
+    return;
+  }
+  auto* polyData = vtkPolyData::SafeDownCast(data);
+  if (!polyData)
+  {
+    throw terralux::Error(std::string("input of type ") + data->GetClassName() +
+      " is not supported: give vtkPolyData or vtkStructuredGrid");
+  }
+  this->SkippedCells += polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
+  vtkIdType cell = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
+  vtkNew<vtkIdList> ids;
+  auto polys = polyData->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(ids); ++cell)
+  {
+    const vtkIdType n = ids->GetNumberOfIds();
+    const vtkIdType* p = ids->GetPointer(0);
+    if (n == 3 || n == 4)
+    {
+      addPolygon(cell, static_cast<int>(n), p); // quads are taken as planar
+    }
+    else
+    {
+      for (vtkIdType k = 1; k + 1 < n; ++k) // fan of a planar polygon
+      {
+        const vtkIdType tri[3] = { p[0], p[k], p[k + 1] };
+        addPolygon(cell, 3, tri);
+      }
+    }
+  }
+  auto strips = polyData->GetStrips();
+  for (strips->InitTraversal(); strips->GetNextCell(ids); ++cell)
+  {
+    const vtkIdType* p = ids->GetPointer(0);
+    for (vtkIdType k = 0; k + 2 < ids->GetNumberOfIds(); ++k)
+    {
+      const vtkIdType tri[3] = { p[k], p[k % 2 ? k + 2 : k + 1], p[k % 2 ? k + 1 : k + 2] };
+      addPolygon(cell, 3, tri);
+    }
+  }
+}
+
+void vtkRadiosityScene::AddLight(vtkDataObject* light)
+{
+  if (auto* map = vtkImageData::SafeDownCast(light))
+  {
+    vtkDataArray* radiance = map->GetCellData()->GetArray("Radiance");
+    int dims[3];
+    map->GetDimensions(dims);
+    const int n = dims[0] - 1;
+    int level = 0;
+    while ((1 << level) < n)
+      ++level;
+    if (!radiance || n < 2 || dims[1] - 1 != n || (1 << level) != n)
+    {
+      throw terralux::Error("a sky on input port 1 must be vtkSkySource's radiance map: 2^k x 2^k "
+                            "cells over (azimuth, altitude) with cell data 'Radiance'");
+    }
+    const int bands = radiance->GetNumberOfComponents();
+    std::vector<double> averages(static_cast<std::size_t>(n) * n * bands);
+    // Map cell (i compass azimuth, j altitude) -> pyramid cell (iu = j, iv = i + n/2).
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        for (int band = 0; band < bands; ++band)
+          averages[(static_cast<std::size_t>(j) * n + (i + n / 2) % n) * bands + band] =
+            radiance->GetComponent(i + static_cast<vtkIdType>(j) * n, band);
+    this->Sky = std::make_unique<terralux::SkyHierarchy>(
+      terralux::SkyHierarchy::fromCellAverages(level, bands, averages));
+    return;
+  }
+  vtkFieldData* fieldData = light ? light->GetFieldData() : nullptr;
+  vtkDataArray* direction = fieldData ? fieldData->GetArray("SunDirection") : nullptr;
+  vtkDataArray* irradiance = fieldData ? fieldData->GetArray("SunNormalIrradiance") : nullptr;
+  if (!direction || !irradiance || direction->GetNumberOfValues() != 3)
+  {
+    throw terralux::Error("input port 1 takes vtkSkySource's radiance map and vtkSunSource's "
+                          "output; this input is neither");
+  }
+  this->HasSun = true;
+  for (int k = 0; k < 3; ++k)
+    this->SunDirection[k] = direction->GetComponent(k, 0);
+  this->SunIrradiance = terralux::uniformSpectrum(irradiance->GetComponent(0, 0));
+}
