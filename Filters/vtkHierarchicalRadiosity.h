@@ -119,6 +119,14 @@ public:
   vtkGetMacro(NumberOfBands, int);
   ///@}
 
+  ///@{
+  /**
+   * Set or add geometry on input port 0 without a pipeline.
+   */
+  void SetInputData(vtkDataObject* data) { this->SetInputDataObject(0, data); }
+  void AddInputData(vtkDataObject* data) { this->AddInputDataObject(0, data); }
+  ///@}
+
   /**
    * Connect a light source (vtkSkySource output 0 or vtkSunSource output).
    */
