@@ -252,16 +252,6 @@ void HierarchicalRadiosity::gather()
 
 namespace
 {
-struct PushPullState
-{
-  double maximumChange = 0.0;
-  double maximumRadiosity = 0.0;
-  bool reuseKernels = false; // the links are those the leaf kernels were cached for
-  const Visibility* rays = nullptr;
-  int samples = 4;
-  double incidentPower = 0.0; // sum over leaves of irradiance x area (largest band)
-};
-
 // A link waiting to be evaluated at the leaves below the element that stores it.
 struct DeferredLink
 {
@@ -269,17 +259,34 @@ struct DeferredLink
   const HElement* owner;
 };
 
-// Pushes irradiance down and pulls area-weighted radiosity up; returns the element's
-// radiosity. Sun and sky irradiance gathered on a surface passes to its children as
-// is (they share its normal). Links stored on clusters, and links from other surfaces,
-// are evaluated at each leaf with the leaf's own geometry: a cluster hands irradiance
-// to each contained surface by that surface's orientation, and every leaf sees every
-// sender through kernels taken at its own points, whatever level the link lives on,
-// which keeps closed scenes conservative to the last leaf. A partially visible link
-// from above is re-sampled at the leaf, so shadow boundaries are resolved by the leaves
-// even where no single link is worth refining.
-Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>& inherited,
-  double inheritedPartial, std::vector<DeferredLink>& deferred, PushPullState& state)
+// What push hands to one leaf: irradiance that holds for it as is, and the links to
+// evaluate with its own geometry (a slice of a shared array).
+struct LeafTask
+{
+  PolygonElement* leaf;
+  std::array<Spectrum, lightCategories> inherited;
+  double partial;
+  std::size_t first;
+  std::size_t count;
+};
+
+struct LeafResult
+{
+  Spectrum radiosity{}; // applied after every leaf is done (Jacobi), so no leaf reads
+                        // a value another thread is writing
+  double change = 0.0;
+  double largestRadiosity = 0.0;
+  double incidentPower = 0.0;
+};
+
+// Push, first half: walk down, collecting for each leaf the irradiance that passes
+// unchanged (sun and sky gathered on a surface hold for its children, which share its
+// normal) and the links to evaluate at the leaf (links stored on clusters, whose
+// irradiance each contained surface takes by its own orientation, and links from other
+// surfaces, evaluated with the leaf's own points at whatever level they live).
+void collectLeafTasks(HElement& element, const std::array<Spectrum, lightCategories>& inherited,
+  double inheritedPartial, std::vector<DeferredLink>& deferred, std::vector<DeferredLink>& flat,
+  std::vector<LeafTask>& tasks)
 {
   const std::size_t mark = deferred.size();
   for (const Link& link : element.Incoming)
@@ -287,7 +294,6 @@ Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>
     if (element.isCluster() || lightCategoryOf(*link.sender) == ReflectedLight)
       deferred.push_back({ &link, &element });
   }
-  Spectrum radiosity{};
   if (element.isSurface())
   {
     auto& polygon = static_cast<PolygonElement&>(element);
@@ -298,82 +304,99 @@ Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>
     const double partial = inheritedPartial + polygon.GatheredPartial;
     if (!polygon.hasChildren())
     {
-      if (!state.reuseKernels || polygon.LeafKernels.size() != deferred.size())
-      {
-        polygon.LeafKernels.resize(deferred.size());
-        polygon.DeferredPartial = 0.0;
-        for (std::size_t k = 0; k < deferred.size(); ++k)
-        {
-          const DeferredLink& item = deferred[k];
-          const Link& link = *item.link;
-          double visibility = link.visibility;
-          if (item.owner == &polygon)
-          {
-            polygon.LeafKernels[k] = link.kernel * link.visibility;
-          }
-          else
-          {
-            visibility = link.visibility < 1.0 ? visibilityAtSurface(polygon, *link.sender, *state.rays, state.samples) : 1.0;
-            polygon.LeafKernels[k] = kernelAtSurface(polygon, *link.sender) * visibility;
-          }
-          if (visibility > 0.0 && visibility < 1.0)
-          {
-            const Spectrum e = link.sender->emittance();
-            polygon.DeferredPartial += polygon.LeafKernels[k] * std::max({ e[0], e[1], e[2] });
-          }
-        }
-      }
-      for (std::size_t k = 0; k < deferred.size(); ++k)
-      {
-        const Link& link = *deferred[k].link;
-        const double transport = polygon.LeafKernels[k]; // kernel x visibility
-        const Spectrum e = link.sender->emittance();
-        const int category = lightCategoryOf(*link.sender);
-        for (int band = 0; band < maxBands; ++band)
-          irradiance[category][band] += transport * e[band];
-      }
-      polygon.Irradiance = irradiance;
-      polygon.PartialIrradiance = partial + polygon.DeferredPartial;
-      double incident = 0.0;
-      for (int band = 0; band < maxBands; ++band)
-      {
-        const double total = irradiance[0][band] + irradiance[1][band] + irradiance[2][band];
-        incident = std::max(incident, total);
-        radiosity[band] = polygon.emission()[band] + polygon.reflectance()[band] * total;
-        state.maximumChange = std::max(state.maximumChange, std::abs(radiosity[band] - polygon.Radiosity[band]));
-        state.maximumRadiosity = std::max(state.maximumRadiosity, radiosity[band]);
-      }
-      state.incidentPower += incident * polygon.area();
-      polygon.Radiosity = radiosity;
-      deferred.resize(mark);
-      return radiosity;
+      tasks.push_back({ &polygon, irradiance, partial, flat.size(), deferred.size() });
+      flat.insert(flat.end(), deferred.begin(), deferred.end());
     }
-    double area = 0.0;
-    for (HElement* child : polygon.children())
+    else
     {
-      const Spectrum b = pushPull(*child, irradiance, partial, deferred, state);
-      for (int band = 0; band < maxBands; ++band)
-        radiosity[band] += b[band] * child->area();
-      area += child->area();
+      for (HElement* child : polygon.children())
+        collectLeafTasks(*child, irradiance, partial, deferred, flat, tasks);
     }
-    for (double& value : radiosity)
-      value /= area;
   }
   else
   {
     const std::array<Spectrum, lightCategories> nothing{};
-    double area = 0.0;
     for (HElement* child : element.children())
-    {
-      const Spectrum b = pushPull(*child, nothing, 0.0, deferred, state);
-      for (int band = 0; band < maxBands; ++band)
-        radiosity[band] += b[band] * child->area();
-      area += child->area();
-    }
-    for (double& value : radiosity)
-      value /= area;
+      collectLeafTasks(*child, nothing, 0.0, deferred, flat, tasks);
   }
   deferred.resize(mark);
+}
+
+// Push, second half, for one leaf: its irradiance and radiosity. A partially visible
+// link from above is re-sampled at the leaf, so shadow boundaries are resolved by the
+// leaves even where no single link is worth refining.
+LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, bool reuseKernels,
+  const Visibility& rays, int samples)
+{
+  PolygonElement& polygon = *task.leaf;
+  std::array<Spectrum, lightCategories> irradiance = task.inherited;
+  if (!reuseKernels || polygon.LeafKernels.size() != task.count)
+  {
+    polygon.LeafKernels.resize(task.count);
+    polygon.DeferredPartial = 0.0;
+    for (std::size_t k = 0; k < task.count; ++k)
+    {
+      const DeferredLink& item = deferred[k];
+      const Link& link = *item.link;
+      double visibility = link.visibility;
+      if (item.owner == &polygon)
+      {
+        polygon.LeafKernels[k] = link.kernel * link.visibility;
+      }
+      else
+      {
+        visibility = link.visibility < 1.0 ? visibilityAtSurface(polygon, *link.sender, rays, samples) : 1.0;
+        polygon.LeafKernels[k] = kernelAtSurface(polygon, *link.sender) * visibility;
+      }
+      if (visibility > 0.0 && visibility < 1.0)
+      {
+        polygon.DeferredPartial += polygon.LeafKernels[k] * largest(link.sender->emittance());
+      }
+    }
+  }
+  for (std::size_t k = 0; k < task.count; ++k)
+  {
+    const Link& link = *deferred[k].link;
+    const double transport = polygon.LeafKernels[k]; // kernel x visibility
+    const Spectrum e = link.sender->emittance();
+    const int category = lightCategoryOf(*link.sender);
+    for (int band = 0; band < maxBands; ++band)
+      irradiance[category][band] += transport * e[band];
+  }
+  polygon.Irradiance = irradiance;
+  polygon.PartialIrradiance = task.partial + polygon.DeferredPartial;
+  LeafResult result;
+  double incident = 0.0;
+  for (int band = 0; band < maxBands; ++band)
+  {
+    const double total = irradiance[0][band] + irradiance[1][band] + irradiance[2][band];
+    incident = std::max(incident, total);
+    result.radiosity[band] = polygon.emission()[band] + polygon.reflectance()[band] * total;
+    result.change = std::max(result.change, std::abs(result.radiosity[band] - polygon.Radiosity[band]));
+    result.largestRadiosity = std::max(result.largestRadiosity, result.radiosity[band]);
+  }
+  result.incidentPower = incident * polygon.area();
+  return result;
+}
+
+// Pull: area-weighted radiosity up the hierarchy.
+Spectrum pullRadiosity(HElement& element)
+{
+  if (element.isSurface() && !static_cast<PolygonElement&>(element).hasChildren())
+  {
+    return element.Radiosity;
+  }
+  Spectrum radiosity{};
+  double area = 0.0;
+  for (HElement* child : element.children())
+  {
+    const Spectrum b = pullRadiosity(*child);
+    for (int band = 0; band < maxBands; ++band)
+      radiosity[band] += b[band] * child->area();
+    area += child->area();
+  }
+  for (double& value : radiosity)
+    value /= area;
   element.Radiosity = radiosity;
   return radiosity;
 }
@@ -381,17 +404,31 @@ Spectrum pushPull(HElement& element, const std::array<Spectrum, lightCategories>
 
 double HierarchicalRadiosity::pushPull()
 {
-  PushPullState state;
-  state.reuseKernels = !this->StructureChanged;
-  state.rays = this->Rays.get();
-  state.samples = this->Options.visibilitySamples;
+  std::vector<DeferredLink> deferred, flat;
+  std::vector<LeafTask> tasks;
+  collectLeafTasks(*this->RootCluster, {}, 0.0, deferred, flat, tasks);
+
+  const bool reuseKernels = !this->StructureChanged;
   this->StructureChanged = false;
-  std::vector<DeferredLink> deferred;
-  terralux::pushPull(*this->RootCluster, {}, 0.0, deferred, state);
+  std::vector<LeafResult> results(tasks.size());
+  tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t k) {
+    results[k] = solveLeaf(tasks[k], flat.data() + tasks[k].first, reuseKernels, *this->Rays,
+      this->Options.visibilitySamples);
+  });
+  double change = 0.0, radiosity = 0.0, incident = 0.0;
+  for (std::size_t k = 0; k < tasks.size(); ++k) // in leaf order: the same for any thread count
+  {
+    const LeafResult& r = results[k];
+    tasks[k].leaf->Radiosity = r.radiosity;
+    change = std::max(change, r.change);
+    radiosity = std::max(radiosity, r.largestRadiosity);
+    incident += r.incidentPower;
+  }
+  pullRadiosity(*this->RootCluster);
   // The oracle's tolerance is relative to the power the scene receives, which
   // interreflection raises above the direct estimate.
-  this->Stats.referencePowerW = std::max(this->Stats.referencePowerW, state.incidentPower);
-  return state.maximumRadiosity > 0.0 ? state.maximumChange / state.maximumRadiosity : 0.0;
+  this->Stats.referencePowerW = std::max(this->Stats.referencePowerW, incident);
+  return radiosity > 0.0 ? change / radiosity : 0.0;
 }
 
 std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
