@@ -1,0 +1,93 @@
+"""terrain -> sun -> sky -> vtkHierarchicalRadiosity -> writer on the real Olinda DEM."""
+import os
+import unittest
+
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter, vtkXMLStructuredGridReader, vtkXMLStructuredGridWriter
+
+from terralux import vtkHierarchicalRadiosity, vtkSkySource, vtkSunSource, vtkTerrainSource
+from terralux_testing import OLINDA, ErrorCatcher, scratch_dir
+
+
+def field(data, name):
+    return data.GetFieldData().GetArray(name).GetValue(0)
+
+
+class OlindaRadiosity(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.terrain = vtkTerrainSource()
+        cls.terrain.SetFileName(OLINDA)
+        cls.sun = vtkSunSource()
+        cls.sun.SetInputConnection(cls.terrain.GetOutputPort())
+        cls.sun.SetDateTime("2024-12-21T09:00:00-03:00")
+        cls.sky = vtkSkySource()
+        cls.sky.SetSunConnection(cls.sun.GetOutputPort())
+        cls.sky.SetLevels(6)
+        cls.radiosity = vtkHierarchicalRadiosity()
+        cls.radiosity.SetInputConnection(cls.terrain.GetOutputPort())
+        cls.radiosity.AddLightConnection(cls.sun.GetOutputPort())
+        cls.radiosity.AddLightConnection(cls.sky.GetOutputPort(0))
+        cls.radiosity.SetErrorTolerance(1e-2)
+        cls.out = os.path.join(scratch_dir(), "olinda-lit.vts")
+        writer = vtkXMLStructuredGridWriter()
+        writer.SetInputConnection(cls.radiosity.GetOutputPort(0))
+        writer.SetFileName(cls.out)
+        assert writer.Write() == 1
+
+    def test_written_and_read_back(self):
+        reader = vtkXMLStructuredGridReader()
+        reader.SetFileName(self.out)
+        reader.Update()
+        grid = reader.GetOutput()
+        self.assertEqual(grid.GetDimensions(), (111, 111, 1))
+        data = grid.GetPointData()
+        for name in ("Elevation", "Irradiance", "SunIrradiance", "SkyIrradiance",
+                     "ReflectedIrradiance", "Radiosity"):
+            self.assertIsNotNone(data.GetArray(name), name)
+        global_, sun, sky, reflected, radiosity = (
+            data.GetArray(n) for n in ("Irradiance", "SunIrradiance", "SkyIrradiance",
+                                       "ReflectedIrradiance", "Radiosity"))
+        dni = self.sun.GetNormalIrradiance()
+        dhi = self.sun.GetDiffuseHorizontalIrradiance()
+        horizontal_beam = dni * self.sun.GetDirection()[2]
+        for k in range(0, grid.GetNumberOfPoints(), 37):
+            total = sun.GetValue(k) + sky.GetValue(k) + reflected.GetValue(k)
+            self.assertAlmostEqual(global_.GetValue(k), total, delta=1e-9 * total + 1e-12)
+            self.assertAlmostEqual(radiosity.GetValue(k), 0.2 * total, delta=1e-9 * total + 1e-12)
+            self.assertLessEqual(sun.GetValue(k), dni * (1 + 1e-9))  # never more than the beam
+            self.assertGreaterEqual(sky.GetValue(k), 0.0)
+            self.assertLessEqual(sky.GetValue(k), 1.5 * dhi)
+        # The flat sea east of Olinda (elevation <= 0): unshaded beam, open sky.
+        elevation = data.GetArray("Elevation")
+        sea = [k for k in range(grid.GetNumberOfPoints()) if elevation.GetValue(k) <= 0.0]
+        self.assertGreater(len(sea), 500)
+        mean_sun = sum(sun.GetValue(k) for k in sea) / len(sea)
+        mean_sky = sum(sky.GetValue(k) for k in sea) / len(sea)
+        self.assertAlmostEqual(mean_sun / horizontal_beam, 1.0, delta=0.02)
+        self.assertAlmostEqual(mean_sky / dhi, 1.0, delta=0.05)
+
+    def test_statistics_and_other_outputs(self):
+        output = self.radiosity.GetOutput()
+        self.assertGreater(field(output, "Elements"), 24000)
+        self.assertGreater(field(output, "Rays"), 0)
+        self.assertGreaterEqual(field(output, "Iterations"), 1)
+        leaves = self.radiosity.GetLeafMeshOutput()
+        self.assertGreaterEqual(leaves.GetNumberOfCells(), 110 * 110 * 2)
+        links = self.radiosity.GetLinksOutput()
+        self.assertEqual(links.GetNumberOfCells(), field(output, "Links"))
+        writer = vtkXMLPolyDataWriter()
+        writer.SetInputData(links)
+        writer.SetFileName(os.path.join(scratch_dir(), "links.vtp"))
+        self.assertEqual(writer.Write(), 1)
+
+    def test_no_light_is_an_error(self):
+        dark = vtkHierarchicalRadiosity()
+        dark.SetInputConnection(self.terrain.GetOutputPort())
+        catcher = ErrorCatcher(dark)
+        dark.Update()
+        self.assertIn("no light source", catcher.text())
+        self.assertEqual(dark.GetLeafMeshOutput().GetNumberOfCells(), 0)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
