@@ -139,6 +139,19 @@ vtkTypeBool vtkHierarchicalRadiosity::ProcessRequest(
   {
     return this->RequestData(request, inputVector, outputVector);
   }
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+  {
+    // The whole scene and whole sky are needed whatever extent is asked of output 0.
+    for (int port = 0; port < 2; ++port)
+      for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
+      {
+        vtkInformation* info = inputVector[port]->GetInformationObject(k);
+        if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+          info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+            info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      }
+    return 1;
+  }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 

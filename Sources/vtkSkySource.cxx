@@ -139,6 +139,11 @@ vtkTypeBool vtkSkySource::ProcessRequest(
   {
     return this->RequestData(request, inputVector, outputVector);
   }
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+  {
+    vtkTerraLuxFieldData::RequestWholeInputs(inputVector, this->GetNumberOfInputPorts());
+    return 1;
+  }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 

@@ -66,6 +66,16 @@ int vtkSunSource::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+int vtkSunSource::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Only the input's field data is read: ask for all of it, whatever extent our own
+  // consumers request (a sky map's extent means nothing to a terrain).
+  vtkTerraLuxFieldData::RequestWholeInputs(inputVector, this->GetNumberOfInputPorts());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkSunSource::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

@@ -4,6 +4,9 @@
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkNew.h"
 
 #include <cmath>
@@ -38,4 +41,20 @@ bool vtkTerraLuxFieldData::GetVector(vtkDataObject* data, const char* name, doub
     }
   }
   return true;
+}
+
+void vtkTerraLuxFieldData::RequestWholeInputs(vtkInformationVector** inputVector, int ports)
+{
+  for (int port = 0; port < ports; ++port)
+  {
+    for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
+    {
+      vtkInformation* info = inputVector[port]->GetInformationObject(k);
+      if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      {
+        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+          info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      }
+    }
+  }
 }

@@ -5,6 +5,7 @@
 
 class vtkDataObject;
 class vtkFieldData;
+class vtkInformationVector;
 
 struct vtkTerraLuxFieldData
 {
@@ -17,6 +18,10 @@ struct vtkTerraLuxFieldData
   /// Reads exactly `count` finite values of a numeric field array; false if absent,
   /// of another size, or not finite.
   static bool GetVector(vtkDataObject* data, const char* name, double* values, int count);
+
+  /// Sets every structured input's update extent to its whole extent: for algorithms
+  /// whose outputs' extents say nothing about what they need from their inputs.
+  static void RequestWholeInputs(vtkInformationVector** inputVector, int ports);
 };
 
 #endif

@@ -1,0 +1,90 @@
+// Radiosity benchmark: the Olinda DEM under the sun and a CIE clear sky, reflectance
+// 0.2, at one tolerance. Prints wall time, peak memory, elements, links, rays; with a
+// reference file (per-vertex global irradiance of a converged run) also the relative
+// RMS error and the 95th percentile of the absolute relative error.
+//   benchmark_radiosity DEM TOLERANCE [--write REF | --compare REF]
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkHierarchicalRadiosity.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSkySource.h"
+#include "vtkStructuredGrid.h"
+#include "vtkSunSource.h"
+#include "vtkTerrainSource.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <vector>
+
+int main(int argc, char* argv[])
+{
+  if (argc < 3)
+  {
+    std::cerr << "usage: benchmark_radiosity DEM TOLERANCE [--write REF | --compare REF]\n";
+    return 2;
+  }
+  vtkNew<vtkTerrainSource> terrain;
+  terrain->SetFileName(argv[1]);
+  vtkNew<vtkSunSource> sun;
+  sun->SetInputConnection(terrain->GetOutputPort());
+  sun->SetDateTime("2024-12-21T09:00:00-03:00");
+  vtkNew<vtkSkySource> sky;
+  sky->SetSunConnection(sun->GetOutputPort());
+  sky->SetSkyType(12);
+  vtkNew<vtkHierarchicalRadiosity> radiosity;
+  radiosity->SetInputConnection(terrain->GetOutputPort());
+  radiosity->AddLightConnection(sun->GetOutputPort());
+  radiosity->AddLightConnection(sky->GetOutputPort(0));
+  radiosity->SetDefaultReflectance(0.2);
+  radiosity->SetErrorTolerance(std::atof(argv[2]));
+  terrain->Update();
+  sky->Update();
+
+  const auto start = std::chrono::steady_clock::now();
+  radiosity->Update();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+
+  vtkDataObject* output = radiosity->GetOutput();
+  auto stat = [&](const char* name) { return output->GetFieldData()->GetArray(name)->GetComponent(0, 0); };
+  vtkDataArray* irradiance = vtkStructuredGrid::SafeDownCast(output)->GetPointData()->GetArray("Irradiance");
+  std::vector<double> values(irradiance->GetNumberOfTuples());
+  for (std::size_t k = 0; k < values.size(); ++k)
+    values[k] = irradiance->GetComponent(static_cast<vtkIdType>(k), 0);
+
+  std::cout << "tolerance " << argv[2] << "  time " << seconds << " s  peak RSS " << usage.ru_maxrss / 1024.0
+            << " MiB  elements " << stat("Elements") << "  links " << stat("Links") << "  rays " << stat("Rays")
+            << "  iterations " << stat("Iterations");
+  if (argc == 5 && std::strcmp(argv[3], "--write") == 0)
+  {
+    std::ofstream(argv[4], std::ios::binary)
+      .write(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
+  }
+  else if (argc == 5 && std::strcmp(argv[3], "--compare") == 0)
+  {
+    std::vector<double> reference(values.size());
+    std::ifstream(argv[4], std::ios::binary)
+      .read(reinterpret_cast<char*>(reference.data()), reference.size() * sizeof(double));
+    double squared = 0.0, referenceSquared = 0.0;
+    std::vector<double> relative;
+    for (std::size_t k = 0; k < values.size(); ++k)
+    {
+      squared += (values[k] - reference[k]) * (values[k] - reference[k]);
+      referenceSquared += reference[k] * reference[k];
+      relative.push_back(std::abs(values[k] - reference[k]) / std::max(1e-9, reference[k]));
+    }
+    std::sort(relative.begin(), relative.end());
+    std::cout << "  relative RMS error " << std::sqrt(squared / referenceSquared) << "  p95 relative error "
+              << relative[static_cast<std::size_t>(0.95 * (relative.size() - 1))];
+  }
+  std::cout << "\n";
+  return 0;
+}
