@@ -20,7 +20,9 @@
  * Output port 0: the input geometry (same points and cells; a vtkMultiBlockDataSet when
  * there are several inputs or a composite one) with point data `Irradiance` (global),
  * `SunIrradiance`, `SkyIrradiance`, `ReflectedIrradiance` and `Radiosity` in W/m^2
- * (NumberOfBands components), area-weighted over the elements around each point; field
+ * (NumberOfBands components), evaluated at each point (every link reaching the
+ * element there re-evaluated at the point: exact form factors, visibility from the
+ * point), so values are not smeared over the elements around it; field
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons` and seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data

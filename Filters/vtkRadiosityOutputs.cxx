@@ -68,7 +68,7 @@ void collectLeaves(terralux::PolygonElement* element, std::vector<terralux::Poly
 }
 
 // The leaf below `root` that has `corner` as one of its corners.
-terralux::PolygonElement* leafAtCorner(terralux::PolygonElement* element, const Vec3& corner)
+const terralux::PolygonElement* leafAtCorner(terralux::PolygonElement* element, const Vec3& corner)
 {
   while (element->hasChildren())
   {
@@ -129,10 +129,12 @@ struct PositionHash
 void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& solver,
   const vtkRadiosityScene& scene, int index, int bands, vtkDataSet* output)
 {
+  // Each point is evaluated where it is, on one polygon that has it as a corner: every
+  // link reaching that polygon's leaf at the point is re-evaluated there (exact form
+  // factors, visibility from the point), so values are not smeared over elements.
   const vtkRadiosityScene::Input& input = scene.Inputs[index];
   const vtkIdType count = input.data->GetNumberOfPoints();
-  std::vector<Values> sums(count, Values{});
-  std::vector<double> weights(count, 0.0);
+  std::vector<const terralux::PolygonElement*> leafOfPoint(count, nullptr);
   const auto& roots = solver.polygonRoots();
   for (std::size_t k = 0; k < roots.size(); ++k)
   {
@@ -142,20 +144,38 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     for (int c = 0; c < polygon.vertexCount; ++c)
     {
       const vtkIdType point = polygon.vertices[c] - input.firstPoint;
-      terralux::PolygonElement* leaf = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
-      accumulate(sums[point], valuesOf(*leaf), leaf->area());
-      weights[point] += leaf->area();
+      if (!leafOfPoint[point])
+        leafOfPoint[point] = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
     }
   }
-  const auto arrays = makeArrays(bands, count);
+  std::vector<const terralux::PolygonElement*> leaves;
+  std::vector<Vec3> points;
+  std::vector<vtkIdType> pointIds;
   for (vtkIdType p = 0; p < count; ++p)
   {
-    if (weights[p] > 0.0)
+    if (leafOfPoint[p])
     {
-      Values v{};
-      accumulate(v, sums[p], 1.0 / weights[p]);
-      store(arrays, p, v, bands);
+      leaves.push_back(leafOfPoint[p]);
+      points.push_back(scene.Scene.points[input.firstPoint + p]);
+      pointIds.push_back(p);
     }
+  }
+  std::vector<std::array<Spectrum, terralux::lightCategories>> irradiance;
+  solver.irradianceAt(leaves, points, irradiance);
+
+  const auto arrays = makeArrays(bands, count);
+  for (std::size_t k = 0; k < pointIds.size(); ++k)
+  {
+    Values v{};
+    for (int band = 0; band < terralux::maxBands; ++band)
+    {
+      v[1][band] = irradiance[k][terralux::SunLight][band];
+      v[2][band] = irradiance[k][terralux::SkyLight][band];
+      v[3][band] = irradiance[k][terralux::ReflectedLight][band];
+      v[0][band] = v[1][band] + v[2][band] + v[3][band];
+      v[4][band] = leaves[k]->emission()[band] + leaves[k]->reflectance()[band] * v[0][band];
+    }
+    store(arrays, pointIds[k], v, bands);
   }
   for (const auto& array : arrays)
     output->GetPointData()->AddArray(array);

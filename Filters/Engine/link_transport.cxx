@@ -211,6 +211,8 @@ double transportToPoint(const Vec3& point, const PolygonElement& surface, HEleme
   SampleGenerator random(seed);
   const Vec3& n = surface.normal();
   auto seen = [&](const std::function<Vec3(int)>& directionOf) {
+    if (samples == 0)
+      return 1.0; // the caller knows the sender is unoccluded
     int counted = 0, visible = 0;
     for (int k = 0; k < samples; ++k)
     {
@@ -228,7 +230,7 @@ double transportToPoint(const Vec3& point, const PolygonElement& surface, HEleme
     {
       const Vec3 d = static_cast<SunElement&>(sender).direction();
       const double r = surface.receiverFactor(d);
-      return r > 0.0 ? r * !visibility.occludedToward(point, n, d) : 0.0;
+      return r > 0.0 && (samples == 0 || !visibility.occludedToward(point, n, d)) ? r : 0.0;
     }
     case HElement::Kind::SkyPatch:
     {
@@ -252,6 +254,8 @@ double transportToPoint(const Vec3& point, const PolygonElement& surface, HEleme
       }
       if (!(kernel > 0.0))
         return 0.0;
+      if (samples == 0)
+        return kernel;
       int counted = 0, visible = 0;
       for (int k = 0; k < samples; ++k)
       {

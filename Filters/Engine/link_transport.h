@@ -29,7 +29,8 @@ double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Vis
 
 /// Transport kernel x visibility from `sender` to one point (with unit normal) of a
 /// surface: the exact point form factor (or R for the sun, the projected solid angle
-/// for a sky patch) and visibility sampled from that point. `seed` makes it repeatable.
+/// for a sky patch) and visibility sampled from that point (samples = 0: taken as
+/// unoccluded, no rays). `seed` makes it repeatable.
 double transportToPoint(const Vec3& point, const PolygonElement& surface, HElement& sender,
   const Visibility& visibility, int samples, std::uint64_t seed);
 

@@ -435,15 +435,18 @@ std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
   const PolygonElement& leaf, const Vec3& point) const
 {
   std::array<Spectrum, lightCategories> irradiance{};
-  // Visibility from a point is noisier than over an element: use more samples.
-  const int samples = 8 * this->Options.visibilitySamples;
+  // Visibility from a point is noisier than over an element: more samples, most where
+  // the element saw the sender only in part.
+  const int partialSamples = 8 * this->Options.visibilitySamples;
+  const int clearSamples = 2 * this->Options.visibilitySamples;
   std::uint64_t salt = 0;
   for (const HElement* element = &leaf; element; element = element->Parent)
   {
     for (const Link& link : element->Incoming)
     {
       const std::uint64_t seed = linkSeed(leaf.id() * 31 + (salt++), link.sender->id());
-      const double transport = transportToPoint(point, leaf, *link.sender, *this->Rays, samples, seed);
+      const double transport = transportToPoint(
+        point, leaf, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
       const Spectrum e = link.sender->emittance();
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)
@@ -451,6 +454,14 @@ std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
     }
   }
   return irradiance;
+}
+
+void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,
+  const std::vector<Vec3>& points, std::vector<std::array<Spectrum, lightCategories>>& irradiance) const
+{
+  irradiance.resize(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(),
+    [&](std::size_t k) { irradiance[k] = this->irradianceAt(*leaves[k], points[k]); });
 }
 
 std::size_t HierarchicalRadiosity::splitShadowedLeaves()

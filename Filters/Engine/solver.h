@@ -77,6 +77,9 @@ public:
   /// visibility sampled from the point. This is what per-vertex outputs use, so
   /// values at vertices are not smeared over the elements around them.
   std::array<Spectrum, lightCategories> irradianceAt(const PolygonElement& leaf, const Vec3& point) const;
+  /// The same for many points at once, in parallel.
+  void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
+    std::vector<std::array<Spectrum, lightCategories>>& irradiance) const;
 
 private:
   /// Refines pending links; returns how many were split.

@@ -2,7 +2,7 @@
 // 0.2, at one tolerance. Prints wall time, peak memory, elements, links, rays; with a
 // reference file (per-vertex global irradiance of a converged run) also the relative
 // RMS error and the 95th percentile of the absolute relative error.
-//   benchmark_radiosity DEM TOLERANCE [--write REF | --compare REF]
+//   benchmark_radiosity DEM TOLERANCE SAMPLES [--write REF | --compare REF]
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkHierarchicalRadiosity.h"
@@ -25,9 +25,9 @@
 
 int main(int argc, char* argv[])
 {
-  if (argc < 3)
+  if (argc < 4)
   {
-    std::cerr << "usage: benchmark_radiosity DEM TOLERANCE [--write REF | --compare REF]\n";
+    std::cerr << "usage: benchmark_radiosity DEM TOLERANCE SAMPLES [--write REF | --compare REF]\n";
     return 2;
   }
   vtkNew<vtkTerrainSource> terrain;
@@ -44,6 +44,7 @@ int main(int argc, char* argv[])
   radiosity->AddLightConnection(sky->GetOutputPort(0));
   radiosity->SetDefaultReflectance(0.2);
   radiosity->SetErrorTolerance(std::atof(argv[2]));
+  radiosity->SetVisibilitySamples(std::atoi(argv[3]));
   terrain->Update();
   sky->Update();
 
@@ -60,18 +61,18 @@ int main(int argc, char* argv[])
   for (std::size_t k = 0; k < values.size(); ++k)
     values[k] = irradiance->GetComponent(static_cast<vtkIdType>(k), 0);
 
-  std::cout << "tolerance " << argv[2] << "  time " << seconds << " s  peak RSS " << usage.ru_maxrss / 1024.0
+  std::cout << "tolerance " << argv[2] << "  samples " << argv[3] << "  time " << seconds << " s  peak RSS " << usage.ru_maxrss / 1024.0
             << " MiB  elements " << stat("Elements") << "  links " << stat("Links") << "  rays " << stat("Rays")
             << "  iterations " << stat("Iterations");
-  if (argc == 5 && std::strcmp(argv[3], "--write") == 0)
+  if (argc == 6 && std::strcmp(argv[4], "--write") == 0)
   {
-    std::ofstream(argv[4], std::ios::binary)
+    std::ofstream(argv[5], std::ios::binary)
       .write(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
   }
-  else if (argc == 5 && std::strcmp(argv[3], "--compare") == 0)
+  else if (argc == 6 && std::strcmp(argv[4], "--compare") == 0)
   {
     std::vector<double> reference(values.size());
-    std::ifstream(argv[4], std::ios::binary)
+    std::ifstream(argv[5], std::ios::binary)
       .read(reinterpret_cast<char*>(reference.data()), reference.size() * sizeof(double));
     double squared = 0.0, referenceSquared = 0.0;
     std::vector<double> relative;
