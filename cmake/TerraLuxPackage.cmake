@@ -1,5 +1,6 @@
-# Installed CMake package: find_package(TerraLux) gives TerraLux::Sources (the VTK
-# module) and TerraLux::SourcesEngine (the VTK-free engine).
+# Installed CMake package: find_package(TerraLux) gives TerraLux::Sources and
+# TerraLux::Filters (VTK modules) and TerraLux::SourcesEngine and
+# TerraLux::FiltersEngine (the VTK-free engines).
 include(CMakePackageConfigHelpers)
 
 configure_package_config_file(

@@ -1,5 +1,6 @@
 // Uses both installed layers: the VTK source and the VTK-free engine.
 #include <terralux/engine/local_frame.h>
+#include <terralux/vtkHierarchicalRadiosity.h>
 #include <terralux/vtkTerrainSource.h>
 
 #include <vtkNew.h>
@@ -20,6 +21,8 @@ int main(int argc, char* argv[])
   terrain->Update();
   int dims[3];
   terrain->GetOutput()->GetDimensions(dims);
+  vtkNew<vtkHierarchicalRadiosity> radiosity; // the filters module links too
+  radiosity->SetInputConnection(terrain->GetOutputPort());
   const terralux::LocalFrame frame({ 45.0, 7.0, 0.0 });
   const terralux::LocalPoint up = frame.toLocal({ 45.0, 7.0, 10.0 });
   std::cout << "dimensions " << dims[0] << " " << dims[1] << " " << dims[2] << " up " << up[2] << "\n";
