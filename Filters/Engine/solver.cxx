@@ -132,6 +132,15 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
   oracle.powerThreshold = this->Options.errorTolerance * this->Stats.referencePowerW;
   oracle.sceneArea = this->SceneArea;
   std::vector<std::pair<HElement*, Link>> next;
+  // New, not yet evaluated links from every child of `split` to / from `other`.
+  auto addChildLinks = [&next](HElement* receiver, HElement* sender, bool splitReceiver) {
+    for (HElement* child : (splitReceiver ? receiver : sender)->children())
+    {
+      Link sub;
+      sub.sender = splitReceiver ? sender : child;
+      next.emplace_back(splitReceiver ? child : receiver, sub);
+    }
+  };
   while (!pending.empty())
   {
     if (!evaluated)
@@ -155,13 +164,8 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
         // a planar surface does not light itself.
         if (receiver->isCluster())
         {
-          for (HElement* a : receiver->children())
-            for (HElement* b : receiver->children())
-            {
-              Link child;
-              child.sender = b;
-              next.emplace_back(a, child);
-            }
+          for (HElement* member : receiver->children())
+            addChildLinks(receiver, member, true);
         }
         continue;
       }
@@ -178,12 +182,7 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
         if (receiver->canSplit() && linkPower(*receiver, unoccluded) > oracle.partialVisibilityFactor * oracle.powerThreshold)
         {
           ++splits;
-          for (HElement* child : receiver->children())
-          {
-            Link sub;
-            sub.sender = sender;
-            next.emplace_back(child, sub);
-          }
+          addChildLinks(receiver, sender, true);
         }
         continue;
       }
@@ -194,21 +193,11 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
           break;
         case Refinement::SplitReceiver:
           ++splits;
-          for (HElement* child : receiver->children())
-          {
-            Link sub;
-            sub.sender = sender;
-            next.emplace_back(child, sub);
-          }
+          addChildLinks(receiver, sender, true);
           break;
         case Refinement::SplitSender:
           ++splits;
-          for (HElement* child : sender->children())
-          {
-            Link sub;
-            sub.sender = child;
-            next.emplace_back(receiver, sub);
-          }
+          addChildLinks(receiver, sender, false);
           break;
       }
     }

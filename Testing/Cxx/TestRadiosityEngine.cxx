@@ -23,28 +23,36 @@ namespace
 {
 constexpr double degree = M_PI / 180.0;
 
+// Calls `visit` for every leaf below the input polygons.
+void forEachLeaf(const HierarchicalRadiosity& solver, const std::function<void(PolygonElement&)>& visit)
+{
+  std::function<void(HElement*)> descend = [&](HElement* e) {
+    auto* p = static_cast<PolygonElement*>(e);
+    if (!p->hasChildren())
+    {
+      visit(*p);
+      return;
+    }
+    for (HElement* c : p->children())
+      descend(c);
+  };
+  for (PolygonElement* root : solver.polygonRoots())
+    if (root)
+      descend(root);
+}
+
 // Area-weighted mean of a leaf quantity over the leaves of the input polygons that pass `select`.
 double leafAverage(const HierarchicalRadiosity& solver, const std::function<bool(const PolygonElement&)>& select,
   const std::function<double(const PolygonElement&)>& value)
 {
   double sum = 0.0, area = 0.0;
-  std::function<void(HElement*)> visit = [&](HElement* e) {
-    auto* p = static_cast<PolygonElement*>(e);
-    if (p->hasChildren())
+  forEachLeaf(solver, [&](PolygonElement& p) {
+    if (select(p))
     {
-      for (HElement* c : p->children())
-        visit(c);
-      return;
+      sum += value(p) * p.area();
+      area += p.area();
     }
-    if (select(*p))
-    {
-      sum += value(*p) * p->area();
-      area += p->area();
-    }
-  };
-  for (PolygonElement* root : solver.polygonRoots())
-    if (root)
-      visit(root);
+  });
   return area > 0.0 ? sum / area : NAN;
 }
 
@@ -186,16 +194,7 @@ TEST(Radiosity, FurnacesReachEmissionOverOneMinusReflectance)
       ASSERT_TRUE(solver.solve());
       const double expected = 1.0 / (1.0 - rho);
       double worst = 0.0;
-      std::function<void(HElement*)> visit = [&](HElement* e) {
-        auto* p = static_cast<PolygonElement*>(e);
-        if (p->hasChildren())
-          for (HElement* c : p->children())
-            visit(c);
-        else
-          worst = std::max(worst, std::abs(p->Radiosity[0] / expected - 1.0));
-      };
-      for (PolygonElement* root : solver.polygonRoots())
-        visit(root);
+      forEachLeaf(solver, [&](PolygonElement& p) { worst = std::max(worst, std::abs(p.Radiosity[0] / expected - 1.0)); });
       EXPECT_LT(worst, 0.01) << (shape ? "sphere" : "cube") << " rho " << rho;
     }
   }
@@ -244,14 +243,8 @@ TEST(Radiosity, WallCastsItsShadowWhereGeometryPutsIt)
   ASSERT_TRUE(solver.solve());
   const double shadowLength = 3.0 * std::tan(zenith);
   int inside = 0, outside = 0;
-  std::function<void(HElement*)> visit = [&](HElement* e) {
-    auto* p = static_cast<PolygonElement*>(e);
-    if (p->hasChildren())
-    {
-      for (HElement* c : p->children())
-        visit(c);
-      return;
-    }
+  forEachLeaf(solver, [&](PolygonElement& leaf) {
+    PolygonElement* p = &leaf;
     const double size = std::sqrt(p->area());
     const Vec3 c = p->centre();
     const double sunIrradiance = p->Irradiance[SunLight][0];
@@ -270,9 +263,7 @@ TEST(Radiosity, WallCastsItsShadowWhereGeometryPutsIt)
       EXPECT_NEAR(sunIrradiance, 800.0 * std::cos(zenith), 1e-6) << c.x << " " << c.y;
       ++outside;
     }
-  };
-  visit(solver.polygonRoots()[0]);
-  visit(solver.polygonRoots()[1]);
+  });
   EXPECT_GT(inside, 10);
   EXPECT_GT(outside, 10);
 }
