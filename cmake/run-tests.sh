@@ -20,7 +20,7 @@ ctest --test-dir "${build_dir}" --output-on-failure -j "${jobs}"
 
 echo "== build (AddressSanitizer + UndefinedBehaviorSanitizer) in ${build_dir}-asan"
 cmake -S "${repo_dir}" -B "${build_dir}-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DPython3_EXECUTABLE=/usr/bin/python3 -DTERRALUX_SANITIZE=ON -DTERRALUX_WRAP_PYTHON=OFF >/dev/null
+  -DTERRALUX_SANITIZE=ON -DTERRALUX_WRAP_PYTHON=OFF >/dev/null
 cmake --build "${build_dir}-asan" -j "${jobs}"
 echo "== tests: C++ under sanitizers"
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1" \
