@@ -47,10 +47,10 @@ double visibilityToward(HElement& receiver, const Visibility& visibility, int sa
 Vec3 sampleSkyDirection(const SkyPatch& patch, SampleGenerator& random)
 {
   const double s0 = std::sin(patch.u0()), s1 = std::sin(patch.u1());
-  const double s = std::sqrt(s0 * s0 + random.uniform() * (s1 * s1 - s0 * s0));
+  const double s = std::min(1.0, std::sqrt(s0 * s0 + random.uniform() * (s1 * s1 - s0 * s0)));
   const double v = patch.v0() + random.uniform() * (patch.v1() - patch.v0());
-  const Direction d = directionFromSkyParameters(std::asin(std::min(1.0, s)), v);
-  return Vec3(d[0], d[1], d[2]);
+  const double c = std::sqrt(1.0 - s * s); // cos u
+  return Vec3(-std::sin(v) * c, -std::cos(v) * c, s); // as directionFromSkyParameters
 }
 
 // The centre twice (it weighs most) and the points halfway to three corners, or the
@@ -64,28 +64,6 @@ std::array<Vec3, 5> receiverPoints(const PolygonElement& p)
     return { c, c, 0.5 * (c + v[0]), 0.5 * (c + v[1]), 0.5 * (c + v[2]) };
   }
   return { c, 0.5 * (c + v[0]), 0.5 * (c + v[1]), 0.5 * (c + v[2]), 0.5 * (c + v[3]) };
-}
-
-// Integral of max(0, n . d) over a sky patch (3 x 3 Gauss points in sin u and v).
-double projectedSolidAngle(const HElement& receiver, const SkyPatch& patch)
-{
-  static const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
-  static const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
-  const double s0 = std::sin(patch.u0()), s1 = std::sin(patch.u1());
-  const double v0 = patch.v0(), v1 = patch.v1();
-  double sum = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    const double s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * nodes[a];
-    const double u = std::asin(std::min(1.0, std::max(0.0, s)));
-    for (int b = 0; b < 3; ++b)
-    {
-      const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * nodes[b];
-      const Direction d = directionFromSkyParameters(u, v);
-      sum += 0.25 * (s1 - s0) * (v1 - v0) * weights[a] * weights[b] * receiver.receiverFactor(Vec3(d[0], d[1], d[2]));
-    }
-  }
-  return sum;
 }
 
 double visibilityBetween(HElement& receiver, HElement& sender, const Visibility& visibility,
@@ -165,7 +143,7 @@ double kernelAtSurface(const PolygonElement& receiver, HElement& sender)
     case HElement::Kind::Sun:
       return receiver.receiverFactor(static_cast<SunElement&>(sender).direction());
     case HElement::Kind::SkyPatch:
-      return projectedSolidAngle(receiver, static_cast<SkyPatchElement&>(sender).patch());
+      return static_cast<SkyPatchElement&>(sender).projectedSolidAngle(receiver.normal());
     default:
       return surfaceKernel(receiver, sender);
   }
@@ -235,7 +213,7 @@ double transportToPoint(const Vec3& point, const PolygonElement& surface, HEleme
     case HElement::Kind::SkyPatch:
     {
       const SkyPatch& range = static_cast<SkyPatchElement&>(sender).patch();
-      const double kernel = projectedSolidAngle(surface, range);
+      const double kernel = static_cast<SkyPatchElement&>(sender).projectedSolidAngle(n);
       if (!(kernel > 0.0))
         return 0.0;
       return kernel * seen([&](int) { return sampleSkyDirection(range, random); });
@@ -294,7 +272,8 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
     link.direction = patch.direction();
     // R S Omega: for a surface, the patch's projected solid angle integrated over the
     // patch (a patch straddling the surface's horizon counts only its visible part).
-    link.kernel = link.directional ? patch.solidAngle() : projectedSolidAngle(receiver, patch.patch());
+    link.kernel = link.directional ? patch.solidAngle()
+                                   : patch.projectedSolidAngle(static_cast<PolygonElement&>(receiver).normal());
     if (link.kernel > 0.0)
     {
       // Directions jittered inside the patch, so partial sky occlusion is sampled.

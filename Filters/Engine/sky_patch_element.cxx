@@ -1,5 +1,8 @@
 #include "sky_patch_element.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace terralux
 {
 SkyPatchElement::SkyPatchElement(
@@ -12,11 +15,60 @@ SkyPatchElement::SkyPatchElement(
 {
   const terralux::Direction d = patch.direction();
   this->Direction = Vec3(d[0], d[1], d[2]);
+
+  // Vector solid angle: integral of (-sin v cos u, -cos v cos u, sin u) cos u du dv.
+  const double u0 = patch.u0(), u1 = patch.u1(), v0 = patch.v0(), v1 = patch.v1();
+  const double cosSquared = 0.5 * (u1 - u0) + 0.25 * (std::sin(2 * u1) - std::sin(2 * u0));
+  const double sinCos = 0.5 * (std::sin(u1) * std::sin(u1) - std::sin(u0) * std::sin(u0));
+  this->VectorSolidAngle = Vec3((std::cos(v1) - std::cos(v0)) * cosSquared,
+    -(std::sin(v1) - std::sin(v0)) * cosSquared, (v1 - v0) * sinCos);
+  const double us[2] = { u0, u1 }, vs[2] = { v0, v1 };
+  for (int k = 0; k < 4; ++k)
+  {
+    const terralux::Direction c = directionFromSkyParameters(us[k / 2], vs[k % 2]);
+    this->CornerDirections[k] = Vec3(c[0], c[1], c[2]);
+  }
+  static const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
+  static const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+  const double s0 = std::sin(u0), s1 = std::sin(u1);
+  for (int a = 0; a < 3; ++a)
+  {
+    const double sinU = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * nodes[a];
+    const double u = std::asin(std::min(1.0, std::max(0.0, sinU)));
+    for (int b = 0; b < 3; ++b)
+    {
+      const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * nodes[b];
+      const terralux::Direction q = directionFromSkyParameters(u, v);
+      this->QuadratureDirections[3 * a + b] = Vec3(q[0], q[1], q[2]);
+      this->QuadratureWeights[3 * a + b] = 0.25 * (s1 - s0) * (v1 - v0) * weights[a] * weights[b];
+    }
+  }
   for (int band = 0; band < maxBands; ++band)
   {
     // A one-band sky lights every band alike.
     this->Radiance[band] = sky->radiance(patch, sky->bands() == 1 ? 0 : std::min(band, sky->bands() - 1));
   }
+}
+
+double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
+{
+  // Small patches (level >= 3, at most 45 x 11 degrees) wholly in front of the surface.
+  if (this->Patch.level >= 3 && glm::dot(normal, this->Direction) > 0.0)
+  {
+    bool inFront = true;
+    for (const Vec3& corner : this->CornerDirections)
+      inFront = inFront && glm::dot(normal, corner) > 0.0;
+    if (inFront)
+    {
+      return glm::dot(normal, this->VectorSolidAngle);
+    }
+  }
+  double sum = 0.0;
+  for (int k = 0; k < 9; ++k)
+  {
+    sum += this->QuadratureWeights[k] * std::max(0.0, glm::dot(normal, this->QuadratureDirections[k]));
+  }
+  return sum;
 }
 
 const std::vector<HElement*>& SkyPatchElement::children()

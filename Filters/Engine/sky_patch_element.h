@@ -6,6 +6,8 @@
 #include "helement.h"
 #include "sky_hierarchy.h"
 
+#include <array>
+
 namespace terralux
 {
 class SkyPatchElement : public HElement
@@ -24,6 +26,11 @@ public:
   const Vec3& direction() const { return this->Direction; }
   const SkyPatch& patch() const { return this->Patch; }
 
+  /// Integral of max(0, n . d) dOmega over the patch for a unit normal n: in closed form
+  /// (n . the patch's vector solid angle) when the whole patch is in front of n, else by
+  /// 3 x 3 Gauss quadrature over (sin u, v).
+  double projectedSolidAngle(const Vec3& normal) const;
+
 private:
   ElementStore* Store;
   const SkyHierarchy* Sky;
@@ -31,6 +38,10 @@ private:
   Spectrum Radiance{};
   double SolidAngle;
   Vec3 Direction;
+  Vec3 VectorSolidAngle{ 0.0 };       // integral of d dOmega over the patch
+  std::array<Vec3, 4> CornerDirections{};
+  std::array<Vec3, 9> QuadratureDirections{};
+  std::array<double, 9> QuadratureWeights{};
   std::vector<HElement*> Children;
 };
 

@@ -3,6 +3,7 @@
 #include "error.h"
 
 #include <embree3/rtcore.h>
+#include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,21 @@
 
 namespace terralux
 {
+struct Visibility::RayCounters
+{
+  tbb::enumerable_thread_specific<std::uint64_t> perThread{ 0 };
+};
+
+std::uint64_t Visibility::raysCast() const
+{
+  std::uint64_t total = 0;
+  for (std::uint64_t count : this->Rays->perThread)
+    total += count;
+  return total;
+}
+
 Visibility::Visibility(const RadiosityScene& scene)
+  : Rays(std::make_unique<RayCounters>())
 {
   this->Device = rtcNewDevice("verbose=0");
   if (!this->Device)
@@ -108,7 +123,7 @@ bool castOcclusion(RTCScene scene, const Vec3& origin, const Vec3& direction, do
 
 bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, const Vec3& bNormal) const
 {
-  ++this->Rays;
+  ++this->Rays->perThread.local();
   const Vec3 from = a + this->Offset * aNormal;
   const Vec3 to = b + this->Offset * bNormal;
   const Vec3 d = to - from;
@@ -122,7 +137,7 @@ bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, con
 
 bool Visibility::occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const
 {
-  ++this->Rays;
+  ++this->Rays->perThread.local();
   return castOcclusion(this->Scene, a + this->Offset * aNormal - this->Centre, d, 0.0,
     std::numeric_limits<float>::infinity());
 }

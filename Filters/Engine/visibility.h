@@ -5,8 +5,8 @@
 
 #include "radiosity_types.h"
 
-#include <atomic>
 #include <cstdint>
+#include <memory>
 
 struct RTCDeviceTy;
 struct RTCSceneTy;
@@ -32,13 +32,16 @@ public:
   bool occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const;
   /// Offset (metres) of ray ends: 1e-5 of the scene's bounding diagonal.
   double offset() const { return this->Offset; }
-  std::uint64_t raysCast() const { return this->Rays.load(); }
+  /// Rays cast so far, over all threads.
+  std::uint64_t raysCast() const;
 
 private:
   RTCDeviceTy* Device = nullptr;
   RTCSceneTy* Scene = nullptr;
   double Offset = 1e-6;
   Vec3 Centre{ 0.0 }; // Embree's float vertices are stored relative to it
-  mutable std::atomic<std::uint64_t> Rays{ 0 };
+  // One counter per thread: a shared atomic would bounce between cores on every ray.
+  struct RayCounters;
+  std::unique_ptr<RayCounters> Rays;
 };
 } // namespace terralux
