@@ -64,10 +64,41 @@ double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
     }
   }
   double sum = 0.0;
+  bool straddles = false;
   for (int k = 0; k < 9; ++k)
   {
-    sum += this->QuadratureWeights[k] * std::max(0.0, glm::dot(normal, this->QuadratureDirections[k]));
+    const double cosine = glm::dot(normal, this->QuadratureDirections[k]);
+    straddles = straddles || cosine <= 0.0;
+    sum += this->QuadratureWeights[k] * std::max(0.0, cosine);
   }
+  for (const Vec3& corner : this->CornerDirections)
+    straddles = straddles || glm::dot(normal, corner) <= 0.0;
+  if (!straddles || sum == 0.0)
+  {
+    return sum;
+  }
+  // The surface's horizon crosses the patch: the kink of max(0, cos) needs finer
+  // quadrature, 3 x 3 Gauss points in each of 8 x 8 sub-ranges.
+  static const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
+  static const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+  constexpr int parts = 8;
+  const double s0 = std::sin(this->Patch.u0()), s1 = std::sin(this->Patch.u1());
+  const double v0 = this->Patch.v0(), v1 = this->Patch.v1();
+  const double ds = (s1 - s0) / parts, dv = (v1 - v0) / parts;
+  sum = 0.0;
+  for (int i = 0; i < parts; ++i)
+    for (int a = 0; a < 3; ++a)
+    {
+      const double sinU = s0 + ds * (i + 0.5 + 0.5 * nodes[a]);
+      const double cosU = std::sqrt(std::max(0.0, 1.0 - sinU * sinU));
+      for (int j = 0; j < parts; ++j)
+        for (int b = 0; b < 3; ++b)
+        {
+          const double v = v0 + dv * (j + 0.5 + 0.5 * nodes[b]);
+          const Vec3 d(-std::sin(v) * cosU, -std::cos(v) * cosU, sinU); // directionFromSkyParameters
+          sum += 0.25 * ds * dv * weights[a] * weights[b] * std::max(0.0, glm::dot(normal, d));
+        }
+    }
   return sum;
 }
 
