@@ -129,12 +129,15 @@ struct PositionHash
 void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& solver,
   const vtkRadiosityScene& scene, int index, int bands, vtkDataSet* output)
 {
-  // Each point is evaluated where it is, on one polygon that has it as a corner: every
-  // link reaching that polygon's leaf at the point is re-evaluated there (exact form
-  // factors, visibility from the point), so values are not smeared over elements.
+  // Each point is evaluated where it is, with the area-weighted normal of the polygons
+  // around it (as a GIS takes a post's slope and aspect from its neighbours), through
+  // the links that reach the leaf of one of them: every link is re-evaluated at the
+  // point (exact form factors, visibility from the point), so values are not smeared
+  // over elements.
   const vtkRadiosityScene::Input& input = scene.Inputs[index];
   const vtkIdType count = input.data->GetNumberOfPoints();
   std::vector<const terralux::PolygonElement*> leafOfPoint(count, nullptr);
+  std::vector<Vec3> normalOfPoint(count, Vec3(0.0));
   const auto& roots = solver.polygonRoots();
   for (std::size_t k = 0; k < roots.size(); ++k)
   {
@@ -144,24 +147,27 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     for (int c = 0; c < polygon.vertexCount; ++c)
     {
       const vtkIdType point = polygon.vertices[c] - input.firstPoint;
+      normalOfPoint[point] += roots[k]->area() * roots[k]->normal();
       if (!leafOfPoint[point])
         leafOfPoint[point] = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
     }
   }
   std::vector<const terralux::PolygonElement*> leaves;
-  std::vector<Vec3> points;
+  std::vector<Vec3> points, normals;
   std::vector<vtkIdType> pointIds;
   for (vtkIdType p = 0; p < count; ++p)
   {
     if (leafOfPoint[p])
     {
+      const double length = glm::length(normalOfPoint[p]);
       leaves.push_back(leafOfPoint[p]);
       points.push_back(scene.Scene.points[input.firstPoint + p]);
+      normals.push_back(length > 0.0 ? normalOfPoint[p] / length : leafOfPoint[p]->normal());
       pointIds.push_back(p);
     }
   }
   std::vector<std::array<Spectrum, terralux::lightCategories>> irradiance;
-  solver.irradianceAt(leaves, points, irradiance);
+  solver.irradianceAt(leaves, points, normals, irradiance);
 
   const auto arrays = makeArrays(bands, count);
   for (std::size_t k = 0; k < pointIds.size(); ++k)

@@ -183,11 +183,11 @@ double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Vis
   }
 }
 
-double transportToPoint(const Vec3& point, const PolygonElement& surface, HElement& sender,
+double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
   const Visibility& visibility, int samples, std::uint64_t seed)
 {
   SampleGenerator random(seed);
-  const Vec3& n = surface.normal();
+  const Vec3& n = normal;
   auto seen = [&](const std::function<Vec3(int)>& directionOf) {
     if (samples == 0)
       return 1.0; // the caller knows the sender is unoccluded
@@ -207,7 +207,7 @@ double transportToPoint(const Vec3& point, const PolygonElement& surface, HEleme
     case HElement::Kind::Sun:
     {
       const Vec3 d = static_cast<SunElement&>(sender).direction();
-      const double r = surface.receiverFactor(d);
+      const double r = std::max(0.0, glm::dot(n, d));
       return r > 0.0 && (samples == 0 || !visibility.occludedToward(point, n, d)) ? r : 0.0;
     }
     case HElement::Kind::SkyPatch:
@@ -221,14 +221,28 @@ double transportToPoint(const Vec3& point, const PolygonElement& surface, HEleme
     default:
     {
       double kernel = 0.0;
+      auto formFactor = [&](const PolygonElement& polygon) {
+        return pointToPolygonFormFactor(point, n, polygon.corners(), polygon.cornerCount(), polygon.normal());
+      };
       if (sender.isSurface())
       {
-        const auto& polygon = static_cast<const PolygonElement&>(sender);
-        kernel = pointToPolygonFormFactor(point, n, polygon.corners(), polygon.cornerCount(), polygon.normal());
+        kernel = formFactor(static_cast<const PolygonElement&>(sender));
       }
       else
       {
-        kernel = surfaceKernel(surface, sender);
+        const auto& cluster = static_cast<const Cluster&>(sender);
+        if (cluster.surfaces().size() <= exactClusterSurfaces)
+        {
+          for (const PolygonElement* surface : cluster.surfaces())
+            kernel += formFactor(*surface);
+        }
+        else
+        {
+          const Vec3 toSender = cluster.centre() - point;
+          const double distance = glm::length(toSender);
+          const Vec3 direction = distance > 0.0 ? toSender / distance : n;
+          kernel = clusterKernel(cluster, direction, distance) * std::max(0.0, glm::dot(n, direction));
+        }
       }
       if (!(kernel > 0.0))
         return 0.0;

@@ -27,11 +27,10 @@ double kernelAtSurface(const PolygonElement& receiver, HElement& sender);
 /// Visibility fraction of `sender` from a surface receiver, sampled like a new link.
 double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Visibility& visibility, int samples);
 
-/// Transport kernel x visibility from `sender` to one point (with unit normal) of a
-/// surface: the exact point form factor (or R for the sun, the projected solid angle
+/// Transport kernel x visibility from `sender` to a point with a unit normal: the exact point form factor (or R for the sun, the projected solid angle
 /// for a sky patch) and visibility sampled from that point (samples = 0: taken as
 /// unoccluded, no rays). `seed` makes it repeatable.
-double transportToPoint(const Vec3& point, const PolygonElement& surface, HElement& sender,
+double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
   const Visibility& visibility, int samples, std::uint64_t seed);
 
 /// Kernel, visibility and direction of the link receiver <- sender.

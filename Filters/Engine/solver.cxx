@@ -423,6 +423,12 @@ double HierarchicalRadiosity::pushPull()
 std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
   const PolygonElement& leaf, const Vec3& point) const
 {
+  return this->irradianceAt(leaf, point, leaf.normal());
+}
+
+std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
+  const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const
+{
   std::array<Spectrum, lightCategories> irradiance{};
   // Visibility from a point is noisier than over an element: more samples, most where
   // the element saw the sender only in part.
@@ -435,7 +441,7 @@ std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
     {
       const std::uint64_t seed = linkSeed(leaf.id() * 31 + (salt++), link.sender->id());
       const double transport = transportToPoint(
-        point, leaf, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
+        point, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
       const Spectrum e = link.sender->emittance();
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)
@@ -446,11 +452,12 @@ std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
 }
 
 void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,
-  const std::vector<Vec3>& points, std::vector<std::array<Spectrum, lightCategories>>& irradiance) const
+  const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+  std::vector<std::array<Spectrum, lightCategories>>& irradiance) const
 {
   irradiance.resize(points.size());
   tbb::parallel_for(std::size_t(0), points.size(),
-    [&](std::size_t k) { irradiance[k] = this->irradianceAt(*leaves[k], points[k]); });
+    [&](std::size_t k) { irradiance[k] = this->irradianceAt(*leaves[k], points[k], normals[k]); });
 }
 
 std::size_t HierarchicalRadiosity::splitShadowedLeaves()

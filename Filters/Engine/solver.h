@@ -77,9 +77,13 @@ public:
   /// visibility sampled from the point. This is what per-vertex outputs use, so
   /// values at vertices are not smeared over the elements around them.
   std::array<Spectrum, lightCategories> irradianceAt(const PolygonElement& leaf, const Vec3& point) const;
-  /// The same for many points at once, in parallel.
+  /// The same with another unit normal at the point (e.g. a terrain post's, averaged over
+  /// the cells around it), still through the links that reach `leaf`.
+  std::array<Spectrum, lightCategories> irradianceAt(
+    const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const;
+  /// Many points at once, in parallel.
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
-    std::vector<std::array<Spectrum, lightCategories>>& irradiance) const;
+    const std::vector<Vec3>& normals, std::vector<std::array<Spectrum, lightCategories>>& irradiance) const;
 
 private:
   /// Refines pending links; returns how many were split.

@@ -1,4 +1,5 @@
-"""The demo end to end: Olinda DEM -> terrain.vtp and a shaded-relief PNG.
+"""The demo end to end: Olinda DEM -> terrain.vtp, a shaded-relief PNG, and the lit
+terrain (irradiance.vts, irradiance.png).
 
 Rendering needs an X display (Debian's VTK aborts without one): the demo runs
 under xvfb-run when there is no DISPLAY, and the test is skipped when neither exists.
@@ -10,7 +11,7 @@ import sys
 import unittest
 
 from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLStructuredGridReader
 
 from terralux_testing import OLINDA, scratch_dir
 
@@ -38,19 +39,30 @@ class Demo(unittest.TestCase):
         self.assertIsNotNone(surface.GetPointData().GetNormals())
         self.assertEqual(surface.GetPointData().GetArray("Elevation").GetRange(), (-1.0, 88.0))
 
-        png = vtkPNGReader()
-        png.SetFileName(os.path.join(out, "shaded_relief.png"))
-        png.Update()
-        image = png.GetOutput()
-        self.assertEqual(image.GetDimensions()[:2], (1000, 1000))
-        scalars = image.GetPointData().GetScalars()
-        n = scalars.GetNumberOfTuples()
-        luminance = [sum(scalars.GetTuple(k)[:3]) / 3.0 for k in range(0, n, 97)]
-        covered = [v for v in luminance if v < 250.0]  # not the white background
-        self.assertGreater(len(covered), 0.5 * len(luminance))
-        mean = sum(covered) / len(covered)
-        spread = (sum((v - mean) ** 2 for v in covered) / len(covered)) ** 0.5
-        self.assertGreater(spread, 5.0)  # relief is shaded, not a flat fill
+        for name in ("shaded_relief.png", "irradiance.png"):
+            png = vtkPNGReader()
+            png.SetFileName(os.path.join(out, name))
+            png.Update()
+            image = png.GetOutput()
+            self.assertEqual(image.GetDimensions()[:2], (1000, 1000))
+            scalars = image.GetPointData().GetScalars()
+            n = scalars.GetNumberOfTuples()
+            luminance = [sum(scalars.GetTuple(k)[:3]) / 3.0 for k in range(0, n, 97)]
+            covered = [v for v in luminance if v < 250.0]  # not the white background
+            self.assertGreater(len(covered), 0.5 * len(luminance), name)
+            mean = sum(covered) / len(covered)
+            spread = (sum((v - mean) ** 2 for v in covered) / len(covered)) ** 0.5
+            self.assertGreater(spread, 5.0, name)  # shaded, not a flat fill
+
+        lit = vtkXMLStructuredGridReader()
+        lit.SetFileName(os.path.join(out, "irradiance.vts"))
+        lit.Update()
+        grid = lit.GetOutput()
+        self.assertEqual(grid.GetDimensions(), (111, 111, 1))
+        low, high = grid.GetPointData().GetArray("Irradiance").GetRange()
+        self.assertGreater(low, 0.0)
+        self.assertLess(high, 1400.0)  # below the solar constant
+        self.assertIn("global irradiance", result.stdout)
 
 
 if __name__ == "__main__":
