@@ -1,0 +1,204 @@
+#include "vtkTerrainRasterWriter.h"
+
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStringArray.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "error.h"
+#include "raster_writer.h"
+
+#include <cmath>
+#include <cstring>
+
+vtkStandardNewMacro(vtkTerrainRasterWriter);
+
+namespace
+{
+const char* const radiosityArrays[] = { "Irradiance", "SunIrradiance", "SkyIrradiance",
+  "ReflectedIrradiance", "Radiosity", "SkyViewFactor" };
+
+std::string unitOf(const std::string& name)
+{
+  if (name.find("Irradiance") != std::string::npos || name == "Radiosity")
+    return "W/m^2";
+  if (name == "Elevation")
+    return "m";
+  if (name == "SkyViewFactor")
+    return "1";
+  return "";
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkTerrainRasterWriter::vtkTerrainRasterWriter()
+  : FileName(nullptr)
+  , NoDataValue(-9999.0)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkTerrainRasterWriter::~vtkTerrainRasterWriter()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainRasterWriter::AddArrayName(const char* name)
+{
+  if (name && *name)
+  {
+    this->ArrayNames.emplace_back(name);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainRasterWriter::RemoveAllArrayNames()
+{
+  if (!this->ArrayNames.empty())
+  {
+    this->ArrayNames.clear();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkTerrainRasterWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkStructuredGrid");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkTerrainRasterWriter::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->Succeeded = false;
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->Superclass::RequestData(request, inputVector, outputVector);
+  if (!this->Succeeded)
+  {
+    this->SetErrorCode(vtkErrorCode::UserError); // Write() returns 0
+    return 0;
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainRasterWriter::WriteData()
+{
+  auto* grid = vtkStructuredGrid::SafeDownCast(this->GetInput());
+  try
+  {
+    if (!this->FileName || !*this->FileName)
+    {
+      throw terralux::Error("no file name: call SetFileName()");
+    }
+    if (!grid)
+    {
+      throw terralux::Error("the input must be a vtkStructuredGrid from vtkTerrainSource");
+    }
+    vtkFieldData* fieldData = grid->GetFieldData();
+    vtkDataArray* geoTransform = fieldData->GetArray("GeoTransform");
+    vtkDataArray* rasterSize = fieldData->GetArray("RasterSize");
+    int dims[3];
+    grid->GetDimensions(dims);
+    if (!geoTransform || geoTransform->GetNumberOfValues() != 6 || !rasterSize ||
+      rasterSize->GetNumberOfValues() != 2)
+    {
+      throw terralux::Error("the input has no raster georeference (field data GeoTransform and "
+                            "RasterSize): write grids that come from vtkTerrainSource");
+    }
+    if (rasterSize->GetComponent(0, 0) != dims[0] || rasterSize->GetComponent(1, 0) != dims[1] || dims[2] != 1)
+    {
+      throw terralux::Error("the grid's dimensions no longer match its RasterSize field data");
+    }
+    terralux::RasterGrid raster;
+    raster.width = dims[0];
+    raster.height = dims[1];
+    for (int k = 0; k < 6; ++k)
+      raster.geoTransform.coefficients[k] = geoTransform->GetComponent(k, 0);
+    if (auto* crs = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray("CRS")))
+    {
+      raster.crsWkt = crs->GetNumberOfValues() > 0 ? crs->GetValue(0) : "";
+    }
+    vtkDataArray* noData = fieldData->GetArray("NoDataValue");
+    raster.noData = noData ? noData->GetComponent(0, 0) : this->NoDataValue;
+
+    std::vector<std::string> names = this->ArrayNames;
+    vtkPointData* pointData = grid->GetPointData();
+    if (names.empty())
+    {
+      for (const char* name : radiosityArrays)
+        if (pointData->GetArray(name))
+          names.emplace_back(name);
+      if (names.empty())
+      {
+        for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
+        {
+          const char* name = pointData->GetArrayName(k);
+          if (name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
+            names.emplace_back(name);
+        }
+      }
+    }
+    vtkUnsignedCharArray* ghosts = grid->GetPointGhostArray();
+    std::vector<terralux::RasterBand> bands;
+    for (const std::string& name : names)
+    {
+      vtkDataArray* array = pointData->GetArray(name.c_str());
+      if (!array)
+      {
+        throw terralux::Error("the input has no point array '" + name + "' to write");
+      }
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        terralux::RasterBand band;
+        band.description = array->GetNumberOfComponents() == 1 ? name : name + "[" + std::to_string(c) + "]";
+        band.unit = unitOf(name);
+        band.values.resize(static_cast<std::size_t>(dims[0]) * dims[1]);
+        for (int row = 0; row < dims[1]; ++row)
+          for (int col = 0; col < dims[0]; ++col)
+          {
+            // Raster row 0 is the grid's last j (vtkTerrainSource flips rows).
+            const vtkIdType point = col + static_cast<vtkIdType>(dims[1] - 1 - row) * dims[0];
+            double value = array->GetComponent(point, c);
+            const bool hidden = ghosts && (ghosts->GetValue(point) & vtkDataSetAttributes::HIDDENPOINT);
+            if (hidden || !std::isfinite(value))
+            {
+              value = raster.noData;
+              raster.hasNoData = true;
+            }
+            band.values[static_cast<std::size_t>(row) * dims[0] + col] = static_cast<float>(value);
+          }
+        bands.push_back(std::move(band));
+      }
+    }
+    raster.hasNoData = raster.hasNoData || noData != nullptr;
+    terralux::writeGeoTiff(this->FileName, raster, bands);
+    this->Succeeded = true;
+  }
+  catch (const terralux::Error& error)
+  {
+    vtkErrorMacro(<< error.what());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainRasterWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "NoDataValue: " << this->NoDataValue << "\n";
+  os << indent << "ArrayNames:";
+  for (const std::string& name : this->ArrayNames)
+    os << " " << name;
+  os << "\n";
+}

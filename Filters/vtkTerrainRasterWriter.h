@@ -1,0 +1,80 @@
+/**
+ * @class   vtkTerrainRasterWriter
+ * @brief   Writes point arrays of a terrain as a multi-band GeoTIFF on the DEM's own grid.
+ *
+ * vtkTerrainRasterWriter takes a vtkStructuredGrid that carries vtkTerrainSource's
+ * georeference (field data `GeoTransform`, `RasterSize`, `CRS`, optional `NoDataValue`),
+ * e.g. vtkHierarchicalRadiosity's output 0 for a terrain, and writes chosen point arrays
+ * as Float32 bands of a GeoTIFF with exactly that grid, geotransform and CRS, so the
+ * result overlays the input DEM in any GIS (gdalinfo, GRASS r.in.gdal, QGIS). Each
+ * component of an array is a band; band descriptions are the array names and units are
+ * set (W/m^2 for irradiance and radiosity, m for Elevation). Blanked (no-data) posts and
+ * NaN values are written as the no-data value.
+ *
+ * @sa vtkTerrainSource vtkHierarchicalRadiosity
+ */
+
+#ifndef vtkTerrainRasterWriter_h
+#define vtkTerrainRasterWriter_h
+
+#include "TerraLuxFiltersModule.h" // For export macro
+#include "vtkWriter.h"
+
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class TERRALUXFILTERS_EXPORT vtkTerrainRasterWriter : public vtkWriter
+{
+public:
+  static vtkTerrainRasterWriter* New();
+  vtkTypeMacro(vtkTerrainRasterWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Set/Get the GeoTIFF file to write. Default is nullptr.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * Choose the point arrays to write, in band order. With none chosen (the default),
+   * the radiosity arrays present are written (Irradiance, SunIrradiance, SkyIrradiance,
+   * ReflectedIrradiance, Radiosity, SkyViewFactor), else every numeric point array.
+   */
+  void AddArrayName(const char* name);
+  void RemoveAllArrayNames();
+  int GetNumberOfArrayNames() { return static_cast<int>(this->ArrayNames.size()); }
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the no-data value for blanked posts when the input has no `NoDataValue`
+   * field data. Default is -9999.
+   */
+  vtkSetMacro(NoDataValue, double);
+  vtkGetMacro(NoDataValue, double);
+  ///@}
+
+protected:
+  vtkTerrainRasterWriter();
+  ~vtkTerrainRasterWriter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void WriteData() override;
+
+  char* FileName;
+  double NoDataValue;
+  std::vector<std::string> ArrayNames;
+
+private:
+  vtkTerrainRasterWriter(const vtkTerrainRasterWriter&) = delete;
+  void operator=(const vtkTerrainRasterWriter&) = delete;
+
+  bool Succeeded = false;
+};
+
+#endif

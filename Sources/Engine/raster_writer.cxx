@@ -1,0 +1,66 @@
+#include "raster_writer.h"
+
+#include "error.h"
+#include "gdal_messages.h"
+
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <array>
+#include <memory>
+
+namespace terralux
+{
+void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands)
+{
+  const std::size_t posts = static_cast<std::size_t>(grid.width) * grid.height;
+  if (grid.width <= 0 || grid.height <= 0 || bands.empty())
+  {
+    throw Error("nothing to write: the grid is empty or no array was chosen");
+  }
+  for (const RasterBand& band : bands)
+  {
+    if (band.values.size() != posts)
+    {
+      throw Error("band '" + band.description + "' does not have one value per post");
+    }
+  }
+  GDALAllRegister();
+  const QuietGdalErrors quiet;
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+  const bool tiled = grid.width >= 512 && grid.height >= 512;
+  const char* options[] = { "COMPRESS=DEFLATE", tiled ? "TILED=YES" : nullptr, nullptr };
+  std::unique_ptr<GDALDataset> dataset(driver->Create(fileName.c_str(), grid.width, grid.height,
+    static_cast<int>(bands.size()), GDT_Float32, const_cast<char**>(options)));
+  if (!dataset)
+  {
+    throw Error("cannot create '" + fileName + "' (" + quiet.lastMessage() + "): check the folder and permissions");
+  }
+  std::array<double, 6> coefficients = grid.geoTransform.coefficients;
+  dataset->SetGeoTransform(coefficients.data());
+  if (!grid.crsWkt.empty())
+  {
+    OGRSpatialReference crs;
+    if (crs.SetFromUserInput(grid.crsWkt.c_str()) != OGRERR_NONE || dataset->SetSpatialRef(&crs) != CE_None)
+    {
+      throw Error("cannot set the CRS of '" + fileName + "': " + quiet.lastMessage());
+    }
+  }
+  for (std::size_t k = 0; k < bands.size(); ++k)
+  {
+    GDALRasterBand* band = dataset->GetRasterBand(static_cast<int>(k) + 1);
+    band->SetDescription(bands[k].description.c_str());
+    band->SetUnitType(bands[k].unit.c_str());
+    if (grid.hasNoData)
+    {
+      band->SetNoDataValue(grid.noData);
+    }
+    if (band->RasterIO(GF_Write, 0, 0, grid.width, grid.height, const_cast<float*>(bands[k].values.data()),
+          grid.width, grid.height, GDT_Float32, 0, 0, nullptr) != CE_None)
+    {
+      throw Error("writing '" + fileName + "' failed: " + quiet.lastMessage());
+    }
+  }
+  dataset->FlushCache();
+}
+} // namespace terralux
