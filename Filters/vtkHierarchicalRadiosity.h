@@ -22,7 +22,9 @@
  * `SunIrradiance`, `SkyIrradiance`, `ReflectedIrradiance` and `Radiosity` in W/m^2
  * (NumberOfBands components), evaluated at each point (every link reaching the
  * element there re-evaluated at the point: exact form factors, visibility from the
- * point), so values are not smeared over the elements around it; field
+ * point), so values are not smeared over the elements around it; for a terrain lit
+ * by a sky also `SkyViewFactor`, the cosine-weighted fraction of the sky each post sees
+ * (1 on open flat ground), as SAGA and GRASS r.skyview report it; field
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons` and seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data

@@ -11,6 +11,7 @@
 #include "vtkPolyData.h"
 #include "vtkRadiosityScene.h"
 #include "vtkSmartPointer.h"
+#include "vtkStructuredGrid.h"
 
 #include "bf_oracle.h"
 #include "cluster.h"
@@ -166,18 +167,31 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
       pointIds.push_back(p);
     }
   }
-  std::vector<std::array<Spectrum, terralux::lightCategories>> irradiance;
-  solver.irradianceAt(leaves, points, normals, irradiance);
+  std::vector<terralux::PointIrradiance> results;
+  solver.irradianceAt(leaves, points, normals, results);
 
   const auto arrays = makeArrays(bands, count);
+  vtkSmartPointer<vtkDoubleArray> skyViewFactor;
+  if (scene.Sky && vtkStructuredGrid::SafeDownCast(input.data))
+  {
+    skyViewFactor = vtkSmartPointer<vtkDoubleArray>::New();
+    skyViewFactor->SetName("SkyViewFactor");
+    skyViewFactor->SetNumberOfTuples(count);
+    skyViewFactor->Fill(0.0);
+  }
   for (std::size_t k = 0; k < pointIds.size(); ++k)
   {
+    const auto& irradiance = results[k].irradiance;
+    if (skyViewFactor)
+    {
+      skyViewFactor->SetValue(pointIds[k], results[k].skyViewFactor);
+    }
     Values v{};
     for (int band = 0; band < terralux::maxBands; ++band)
     {
-      v[1][band] = irradiance[k][terralux::SunLight][band];
-      v[2][band] = irradiance[k][terralux::SkyLight][band];
-      v[3][band] = irradiance[k][terralux::ReflectedLight][band];
+      v[1][band] = irradiance[terralux::SunLight][band];
+      v[2][band] = irradiance[terralux::SkyLight][band];
+      v[3][band] = irradiance[terralux::ReflectedLight][band];
       v[0][band] = v[1][band] + v[2][band] + v[3][band];
       v[4][band] = leaves[k]->emission()[band] + leaves[k]->reflectance()[band] * v[0][band];
     }
@@ -185,6 +199,8 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   }
   for (const auto& array : arrays)
     output->GetPointData()->AddArray(array);
+  if (skyViewFactor)
+    output->GetPointData()->AddArray(skyViewFactor);
   output->GetPointData()->SetActiveScalars("Irradiance");
 }
 

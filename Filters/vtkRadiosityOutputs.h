@@ -16,7 +16,8 @@ class HierarchicalRadiosity;
 struct vtkRadiosityOutputs
 {
   /// Adds Irradiance, SunIrradiance, SkyIrradiance, ReflectedIrradiance and Radiosity
-  /// to `output`, a shallow copy of input `index` of the scene.
+  /// (and SkyViewFactor for a terrain lit by a sky) to `output`, a shallow copy of
+  /// input `index` of the scene.
   static void AddPointArrays(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
     int index, int bands, vtkDataSet* output);
   static void BuildLeafMesh(const terralux::HierarchicalRadiosity& solver, int bands, vtkPolyData* output);

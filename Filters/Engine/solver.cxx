@@ -420,16 +420,16 @@ double HierarchicalRadiosity::pushPull()
   return radiosity > 0.0 ? change / radiosity : 0.0;
 }
 
-std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
-  const PolygonElement& leaf, const Vec3& point) const
+PointIrradiance HierarchicalRadiosity::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
 {
   return this->irradianceAt(leaf, point, leaf.normal());
 }
 
-std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
+PointIrradiance HierarchicalRadiosity::irradianceAt(
   const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const
 {
-  std::array<Spectrum, lightCategories> irradiance{};
+  PointIrradiance result;
+  auto& irradiance = result.irradiance;
   // Visibility from a point is noisier than over an element: more samples, most where
   // the element saw the sender only in part.
   const int partialSamples = 8 * this->Options.visibilitySamples;
@@ -446,18 +446,22 @@ std::array<Spectrum, lightCategories> HierarchicalRadiosity::irradianceAt(
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)
         irradiance[category][band] += transport * e[band];
+      if (category == SkyLight)
+      {
+        // Sky links cover the whole sky once: their projected solid angles, seen, over pi.
+        result.skyViewFactor += transport / 3.14159265358979323846;
+      }
     }
   }
-  return irradiance;
+  return result;
 }
 
 void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,
-  const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-  std::vector<std::array<Spectrum, lightCategories>>& irradiance) const
+  const std::vector<Vec3>& points, const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const
 {
-  irradiance.resize(points.size());
+  results.resize(points.size());
   tbb::parallel_for(std::size_t(0), points.size(),
-    [&](std::size_t k) { irradiance[k] = this->irradianceAt(*leaves[k], points[k], normals[k]); });
+    [&](std::size_t k) { results[k] = this->irradianceAt(*leaves[k], points[k], normals[k]); });
 }
 
 std::size_t HierarchicalRadiosity::splitShadowedLeaves()

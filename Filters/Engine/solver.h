@@ -40,6 +40,14 @@ struct RadiosityStatistics
   double secondsPushPull = 0.0;
 };
 
+/// Irradiance by light category at a point, and the sky view factor there: the
+/// cosine-weighted fraction of the sky the point sees (1 on open flat ground).
+struct PointIrradiance
+{
+  std::array<Spectrum, lightCategories> irradiance{};
+  double skyViewFactor = 0.0;
+};
+
 class RadiosityProgress
 {
 public:
@@ -76,14 +84,14 @@ public:
   /// the leaf (at any level) re-evaluated at that point: exact form factors and
   /// visibility sampled from the point. This is what per-vertex outputs use, so
   /// values at vertices are not smeared over the elements around them.
-  std::array<Spectrum, lightCategories> irradianceAt(const PolygonElement& leaf, const Vec3& point) const;
+  /// The sky view factor needs a sky (it is 0 without one).
+  PointIrradiance irradianceAt(const PolygonElement& leaf, const Vec3& point) const;
   /// The same with another unit normal at the point (e.g. a terrain post's, averaged over
   /// the cells around it), still through the links that reach `leaf`.
-  std::array<Spectrum, lightCategories> irradianceAt(
-    const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const;
+  PointIrradiance irradianceAt(const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const;
   /// Many points at once, in parallel.
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
-    const std::vector<Vec3>& normals, std::vector<std::array<Spectrum, lightCategories>>& irradiance) const;
+    const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const;
 
 private:
   /// Refines pending links; returns how many were split.

@@ -252,9 +252,11 @@ TEST(Radiosity, SkyViewFactorAtTheBottomOfAPit)
     while (leaf->hasChildren())
       leaf = static_cast<const PolygonElement*>(const_cast<PolygonElement*>(leaf)->children()[0]);
     ASSERT_LT(glm::length(leaf->corners()[0] - centre), 1e-12);
-    const double got = solver.irradianceAt(*leaf, centre)[SkyLight][0];
+    const PointIrradiance atCentre = solver.irradianceAt(*leaf, centre);
     const double expected = std::pow(std::sin(std::atan(1.0 / depth)), 2);
-    EXPECT_NEAR(got / expected, 1.0, 0.01) << depth;
+    EXPECT_NEAR(atCentre.irradiance[SkyLight][0] / expected, 1.0, 0.01) << depth;
+    // The sky view factor is the same fraction, whatever the sky's radiance.
+    EXPECT_NEAR(atCentre.skyViewFactor / expected, 1.0, 0.01) << depth;
   }
 }
 

@@ -65,6 +65,13 @@ class OlindaRadiosity(unittest.TestCase):
         mean_sky = sum(sky.GetValue(k) for k in sea) / len(sea)
         self.assertAlmostEqual(mean_sun / horizontal_beam, 1.0, delta=0.02)
         self.assertAlmostEqual(mean_sky / dhi, 1.0, delta=0.05)
+        # Sky view factor: in [0, 1], ~1 over the open sea, lower in the valleys.
+        svf = data.GetArray("SkyViewFactor")
+        self.assertIsNotNone(svf)
+        low, high = svf.GetRange()
+        self.assertGreater(low, 0.5)
+        self.assertLessEqual(high, 1.0 + 1e-6)
+        self.assertGreater(sum(svf.GetValue(k) for k in sea) / len(sea), 0.99)
 
     def test_statistics_and_other_outputs(self):
         output = self.radiosity.GetOutput()
