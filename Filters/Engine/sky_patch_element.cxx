@@ -78,28 +78,40 @@ double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
     return sum;
   }
   // The surface's horizon crosses the patch: the kink of max(0, cos) needs finer
-  // quadrature, 3 x 3 Gauss points in each of 8 x 8 sub-ranges.
+  // quadrature, 3 x 3 Gauss points in each of 8 x 8 sub-ranges; the 24 altitudes and 24
+  // azimuths are shared, so this costs 48 sines and cosines, not one per point.
   static const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
   static const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
-  constexpr int parts = 8;
+  constexpr int parts = 8, points = 3 * parts;
   const double s0 = std::sin(this->Patch.u0()), s1 = std::sin(this->Patch.u1());
   const double v0 = this->Patch.v0(), v1 = this->Patch.v1();
   const double ds = (s1 - s0) / parts, dv = (v1 - v0) / parts;
-  sum = 0.0;
+  double sinU[points], cosU[points], sinV[points], cosV[points], weight[points];
   for (int i = 0; i < parts; ++i)
     for (int a = 0; a < 3; ++a)
     {
-      const double sinU = s0 + ds * (i + 0.5 + 0.5 * nodes[a]);
-      const double cosU = std::sqrt(std::max(0.0, 1.0 - sinU * sinU));
-      for (int j = 0; j < parts; ++j)
-        for (int b = 0; b < 3; ++b)
-        {
-          const double v = v0 + dv * (j + 0.5 + 0.5 * nodes[b]);
-          const Vec3 d(-std::sin(v) * cosU, -std::cos(v) * cosU, sinU); // directionFromSkyParameters
-          sum += 0.25 * ds * dv * weights[a] * weights[b] * std::max(0.0, glm::dot(normal, d));
-        }
+      const int k = 3 * i + a;
+      sinU[k] = s0 + ds * (i + 0.5 + 0.5 * nodes[a]);
+      cosU[k] = std::sqrt(std::max(0.0, 1.0 - sinU[k] * sinU[k]));
+      const double v = v0 + dv * (i + 0.5 + 0.5 * nodes[a]);
+      sinV[k] = std::sin(v);
+      cosV[k] = std::cos(v);
+      weight[k] = weights[a];
     }
-  return sum;
+  sum = 0.0;
+  for (int i = 0; i < points; ++i)
+  {
+    // directionFromSkyParameters: (-sin v cos u, -cos v cos u, sin u)
+    const double up = normal.z * sinU[i];
+    double row = 0.0;
+    for (int j = 0; j < points; ++j)
+    {
+      const double cosine = up - cosU[i] * (normal.x * sinV[j] + normal.y * cosV[j]);
+      row += weight[j] * std::max(0.0, cosine);
+    }
+    sum += weight[i] * row;
+  }
+  return 0.25 * ds * dv * sum;
 }
 
 const std::vector<HElement*>& SkyPatchElement::children()
