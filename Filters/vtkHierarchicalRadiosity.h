@@ -24,7 +24,8 @@
  * element there re-evaluated at the point: exact form factors, visibility from the
  * point), so values are not smeared over the elements around it; for a terrain lit
  * by a sky also `SkyViewFactor`, the cosine-weighted fraction of the sky each post sees
- * (1 on open flat ground), as SAGA and GRASS r.skyview report it; field
+ * (1 on open flat ground), as SAGA and GRASS r.skyview report it (NaN at points on no
+ * polygon, e.g. blanked no-data posts); field
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons` and seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data

@@ -23,6 +23,7 @@
 #include <array>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <unordered_map>
 
 namespace
@@ -88,7 +89,7 @@ const terralux::PolygonElement* leafAtCorner(terralux::PolygonElement* element, 
   return element;
 }
 
-std::vector<vtkSmartPointer<vtkDoubleArray>> makeArrays(int bands, vtkIdType tuples)
+std::vector<vtkSmartPointer<vtkDoubleArray>> makeArrays(int bands, vtkIdType tuples, double fill = 0.0)
 {
   std::vector<vtkSmartPointer<vtkDoubleArray>> arrays;
   for (int q = 0; q < quantities; ++q)
@@ -97,7 +98,7 @@ std::vector<vtkSmartPointer<vtkDoubleArray>> makeArrays(int bands, vtkIdType tup
     array->SetName(quantityNames[q]);
     array->SetNumberOfComponents(bands);
     array->SetNumberOfTuples(tuples);
-    array->Fill(0.0);
+    array->Fill(fill);
     arrays.push_back(array);
   }
   return arrays;
@@ -170,14 +171,16 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   std::vector<terralux::PointIrradiance> results;
   solver.irradianceAt(leaves, points, normals, results);
 
-  const auto arrays = makeArrays(bands, count);
+  // Points on no polygon (no-data posts, loose vertices) have no value: NaN.
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const auto arrays = makeArrays(bands, count, none);
   vtkSmartPointer<vtkDoubleArray> skyViewFactor;
   if (scene.Sky && vtkStructuredGrid::SafeDownCast(input.data))
   {
     skyViewFactor = vtkSmartPointer<vtkDoubleArray>::New();
     skyViewFactor->SetName("SkyViewFactor");
     skyViewFactor->SetNumberOfTuples(count);
-    skyViewFactor->Fill(0.0);
+    skyViewFactor->Fill(none);
   }
   for (std::size_t k = 0; k < pointIds.size(); ++k)
   {

@@ -4,8 +4,13 @@ import unittest
 
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter, vtkXMLStructuredGridReader, vtkXMLStructuredGridWriter
 
-from terralux import vtkHierarchicalRadiosity, vtkSkySource, vtkSunSource, vtkTerrainSource
-from terralux_testing import OLINDA, ErrorCatcher, scratch_dir
+import math
+import shutil
+import subprocess
+
+from terralux import (vtkHierarchicalRadiosity, vtkSkySource, vtkSunSource, vtkTerrainRasterWriter,
+                      vtkTerrainSource)
+from terralux_testing import LUXEMBOURG, OLINDA, ErrorCatcher, scratch_dir
 
 
 def field(data, name):
@@ -94,6 +99,48 @@ class OlindaRadiosity(unittest.TestCase):
         dark.Update()
         self.assertIn("no light source", catcher.text())
         self.assertEqual(dark.GetLeafMeshOutput().GetNumberOfCells(), 0)
+
+
+class LuxembourgWithNoData(unittest.TestCase):
+    """A DEM with no-data posts, lit, then written back as a GeoTIFF on its own grid."""
+
+    def test_lit_and_written(self):
+        terrain = vtkTerrainSource()
+        terrain.SetFileName(LUXEMBOURG)
+        sun = vtkSunSource()
+        sun.SetInputConnection(terrain.GetOutputPort())
+        sun.SetDateTime("2024-06-21T12:00:00+02:00")
+        sky = vtkSkySource()
+        sky.SetSunConnection(sun.GetOutputPort())
+        sky.SetLevels(6)
+        radiosity = vtkHierarchicalRadiosity()
+        radiosity.SetInputConnection(terrain.GetOutputPort())
+        radiosity.AddLightConnection(sun.GetOutputPort())
+        radiosity.AddLightConnection(sky.GetOutputPort(0))
+        radiosity.SetErrorTolerance(1e-2)
+        tif = os.path.join(scratch_dir(), "luxembourg-irradiance.tif")
+        writer = vtkTerrainRasterWriter()
+        writer.SetInputConnection(radiosity.GetOutputPort(0))
+        writer.SetFileName(tif)
+        self.assertEqual(writer.Write(), 1)
+
+        grid = radiosity.GetOutput()
+        irradiance = grid.GetPointData().GetArray("Irradiance")
+        for k in range(grid.GetNumberOfPoints()):
+            value = irradiance.GetValue(k)
+            if not grid.IsPointVisible(k):
+                self.assertTrue(math.isnan(value))  # no data stays no data
+            else:
+                self.assertTrue(math.isnan(value) or 0.0 < value < 1400.0)
+        if shutil.which("gdalinfo"):
+            info = subprocess.run(["gdalinfo", tif], capture_output=True, text=True, check=True).stdout
+            source = subprocess.run(["gdalinfo", LUXEMBOURG], capture_output=True, text=True,
+                                    check=True).stdout
+            self.assertIn("Size is 95, 90", info)
+            origin = [line for line in source.splitlines() if line.startswith("Origin")]
+            self.assertTrue(origin and origin[0] in info)  # the DEM's own georeference
+            self.assertIn("Description = SkyViewFactor", info)
+            self.assertIn("NoData Value=-32768", info)
 
 
 if __name__ == "__main__":
