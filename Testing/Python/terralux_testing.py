@@ -10,6 +10,22 @@ OLINDA = os.path.join(EXTERNAL_DATA_DIR, "olinda_dem_utm25s.tif")
 LUXEMBOURG = os.path.join(EXTERNAL_DATA_DIR, "elev.tif")
 
 
+def terrain_sun_sky(dem, when, sky_levels=6):
+    """The usual pipeline head: terrain from a DEM, the sun over it at `when` (ISO 8601),
+    and a sky lit by that sun. Returns (terrain, sun, sky), not yet updated."""
+    from terralux import vtkSkySource, vtkSunSource, vtkTerrainSource
+
+    terrain = vtkTerrainSource()
+    terrain.SetFileName(dem)
+    sun = vtkSunSource()
+    sun.SetInputConnection(terrain.GetOutputPort())
+    sun.SetDateTime(when)
+    sky = vtkSkySource()
+    sky.SetSunConnection(sun.GetOutputPort())
+    sky.SetLevels(sky_levels)
+    return terrain, sun, sky
+
+
 def scratch_dir():
     """A fresh folder for files a test writes."""
     return tempfile.mkdtemp(prefix="terralux-py-")

@@ -1,16 +1,14 @@
 """terrain -> sun -> sky -> vtkHierarchicalRadiosity -> writer on the real Olinda DEM."""
+import math
 import os
+import shutil
+import subprocess
 import unittest
 
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter, vtkXMLStructuredGridReader, vtkXMLStructuredGridWriter
 
-import math
-import shutil
-import subprocess
-
-from terralux import (vtkHierarchicalRadiosity, vtkSkySource, vtkSunSource, vtkTerrainRasterWriter,
-                      vtkTerrainSource)
-from terralux_testing import LUXEMBOURG, OLINDA, ErrorCatcher, scratch_dir
+from terralux import vtkHierarchicalRadiosity, vtkTerrainRasterWriter
+from terralux_testing import LUXEMBOURG, OLINDA, ErrorCatcher, scratch_dir, terrain_sun_sky
 
 
 def field(data, name):
@@ -20,14 +18,7 @@ def field(data, name):
 class OlindaRadiosity(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.terrain = vtkTerrainSource()
-        cls.terrain.SetFileName(OLINDA)
-        cls.sun = vtkSunSource()
-        cls.sun.SetInputConnection(cls.terrain.GetOutputPort())
-        cls.sun.SetDateTime("2024-12-21T09:00:00-03:00")
-        cls.sky = vtkSkySource()
-        cls.sky.SetSunConnection(cls.sun.GetOutputPort())
-        cls.sky.SetLevels(6)
+        cls.terrain, cls.sun, cls.sky = terrain_sun_sky(OLINDA, "2024-12-21T09:00:00-03:00")
         cls.radiosity = vtkHierarchicalRadiosity()
         cls.radiosity.SetInputConnection(cls.terrain.GetOutputPort())
         cls.radiosity.AddLightConnection(cls.sun.GetOutputPort())
@@ -105,14 +96,7 @@ class LuxembourgWithNoData(unittest.TestCase):
     """A DEM with no-data posts, lit, then written back as a GeoTIFF on its own grid."""
 
     def test_lit_and_written(self):
-        terrain = vtkTerrainSource()
-        terrain.SetFileName(LUXEMBOURG)
-        sun = vtkSunSource()
-        sun.SetInputConnection(terrain.GetOutputPort())
-        sun.SetDateTime("2024-06-21T12:00:00+02:00")
-        sky = vtkSkySource()
-        sky.SetSunConnection(sun.GetOutputPort())
-        sky.SetLevels(6)
+        terrain, sun, sky = terrain_sun_sky(LUXEMBOURG, "2024-06-21T12:00:00+02:00")
         radiosity = vtkHierarchicalRadiosity()
         radiosity.SetInputConnection(terrain.GetOutputPort())
         radiosity.AddLightConnection(sun.GetOutputPort())

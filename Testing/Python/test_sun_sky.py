@@ -5,8 +5,8 @@ import unittest
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkCommonCore import vtkFloatArray
 
-from terralux import vtkSkySource, vtkSunSource, vtkTerrainSource
-from terralux_testing import OLINDA, ErrorCatcher
+from terralux import vtkSkySource
+from terralux_testing import OLINDA, ErrorCatcher, terrain_sun_sky
 
 
 def field(data, name, k=0):
@@ -26,14 +26,7 @@ def map_horizontal_irradiance(image, band=0):
 
 class TerrainSunSky(unittest.TestCase):
     def setUp(self):
-        self.terrain = vtkTerrainSource()
-        self.terrain.SetFileName(OLINDA)
-        self.sun = vtkSunSource()
-        self.sun.SetInputConnection(self.terrain.GetOutputPort())
-        self.sun.SetDateTime("2024-12-21T09:00:00-03:00")
-        self.sky = vtkSkySource()
-        self.sky.SetSunConnection(self.sun.GetOutputPort())
-        self.sky.SetLevels(6)
+        self.terrain, self.sun, self.sky = terrain_sun_sky(OLINDA, "2024-12-21T09:00:00-03:00")
 
     def test_sun_at_olinda(self):
         self.sky.Update()
