@@ -42,7 +42,9 @@ double linkPower(const HElement& receiver, const Link& link)
 {
   const Spectrum e = link.sender->emittance();
   const double emittance = std::max({ e[0], e[1], e[2] });
-  return emittance * link.kernel * link.visibility * receiver.area() * (link.directional ? 0.25 : 1.0);
+  // A cluster receiver's links carry normal irradiance; its surfaces take on average
+  // S = 1/4 of it (Sillion's isotropic receiver, paper eq. 1).
+  return emittance * link.kernel * link.visibility * receiver.area() * (link.directional ? receiver.scaleFactor() : 1.0);
 }
 
 Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSettings& settings)

@@ -1,7 +1,8 @@
 #pragma once
-// Cluster H-element (Sillion 1995): a group of elements in a bounding box. As a
-// sender it is isotropic (R = 1, S = 1/4); as a receiver its links are handed to
-// each contained surface by that surface's own orientation during push.
+// Cluster H-element (Sillion 1995): a group of elements in a bounding box. R = 1 and
+// S = 1/4 estimate the power it receives (for the oracle); the irradiance itself is
+// evaluated for each contained surface by that surface's own orientation during push.
+// As a sender it shows its projected area (see projectedArea).
 
 #include "helement.h"
 
