@@ -76,6 +76,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , DefaultReflectance(0.2)
   , ReflectanceArrayName(nullptr)
   , EmissionArrayName(nullptr)
+  , EvaluateAtPoints(1)
   , NumberOfBands(1)
 {
   this->SetNumberOfInputPorts(2);
@@ -251,7 +252,8 @@ int vtkHierarchicalRadiosity::RequestData(
 
   // Output 0: the inputs, same points and cells, with the point arrays.
   auto addResults = [&](vtkDataSet* copy, int index) {
-    vtkRadiosityOutputs::AddPointArrays(*solver, scene, index, this->NumberOfBands, copy);
+    vtkRadiosityOutputs::AddPointArrays(
+      *solver, scene, index, this->NumberOfBands, this->EvaluateAtPoints != 0, copy);
   };
   if (auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(output))
   {
@@ -307,5 +309,6 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DefaultReflectance: " << this->DefaultReflectance << "\n";
   os << indent << "ReflectanceArrayName: " << (this->ReflectanceArrayName ? this->ReflectanceArrayName : "(none)") << "\n";
   os << indent << "EmissionArrayName: " << (this->EmissionArrayName ? this->EmissionArrayName : "(none)") << "\n";
+  os << indent << "EvaluateAtPoints: " << (this->EvaluateAtPoints ? "On" : "Off") << "\n";
   os << indent << "NumberOfBands: " << this->NumberOfBands << "\n";
 }

@@ -118,6 +118,18 @@ public:
 
   ///@{
   /**
+   * Set/Get whether output 0's point values are evaluated at each point (every link
+   * reaching the element there re-evaluated at the point; accurate, and gives
+   * SkyViewFactor) or averaged over the leaf elements around it (faster for large
+   * scenes, smears values over elements). Default is on.
+   */
+  vtkSetMacro(EvaluateAtPoints, vtkTypeBool);
+  vtkGetMacro(EvaluateAtPoints, vtkTypeBool);
+  vtkBooleanMacro(EvaluateAtPoints, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Set/Get the number of bands, 1 (broadband) or 3 (RGB). Default is 1.
    */
   vtkSetClampMacro(NumberOfBands, int, 1, 3);
@@ -169,6 +181,7 @@ protected:
   double DefaultReflectance;
   char* ReflectanceArrayName;
   char* EmissionArrayName;
+  vtkTypeBool EvaluateAtPoints;
   int NumberOfBands;
 
 private:

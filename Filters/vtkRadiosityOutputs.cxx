@@ -129,7 +129,7 @@ struct PositionHash
 } // namespace
 
 void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& solver,
-  const vtkRadiosityScene& scene, int index, int bands, vtkDataSet* output)
+  const vtkRadiosityScene& scene, int index, int bands, bool evaluateAtPoints, vtkDataSet* output)
 {
   // Each point is evaluated where it is, with the area-weighted normal of the polygons
   // around it (as a GIS takes a post's slope and aspect from its neighbours), through
@@ -154,6 +154,41 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
         leafOfPoint[point] = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
     }
   }
+  // Points on no polygon (no-data posts, loose vertices) have no value: NaN.
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const auto arrays = makeArrays(bands, count, none);
+  if (!evaluateAtPoints)
+  {
+    std::vector<Values> sums(count, Values{});
+    std::vector<double> weights(count, 0.0);
+    for (std::size_t k = 0; k < roots.size(); ++k)
+    {
+      const terralux::ScenePolygon& polygon = scene.Scene.polygons[k];
+      if (!roots[k] || polygon.owner != index)
+        continue;
+      for (int c = 0; c < polygon.vertexCount; ++c)
+      {
+        const vtkIdType point = polygon.vertices[c] - input.firstPoint;
+        const terralux::PolygonElement* leaf = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
+        accumulate(sums[point], valuesOf(*leaf), leaf->area());
+        weights[point] += leaf->area();
+      }
+    }
+    for (vtkIdType p = 0; p < count; ++p)
+    {
+      if (weights[p] > 0.0)
+      {
+        Values v{};
+        accumulate(v, sums[p], 1.0 / weights[p]);
+        store(arrays, p, v, bands);
+      }
+    }
+    for (const auto& array : arrays)
+      output->GetPointData()->AddArray(array);
+    output->GetPointData()->SetActiveScalars("Irradiance");
+    return;
+  }
+
   std::vector<const terralux::PolygonElement*> leaves;
   std::vector<Vec3> points, normals;
   std::vector<vtkIdType> pointIds;
@@ -171,9 +206,6 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   std::vector<terralux::PointIrradiance> results;
   solver.irradianceAt(leaves, points, normals, results);
 
-  // Points on no polygon (no-data posts, loose vertices) have no value: NaN.
-  const double none = std::numeric_limits<double>::quiet_NaN();
-  const auto arrays = makeArrays(bands, count, none);
   vtkSmartPointer<vtkDoubleArray> skyViewFactor;
   if (scene.Sky && vtkStructuredGrid::SafeDownCast(input.data))
   {

@@ -18,8 +18,11 @@ struct vtkRadiosityOutputs
   /// Adds Irradiance, SunIrradiance, SkyIrradiance, ReflectedIrradiance and Radiosity
   /// (and SkyViewFactor for a terrain lit by a sky) to `output`, a shallow copy of
   /// input `index` of the scene.
+  /// With evaluateAtPoints off, each point takes the area-weighted average of the
+  /// leaves that have it as a corner instead (fast; values smeared over the elements
+  /// around the point; no SkyViewFactor).
   static void AddPointArrays(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
-    int index, int bands, vtkDataSet* output);
+    int index, int bands, bool evaluateAtPoints, vtkDataSet* output);
   static void BuildLeafMesh(const terralux::HierarchicalRadiosity& solver, int bands, vtkPolyData* output);
   static void BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output);
 };

@@ -70,6 +70,10 @@ TEST(RadiosityFilter, PlaneUnderSunAndSkyMatchesClosedForm)
   radiosity->AddLightConnection(lights.sun->GetOutputPort());
   radiosity->AddLightConnection(lights.sky->GetOutputPort(0));
   radiosity->SetErrorTolerance(1e-4);
+  for (bool atPoints : { true, false })
+  {
+  SCOPED_TRACE(atPoints ? "evaluated at points" : "averaged over elements");
+  radiosity->SetEvaluateAtPoints(atPoints);
   vtkNew<MessageCatcher> messages;
   ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
   auto* out = vtkPolyData::SafeDownCast(radiosity->GetOutput());
@@ -91,6 +95,8 @@ TEST(RadiosityFilter, PlaneUnderSunAndSkyMatchesClosedForm)
   EXPECT_GT(fieldValue(out, "Elements"), 0.0);
   EXPECT_GT(fieldValue(out, "Rays"), 0.0);
   EXPECT_EQ(fieldValue(out, "Links"), radiosity->GetLinksOutput()->GetNumberOfCells());
+  EXPECT_EQ(out->GetPointData()->GetArray("SkyViewFactor"), nullptr); // not a terrain
+  }
 }
 
 TEST(RadiosityFilter, LeafMeshIsContinuousAtTVertices)
