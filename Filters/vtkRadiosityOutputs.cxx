@@ -138,8 +138,13 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   // over elements.
   const vtkRadiosityScene::Input& input = scene.Inputs[index];
   const vtkIdType count = input.data->GetNumberOfPoints();
+  // One pass over the polygons' corners: for each point the area-weighted normal and
+  // the first leaf having it as a corner (point evaluation), or the area-weighted
+  // average of all such leaves (averaged values).
   std::vector<const terralux::PolygonElement*> leafOfPoint(count, nullptr);
   std::vector<Vec3> normalOfPoint(count, Vec3(0.0));
+  std::vector<Values> sums(evaluateAtPoints ? 0 : count, Values{});
+  std::vector<double> weights(evaluateAtPoints ? 0 : count, 0.0);
   const auto& roots = solver.polygonRoots();
   for (std::size_t k = 0; k < roots.size(); ++k)
   {
@@ -149,9 +154,15 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     for (int c = 0; c < polygon.vertexCount; ++c)
     {
       const vtkIdType point = polygon.vertices[c] - input.firstPoint;
+      const terralux::PolygonElement* leaf = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
       normalOfPoint[point] += roots[k]->area() * roots[k]->normal();
       if (!leafOfPoint[point])
-        leafOfPoint[point] = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
+        leafOfPoint[point] = leaf;
+      if (!evaluateAtPoints)
+      {
+        accumulate(sums[point], valuesOf(*leaf), leaf->area());
+        weights[point] += leaf->area();
+      }
     }
   }
   // Points on no polygon (no-data posts, loose vertices) have no value: NaN.
@@ -159,21 +170,6 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   const auto arrays = makeArrays(bands, count, none);
   if (!evaluateAtPoints)
   {
-    std::vector<Values> sums(count, Values{});
-    std::vector<double> weights(count, 0.0);
-    for (std::size_t k = 0; k < roots.size(); ++k)
-    {
-      const terralux::ScenePolygon& polygon = scene.Scene.polygons[k];
-      if (!roots[k] || polygon.owner != index)
-        continue;
-      for (int c = 0; c < polygon.vertexCount; ++c)
-      {
-        const vtkIdType point = polygon.vertices[c] - input.firstPoint;
-        const terralux::PolygonElement* leaf = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
-        accumulate(sums[point], valuesOf(*leaf), leaf->area());
-        weights[point] += leaf->area();
-      }
-    }
     for (vtkIdType p = 0; p < count; ++p)
     {
       if (weights[p] > 0.0)
