@@ -162,7 +162,7 @@ int lightCategoryOf(const HElement& sender)
   }
 }
 
-double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Visibility& visibility, int samples)
+double sampledVisibility(HElement& receiver, HElement& sender, const Visibility& visibility, int samples)
 {
   SampleGenerator random(linkSeed(receiver.id(), sender.id()));
   switch (sender.kind())
@@ -267,7 +267,6 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
   Link link;
   link.sender = &sender;
   link.directional = receiver.isCluster();
-  SampleGenerator random(linkSeed(receiver.id(), sender.id()));
 
   if (sender.kind() == HElement::Kind::Sun)
   {
@@ -276,7 +275,7 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
     link.kernel = link.directional ? 1.0 : receiver.receiverFactor(d);
     if (link.kernel > 0.0)
     {
-      link.visibility = visibilityToward(receiver, visibility, samples, random, [&](int) { return d; });
+      link.visibility = sampledVisibility(receiver, sender, visibility, samples);
     }
     return link;
   }
@@ -290,10 +289,7 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
                                    : patch.projectedSolidAngle(static_cast<PolygonElement&>(receiver).normal());
     if (link.kernel > 0.0)
     {
-      // Directions jittered inside the patch, so partial sky occlusion is sampled.
-      const SkyPatch& range = patch.patch();
-      link.visibility = visibilityToward(
-        receiver, visibility, samples, random, [&](int) { return sampleSkyDirection(range, random); });
+      link.visibility = sampledVisibility(receiver, sender, visibility, samples);
     }
     return link;
   }
@@ -319,7 +315,7 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
   }
   if (link.kernel > 0.0)
   {
-    link.visibility = visibilityBetween(receiver, sender, visibility, samples, random);
+    link.visibility = sampledVisibility(receiver, sender, visibility, samples);
   }
   return link;
 }

@@ -24,8 +24,10 @@ double surfaceKernel(const PolygonElement& receiver, const HElement& sender, dou
 /// R for the sun, the projected solid angle for a sky patch, surfaceKernel otherwise.
 double kernelAtSurface(const PolygonElement& receiver, HElement& sender);
 
-/// Visibility fraction of `sender` from a surface receiver, sampled like a new link.
-double visibilityAtSurface(PolygonElement& receiver, HElement& sender, const Visibility& visibility, int samples);
+/// Visibility fraction of `sender` from `receiver`: stratified, jittered rays seeded by
+/// the two ids (directions jittered inside a sky patch, so partial sky occlusion is
+/// sampled). A link's visibility and its re-sampling at a leaf both come from here.
+double sampledVisibility(HElement& receiver, HElement& sender, const Visibility& visibility, int samples);
 
 /// Transport kernel x visibility from `sender` to a point with a unit normal: the exact point form factor (or R for the sun, the projected solid angle
 /// for a sky patch) and visibility sampled from that point (samples = 0: taken as

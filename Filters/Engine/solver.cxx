@@ -334,7 +334,7 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, bool re
       }
       else
       {
-        visibility = link.visibility < 1.0 ? visibilityAtSurface(polygon, *link.sender, rays, samples) : 1.0;
+        visibility = link.visibility < 1.0 ? sampledVisibility(polygon, *link.sender, rays, samples) : 1.0;
         polygon.LeafKernels[k] = kernelAtSurface(polygon, *link.sender) * visibility;
       }
       if (visibility > 0.0 && visibility < 1.0)
