@@ -5,6 +5,13 @@
 
 namespace terralux
 {
+namespace
+{
+// 3-point Gauss-Legendre on [-1, 1].
+const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
+const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+} // namespace
+
 SkyPatchElement::SkyPatchElement(
   std::uint64_t id, int level, ElementStore* store, const SkyHierarchy* sky, SkyPatch patch)
   : HElement(id, level)
@@ -28,8 +35,6 @@ SkyPatchElement::SkyPatchElement(
     const terralux::Direction c = directionFromSkyParameters(us[k / 2], vs[k % 2]);
     this->CornerDirections[k] = Vec3(c[0], c[1], c[2]);
   }
-  static const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
-  static const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
   const double s0 = std::sin(u0), s1 = std::sin(u1);
   for (int a = 0; a < 3; ++a)
   {
@@ -80,8 +85,6 @@ double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
   // The surface's horizon crosses the patch: the kink of max(0, cos) needs finer
   // quadrature, 3 x 3 Gauss points in each of 8 x 8 sub-ranges; the 24 altitudes and 24
   // azimuths are shared, so this costs 48 sines and cosines, not one per point.
-  static const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
-  static const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
   constexpr int parts = 8, points = 3 * parts;
   const double s0 = std::sin(this->Patch.u0()), s1 = std::sin(this->Patch.u1());
   const double v0 = this->Patch.v0(), v1 = this->Patch.v1();
