@@ -76,6 +76,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , DefaultReflectance(0.2)
   , ReflectanceArrayName(nullptr)
   , EmissionArrayName(nullptr)
+  , UseTerrainHierarchy(1)
   , EvaluateAtPoints(1)
   , NumberOfBands(1)
 {
@@ -208,7 +209,8 @@ int vtkHierarchicalRadiosity::RequestData(
     const std::vector<vtkDataSet*> inputs = inputDataSets(inputVector[0]);
     for (vtkDataSet* input : inputs)
     {
-      scene.AddDataSet(input, this->DefaultReflectance, this->ReflectanceArrayName, this->EmissionArrayName);
+      scene.AddDataSet(input, this->DefaultReflectance, this->ReflectanceArrayName, this->EmissionArrayName,
+        this->UseTerrainHierarchy != 0);
     }
     for (int k = 0; k < inputVector[1]->GetNumberOfInformationObjects(); ++k)
     {
@@ -311,4 +313,5 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmissionArrayName: " << (this->EmissionArrayName ? this->EmissionArrayName : "(none)") << "\n";
   os << indent << "EvaluateAtPoints: " << (this->EvaluateAtPoints ? "On" : "Off") << "\n";
   os << indent << "NumberOfBands: " << this->NumberOfBands << "\n";
+  os << indent << "UseTerrainHierarchy: " << (this->UseTerrainHierarchy ? "On" : "Off") << "\n";
 }

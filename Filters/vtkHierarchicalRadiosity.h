@@ -130,6 +130,21 @@ public:
 
   ///@{
   /**
+   * Set/Get whether 2-D structured grids (terrains from vtkTerrainSource) enter the
+   * hierarchy as terrain patches (paper section 4): parameter ranges of the grid that
+   * split into finer posts only where links need it, with visibility against the
+   * full-resolution surface through Embree's grid geometry, so time and memory follow
+   * the solution's detail rather than the number of posts. Off: two triangles per cell
+   * in clusters (the plain path, for comparison). With it on and EvaluateAtPoints off,
+   * post values are interpolated from the continuous leaf mesh. Default is on.
+   */
+  vtkSetMacro(UseTerrainHierarchy, vtkTypeBool);
+  vtkGetMacro(UseTerrainHierarchy, vtkTypeBool);
+  vtkBooleanMacro(UseTerrainHierarchy, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Set/Get the number of bands, 1 (broadband) or 3 (RGB). Default is 1.
    */
   vtkSetClampMacro(NumberOfBands, int, 1, 3);
@@ -181,6 +196,7 @@ protected:
   double DefaultReflectance;
   char* ReflectanceArrayName;
   char* EmissionArrayName;
+  vtkTypeBool UseTerrainHierarchy;
   vtkTypeBool EvaluateAtPoints;
   int NumberOfBands;
 

@@ -9,6 +9,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkRadiosityScene.h"
 #include "vtkSmartPointer.h"
 #include "vtkStructuredGrid.h"
@@ -18,6 +19,8 @@
 #include "polygon_element.h"
 #include "sky_patch_element.h"
 #include "solver.h"
+#include "terrain_mesh.h"
+#include "terrain_patch.h"
 
 #include <algorithm>
 #include <array>
@@ -111,6 +114,126 @@ void store(const std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkIdType
       arrays[q]->SetComponent(tuple, band, v[q][band]);
 }
 
+Values valuesAtPoint(const terralux::PointIrradiance& point, const Spectrum& reflectance, const Spectrum& emission)
+{
+  Values v{};
+  for (int band = 0; band < terralux::maxBands; ++band)
+  {
+    v[1][band] = point.irradiance[terralux::SunLight][band];
+    v[2][band] = point.irradiance[terralux::SkyLight][band];
+    v[3][band] = point.irradiance[terralux::ReflectedLight][band];
+    v[0][band] = v[1][band] + v[2][band] + v[3][band];
+    v[4][band] = emission[band] + reflectance[band] * v[0][band];
+  }
+  return v;
+}
+
+constexpr int valueComponents = quantities * terralux::maxBands;
+
+// Leaf values flattened for TerrainLeafMesh: quantity-major, then band.
+std::vector<double> flatLeafValues(const terralux::TerrainLeafMesh& mesh)
+{
+  std::vector<double> flat(mesh.leaves().size() * valueComponents);
+  for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
+  {
+    const Values v = valuesOf(*mesh.leaves()[k]);
+    for (int q = 0; q < quantities; ++q)
+      for (int band = 0; band < terralux::maxBands; ++band)
+        flat[k * valueComponents + q * terralux::maxBands + band] = v[q][band];
+  }
+  return flat;
+}
+
+// The leaf below `patch` whose closed range holds (u, v), or null.
+const terralux::TerrainPatch* leafHolding(const terralux::TerrainPatch& patch, double u, double v)
+{
+  if (!patch.range().contains(u, v))
+    return nullptr;
+  if (patch.existingChildren().empty())
+    return patch.complete() ? &patch : nullptr;
+  for (const terralux::HElement* child : patch.existingChildren())
+    if (auto* leaf = leafHolding(static_cast<const terralux::TerrainPatch&>(*child), u, v))
+      return leaf;
+  return nullptr;
+}
+
+// Per-post arrays of a terrain input: evaluated at each post, or interpolated from the
+// continuous leaf mesh.
+void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const terralux::TerrainPatch* root,
+  int bands, bool evaluateAtPoints, bool withSky, vtkDataSet* output)
+{
+  const vtkIdType count = output->GetNumberOfPoints();
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const auto arrays = makeArrays(bands, count, none);
+  vtkSmartPointer<vtkDoubleArray> skyViewFactor;
+  if (withSky && evaluateAtPoints)
+  {
+    skyViewFactor = vtkSmartPointer<vtkDoubleArray>::New();
+    skyViewFactor->SetName("SkyViewFactor");
+    skyViewFactor->SetNumberOfTuples(count);
+    skyViewFactor->Fill(none);
+  }
+  std::array<double*, quantities> out{};
+  for (int q = 0; q < quantities; ++q)
+    out[q] = arrays[q]->GetPointer(0);
+  auto put = [&](vtkIdType post, const Values& v) {
+    for (int q = 0; q < quantities; ++q)
+      for (int band = 0; band < bands; ++band)
+        out[q][post * bands + band] = v[q][band];
+  };
+  if (root)
+  {
+    const terralux::TerrainGrid& grid = root->grid();
+    const int nx = grid.postsX(), ny = grid.postsY();
+    if (evaluateAtPoints)
+    {
+      // Every post through the links that reach the leaf holding it, with the normal of
+      // the cells around it, in parallel.
+      vtkSMPTools::For(0, ny, [&](vtkIdType first, vtkIdType last) {
+        for (int j = static_cast<int>(first); j < last; ++j)
+          for (int i = 0; i < nx; ++i)
+          {
+            if (!grid.postUsed(i, j))
+              continue;
+            const terralux::TerrainPatch* leaf = leafHolding(*root, i, j);
+            if (!leaf)
+              continue;
+            const terralux::PointIrradiance result = solver.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j));
+            const vtkIdType post = i + static_cast<vtkIdType>(j) * nx;
+            put(post, valuesAtPoint(result, leaf->reflectance(), leaf->emission()));
+            if (skyViewFactor)
+              skyViewFactor->SetValue(post, result.skyViewFactor);
+          }
+      });
+    }
+    else
+    {
+      const terralux::TerrainLeafMesh mesh(*root);
+      const std::vector<double> vertexValues = mesh.vertexValues(flatLeafValues(mesh), valueComponents);
+      double flat[valueComponents];
+      for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
+      {
+        const terralux::ParameterRange& r = mesh.leaves()[k]->range();
+        for (int j = static_cast<int>(std::ceil(r.v0)); j <= static_cast<int>(std::floor(r.v1)); ++j)
+          for (int i = static_cast<int>(std::ceil(r.u0)); i <= static_cast<int>(std::floor(r.u1)); ++i)
+          {
+            mesh.interpolate(k, vertexValues, valueComponents, i, j, flat);
+            Values v{};
+            for (int q = 0; q < quantities; ++q)
+              for (int band = 0; band < terralux::maxBands; ++band)
+                v[q][band] = flat[q * terralux::maxBands + band];
+            put(i + static_cast<vtkIdType>(j) * nx, v);
+          }
+      }
+    }
+  }
+  for (const auto& array : arrays)
+    output->GetPointData()->AddArray(array);
+  if (skyViewFactor)
+    output->GetPointData()->AddArray(skyViewFactor);
+  output->GetPointData()->SetActiveScalars("Irradiance");
+}
+
 struct PositionHash
 {
   std::size_t operator()(const Vec3& p) const
@@ -137,6 +260,12 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   // point (exact form factors, visibility from the point), so values are not smeared
   // over elements.
   const vtkRadiosityScene::Input& input = scene.Inputs[index];
+  if (input.terrain >= 0)
+  {
+    addTerrainPointArrays(solver, solver.terrainRoots()[input.terrain], bands, evaluateAtPoints,
+      scene.Sky != nullptr, output);
+    return;
+  }
   const vtkIdType count = input.data->GetNumberOfPoints();
   // One pass over the polygons' corners: for each point the area-weighted normal and
   // the first leaf having it as a corner (point evaluation), or the area-weighted
@@ -212,21 +341,11 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   }
   for (std::size_t k = 0; k < pointIds.size(); ++k)
   {
-    const auto& irradiance = results[k].irradiance;
     if (skyViewFactor)
     {
       skyViewFactor->SetValue(pointIds[k], results[k].skyViewFactor);
     }
-    Values v{};
-    for (int band = 0; band < terralux::maxBands; ++band)
-    {
-      v[1][band] = irradiance[terralux::SunLight][band];
-      v[2][band] = irradiance[terralux::SkyLight][band];
-      v[3][band] = irradiance[terralux::ReflectedLight][band];
-      v[0][band] = v[1][band] + v[2][band] + v[3][band];
-      v[4][band] = leaves[k]->emission()[band] + leaves[k]->reflectance()[band] * v[0][band];
-    }
-    store(arrays, pointIds[k], v, bands);
+    store(arrays, pointIds[k], valuesAtPoint(results[k], leaves[k]->reflectance(), leaves[k]->emission()), bands);
   }
   for (const auto& array : arrays)
     output->GetPointData()->AddArray(array);
@@ -294,6 +413,34 @@ void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& s
   for (terralux::PolygonElement* leaf : leaves)
     for (int c = 0; c < leaf->cornerCount(); ++c)
       anchor(index[leaf->corners()[c]], index[leaf->corners()[(c + 1) % leaf->cornerCount()]]);
+
+  // Terrains: their leaf meshes, already continuous (T-vertices from generic edges).
+  for (const terralux::TerrainPatch* root : solver.terrainRoots())
+  {
+    if (!root)
+      continue;
+    const terralux::TerrainLeafMesh mesh(*root);
+    const std::vector<double> vertexValues = mesh.vertexValues(flatLeafValues(mesh), valueComponents);
+    const vtkIdType first = static_cast<vtkIdType>(positions.size());
+    for (std::size_t k = 0; k < mesh.vertexCount(); ++k)
+    {
+      positions.push_back(mesh.position(k));
+      Values v{};
+      for (int q = 0; q < quantities; ++q)
+        for (int band = 0; band < terralux::maxBands; ++band)
+          v[q][band] = vertexValues[k * valueComponents + q * terralux::maxBands + band];
+      values.push_back(v);
+    }
+    std::vector<vtkIdType> ids;
+    for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
+    {
+      ids.clear();
+      for (std::size_t vertex : mesh.boundary(k))
+        ids.push_back(first + static_cast<vtkIdType>(vertex));
+      polygons->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+      level->InsertNextValue(mesh.leaves()[k]->level());
+    }
+  }
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

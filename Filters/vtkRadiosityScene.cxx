@@ -8,10 +8,12 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkStructuredGrid.h"
 
 #include "error.h"
 
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -63,17 +65,99 @@ private:
   vtkDataArray* Array = nullptr;
   double Fallback;
 };
+
+// A 2-D structured grid as a terrain grid: posts, blanked cells, materials per cell.
+std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
+  vtkStructuredGrid* grid, const CellSpectrum& reflectance, const CellSpectrum& emission, int owner)
+{
+  int dims[3];
+  grid->GetDimensions(dims);
+  double bounds[6];
+  grid->GetBounds(bounds);
+  const terralux::Vec3 centre(
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
+  auto terrain = std::make_unique<terralux::TerrainGrid>(dims[0], dims[1], std::isfinite(centre.x) &&
+      std::isfinite(centre.y) && std::isfinite(centre.z) ? centre : terralux::Vec3(0.0));
+  std::atomic<vtkIdType> badPoint{ -1 };
+  const bool blanking = grid->HasAnyBlankCells() || grid->HasAnyBlankPoints();
+  vtkSMPTools::For(0, dims[1], [&](vtkIdType first, vtkIdType last) {
+    double p[3];
+    for (int j = static_cast<int>(first); j < last; ++j)
+      for (int i = 0; i < dims[0]; ++i)
+      {
+        grid->GetPoint(i + static_cast<vtkIdType>(j) * dims[0], p);
+        const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        terrain->setPost(i, j, finite ? terralux::Vec3(p[0], p[1], p[2]) : terrain->origin());
+        if (i + 1 < dims[0] && j + 1 < dims[1])
+        {
+          const vtkIdType cell = i + static_cast<vtkIdType>(j) * (dims[0] - 1);
+          terrain->setCellValid(i, j, !blanking || grid->IsCellVisible(cell));
+        }
+      }
+  });
+  // Posts with NaN or infinite coordinates are allowed only where no visible cell uses them.
+  vtkSMPTools::For(0, dims[1] - 1, [&](vtkIdType first, vtkIdType last) {
+    double p[3];
+    for (int j = static_cast<int>(first); j < last; ++j)
+      for (int i = 0; i + 1 < dims[0]; ++i)
+      {
+        if (!terrain->cellValid(i, j))
+          continue;
+        for (int c = 0; c < 4; ++c)
+        {
+          const vtkIdType id = (i + c % 2) + static_cast<vtkIdType>(j + c / 2) * dims[0];
+          grid->GetPoint(id, p);
+          if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+            badPoint = id;
+        }
+      }
+  });
+  if (badPoint >= 0)
+  {
+    throw terralux::Error("point " + std::to_string(badPoint.load()) + " of input " + std::to_string(owner) +
+      " has a NaN or infinite coordinate: blank the cells around it or repair it");
+  }
+  terrain->setUniformMaterial(reflectance.at(0), emission.at(0));
+  if (reflectance.present() || emission.present())
+  {
+    for (int j = 0; j + 1 < dims[1]; ++j)
+      for (int i = 0; i + 1 < dims[0]; ++i)
+      {
+        const vtkIdType cell = i + static_cast<vtkIdType>(j) * (dims[0] - 1);
+        terrain->setCellMaterial(i, j, reflectance.at(cell), emission.at(cell));
+      }
+  }
+  return terrain;
+}
 } // namespace
 
-void vtkRadiosityScene::AddDataSet(
-  vtkDataSet* data, double defaultReflectance, const char* reflectanceName, const char* emissionName)
+void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, const char* reflectanceName,
+  const char* emissionName, bool terrainHierarchy)
 {
   const CellSpectrum reflectance(data, reflectanceName, defaultReflectance, 0.0, 1.0, "reflectance");
   const CellSpectrum emission(data, emissionName, 0.0, 0.0, INFINITY, "emission");
   this->HasEmission = this->HasEmission || emission.present();
   const vtkIdType first = static_cast<vtkIdType>(this->Scene.points.size());
-  this->Inputs.push_back({ data, first });
-  const int owner = static_cast<int>(this->Inputs.size()) - 1;
+  const int owner = static_cast<int>(this->Inputs.size());
+  auto* structured = vtkStructuredGrid::SafeDownCast(data);
+  int dims[3] = { 0, 0, 0 };
+  if (structured)
+  {
+    structured->GetDimensions(dims);
+    if (dims[2] != 1 || dims[0] < 2 || dims[1] < 2)
+    {
+      throw terralux::Error("structured grids must be 2-D surfaces (dimensions nx x ny x 1, nx, ny >= 2), "
+                            "as vtkTerrainSource makes them");
+    }
+  }
+  if (structured && terrainHierarchy)
+  {
+    this->Terrains.push_back(makeTerrainGrid(structured, reflectance, emission, owner));
+    this->Scene.terrains.push_back(this->Terrains.back().get());
+    this->Inputs.push_back({ data, first, static_cast<int>(this->Terrains.size()) - 1 });
+    return;
+  }
+  this->Inputs.push_back({ data, first, -1 });
   for (vtkIdType k = 0; k < data->GetNumberOfPoints(); ++k)
   {
     double p[3];
@@ -100,16 +184,11 @@ void vtkRadiosityScene::AddDataSet(
     this->Scene.polygons.push_back(polygon);
   };
 
-  if (auto* grid = vtkStructuredGrid::SafeDownCast(data))
+  if (auto* grid = structured)
   {
-    int dims[3];
-    grid->GetDimensions(dims);
-    if (dims[2] != 1)
-    {
-      throw terralux::Error("structured grids must be 2-D surfaces (dimensions nx x ny x 1), as "
-                            "vtkTerrainSource makes them");
-    }
-    // Terrain cells are not planar: two triangles each, skipping blanked cells.
+    // Terrain cells are not planar: two triangles each, skipping blanked cells, split
+    // along the (i+1, j)-(i, j+1) diagonal as terrain patches and Embree's grids are,
+    // so both paths see the same surface.
     for (int j = 0; j + 1 < dims[1]; ++j)
       for (int i = 0; i + 1 < dims[0]; ++i)
       {
@@ -118,7 +197,7 @@ void vtkRadiosityScene::AddDataSet(
           continue;
         const vtkIdType p00 = i + static_cast<vtkIdType>(j) * dims[0], p10 = p00 + 1;
         const vtkIdType p01 = p00 + dims[0], p11 = p01 + 1;
-        const vtkIdType a[3] = { p00, p10, p11 }, b[3] = { p00, p11, p01 };
+        const vtkIdType a[3] = { p00, p10, p01 }, b[3] = { p11, p01, p10 };
         addPolygon(cell, 3, a);
         addPolygon(cell, 3, b);
       }

@@ -6,6 +6,7 @@
 
 #include "radiosity_types.h"
 #include "sky_hierarchy.h"
+#include "terrain_grid.h"
 
 #include "vtkType.h"
 
@@ -22,16 +23,20 @@ public:
   {
     vtkDataSet* data;
     vtkIdType firstPoint;
+    int terrain; ///< index into Terrains, or -1 for polygons
   };
 
-  /// Adds a vtkPolyData or a 2-D vtkStructuredGrid.
+  /// Adds a vtkPolyData or a 2-D vtkStructuredGrid. With `terrainHierarchy`, a grid
+  /// enters as a TerrainGrid (terrain patches, Embree grid geometry); otherwise as
+  /// two triangles per cell.
   void AddDataSet(vtkDataSet* data, double defaultReflectance, const char* reflectanceName,
-    const char* emissionName);
+    const char* emissionName, bool terrainHierarchy);
   /// Adds a vtkSkySource radiance map or a vtkSunSource output.
   void AddLight(vtkDataObject* light);
 
   terralux::RadiosityScene Scene;
   std::vector<Input> Inputs;
+  std::vector<std::unique_ptr<terralux::TerrainGrid>> Terrains;
   std::unique_ptr<terralux::SkyHierarchy> Sky;
   bool HasSun = false;
   terralux::Vec3 SunDirection{ 0.0 };

@@ -2,6 +2,7 @@
 
 #include "cluster.h"
 #include "sky_patch_element.h"
+#include "terrain_patch.h"
 
 #include <algorithm>
 #include <limits>
@@ -45,6 +46,22 @@ double linkPower(const HElement& receiver, const Link& link)
   // A cluster receiver's links carry normal irradiance; its surfaces take on average
   // S = 1/4 of it (Sillion's isotropic receiver, paper eq. 1).
   return emittance * link.kernel * link.visibility * receiver.area() * (link.directional ? receiver.scaleFactor() : 1.0);
+}
+
+bool terrainLightsItself(const HElement& element, const OracleSettings& settings)
+{
+  const auto* patch = dynamic_cast<const TerrainPatch*>(&element);
+  if (!patch || !patch->complete())
+  {
+    return false;
+  }
+  double radiosity = 0.0;
+  for (int band = 0; band < maxBands; ++band)
+  {
+    radiosity = std::max({ radiosity, patch->Radiosity[band],
+      patch->emission()[band] + patch->reflectance()[band] * settings.meanIrradiance });
+  }
+  return radiosity * patch->unalignedArea() > settings.powerThreshold;
 }
 
 Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSettings& settings)

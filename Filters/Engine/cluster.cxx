@@ -21,11 +21,10 @@ Cluster::Cluster(
     this->Area += surface->area();
     this->WeightedNormal += surface->area() * surface->normal();
     this->CumulativeArea.push_back(this->Area);
-    for (int k = 0; k < surface->cornerCount(); ++k)
-    {
-      this->Low = glm::min(this->Low, surface->corners()[k]);
-      this->High = glm::max(this->High, surface->corners()[k]);
-    }
+    Vec3 low, high;
+    surface->bounds(low, high);
+    this->Low = glm::min(this->Low, low);
+    this->High = glm::max(this->High, high);
   }
 }
 

@@ -4,6 +4,7 @@
 #include "point_form_factor.h"
 #include "polygon_element.h"
 #include "sky_patch_element.h"
+#include "terrain_patch.h"
 #include "visibility.h"
 
 #include <algorithm>
@@ -262,6 +263,18 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
   }
 }
 
+namespace
+{
+// How much the cosine toward a source at infinity varies over a surface receiver, per
+// unit kernel: the share of a terrain patch's area not aligned with its mean normal
+// (0 for planar polygons, whose cosine is the same everywhere).
+double cosineSpread(const HElement& receiver)
+{
+  const auto* patch = dynamic_cast<const TerrainPatch*>(&receiver);
+  return patch && patch->area() > 0.0 ? patch->unalignedArea() / patch->area() : 0.0;
+}
+} // namespace
+
 Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples)
 {
   Link link;
@@ -273,6 +286,7 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
     const Vec3 d = static_cast<SunElement&>(sender).direction();
     link.direction = d;
     link.kernel = link.directional ? 1.0 : receiver.receiverFactor(d);
+    link.kernelSpread = cosineSpread(receiver);
     if (link.kernel > 0.0)
     {
       link.visibility = sampledVisibility(receiver, sender, visibility, samples);
@@ -287,6 +301,7 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
     // patch (a patch straddling the surface's horizon counts only its visible part).
     link.kernel = link.directional ? patch.solidAngle()
                                    : patch.projectedSolidAngle(static_cast<PolygonElement&>(receiver).normal());
+    link.kernelSpread = cosineSpread(receiver) * patch.solidAngle();
     if (link.kernel > 0.0)
     {
       link.visibility = sampledVisibility(receiver, sender, visibility, samples);

@@ -99,6 +99,16 @@ SurfaceSample PolygonElement::sample(int k, int n, SampleGenerator& random) cons
   return { p, this->Normal };
 }
 
+void PolygonElement::bounds(Vec3& low, Vec3& high) const
+{
+  low = high = this->Corners[0];
+  for (int k = 1; k < this->Count; ++k)
+  {
+    low = glm::min(low, this->Corners[k]);
+    high = glm::max(high, this->Corners[k]);
+  }
+}
+
 double PolygonElement::receiverFactor(const Vec3& towardSender) const
 {
   return std::max(0.0, glm::dot(this->Normal, towardSender));

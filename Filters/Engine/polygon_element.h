@@ -28,6 +28,11 @@ public:
   bool hasChildren() const { return !this->Children.empty(); }
   SurfaceSample sample(int k, int n, SampleGenerator& random) const override;
   double receiverFactor(const Vec3& towardSender) const override;
+  /// Bounding box of the surface this element stands for.
+  virtual void bounds(Vec3& low, Vec3& high) const;
+  /// Whether every descendant has this element's normal, so irradiance from sources at
+  /// infinity gathered here holds for them as is (planar polygons; not terrain patches).
+  virtual bool childrenShareNormal() const { return true; }
 
   /// Area of a planar polygon and its unit normal (right-handed corner order);
   /// returns 0 area for degenerate input.
@@ -43,7 +48,7 @@ public:
   double PartialIrradiance = 0.0;
   double DeferredPartial = 0.0; ///< the part from links evaluated at this leaf (cached)
 
-private:
+protected:
   ElementStore* Store;
   Vec3 Corners[4];
   int Count;

@@ -39,10 +39,15 @@ struct ScenePolygon
   std::int64_t cell = 0;         ///< cell id in that data set
 };
 
-/// Everything the engine needs about the geometry.
+class TerrainGrid;
+
+/// Everything the engine needs about the geometry: polygons, and terrain grids that
+/// enter the hierarchy as terrain patches (owned by the caller, who keeps them alive
+/// while the solver exists).
 struct RadiosityScene
 {
   std::vector<Vec3> points;
   std::vector<ScenePolygon> polygons;
+  std::vector<const TerrainGrid*> terrains;
 };
 } // namespace terralux

@@ -7,6 +7,7 @@
 #include "polygon_element.h"
 #include "sky_hierarchy.h"
 #include "sky_patch_element.h"
+#include "terrain_patch.h"
 #include "visibility.h"
 
 #include <tbb/parallel_for.h>
@@ -39,7 +40,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
     throw Error("radiosity options: VisibilitySamples and MaximumIterations must be >= 1 and "
                 "ErrorTolerance > 0");
   }
-  std::vector<PolygonElement*> polygons;
+  std::vector<PolygonElement*>& polygons = this->TopSurfaces;
   this->Roots.assign(scene.polygons.size(), nullptr);
   for (std::size_t k = 0; k < scene.polygons.size(); ++k)
   {
@@ -64,9 +65,20 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
     polygons.push_back(element);
     this->SceneArea += area;
   }
+  for (std::size_t k = 0; k < scene.terrains.size(); ++k)
+  {
+    std::vector<TerrainPatch*> complete;
+    this->TerrainRoots.push_back(
+      TerrainPatch::buildTree(*this->Store, *scene.terrains[k], static_cast<int>(k), complete));
+    for (TerrainPatch* patch : complete)
+    {
+      polygons.push_back(patch);
+      this->SceneArea += patch->area();
+    }
+  }
   if (polygons.empty())
   {
-    throw Error("the scene has no polygon with a non-zero area");
+    throw Error("the scene has no polygon or terrain cell with a non-zero area");
   }
   this->Store->MinimumArea =
     options.minimumElementArea > 0.0 ? options.minimumElementArea : 1e-6 * this->SceneArea;
@@ -93,6 +105,15 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
 }
 
+OracleSettings HierarchicalRadiosity::oracleSettings() const
+{
+  OracleSettings oracle;
+  oracle.powerThreshold = this->Options.errorTolerance * this->Stats.referencePowerW;
+  oracle.sceneArea = this->SceneArea;
+  oracle.meanIrradiance = this->SceneArea > 0.0 ? this->Stats.referencePowerW / this->SceneArea : 0.0;
+  return oracle;
+}
+
 double HierarchicalRadiosity::referencePower() const
 {
   // Direct light on every polygon without occlusion, plus emission: the scale of the
@@ -105,10 +126,8 @@ double HierarchicalRadiosity::referencePower() const
     flux = this->Sun->emittance();
   }
   double total = 0.0;
-  for (const PolygonElement* polygon : this->Roots)
+  for (const PolygonElement* polygon : this->TopSurfaces)
   {
-    if (!polygon)
-      continue;
     double incident = 0.0;
     for (int band = 0; band < maxBands; ++band)
     {
@@ -128,9 +147,7 @@ double HierarchicalRadiosity::referencePower() const
 std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated)
 {
   std::size_t splits = 0;
-  OracleSettings oracle;
-  oracle.powerThreshold = this->Options.errorTolerance * this->Stats.referencePowerW;
-  oracle.sceneArea = this->SceneArea;
+  OracleSettings oracle = this->oracleSettings();
   std::vector<std::pair<HElement*, Link>> next;
   // New, not yet evaluated links from every child of `split` to / from `other`.
   auto addChildLinks = [&next](HElement* receiver, HElement* sender, bool splitReceiver) {
@@ -166,6 +183,12 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
         {
           for (HElement* member : receiver->children())
             addChildLinks(receiver, member, true);
+        }
+        else if (terrainLightsItself(*receiver, oracle) && !receiver->children().empty())
+        {
+          ++splits;
+          for (HElement* part : receiver->children())
+            addChildLinks(receiver, part, true);
         }
         continue;
       }
@@ -216,9 +239,9 @@ void HierarchicalRadiosity::gather()
     HElement& element = *all[k];
     element.Gathered = {};
     element.GatheredPartial = 0.0;
-    if (!element.isSurface())
+    if (!element.isSurface() || !static_cast<PolygonElement&>(element).childrenShareNormal())
     {
-      return;
+      return; // evaluated at the leaves during push instead
     }
     for (const Link& link : element.Incoming)
     {
@@ -278,9 +301,11 @@ void collectLeafTasks(HElement& element, const std::array<Spectrum, lightCategor
   std::vector<LeafTask>& tasks)
 {
   const std::size_t mark = deferred.size();
+  // Terrain patches pass nothing down as is: their children have normals of their own.
+  const bool shareNormal = element.isSurface() && static_cast<PolygonElement&>(element).childrenShareNormal();
   for (const Link& link : element.Incoming)
   {
-    if (element.isCluster() || lightCategoryOf(*link.sender) == ReflectedLight)
+    if (!shareNormal || lightCategoryOf(*link.sender) == ReflectedLight)
       deferred.push_back({ &link, &element });
   }
   if (element.isSurface())
@@ -548,9 +573,7 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     // Radiosity changed: links that now carry too much power are refined further;
     // the others stay where they are.
     start = std::chrono::steady_clock::now();
-    OracleSettings oracle;
-    oracle.powerThreshold = this->Options.errorTolerance * this->Stats.referencePowerW;
-    oracle.sceneArea = this->SceneArea;
+    const OracleSettings oracle = this->oracleSettings();
     pending.clear();
     const std::size_t count = this->Store->size(); // refinement appends elements
     for (std::size_t k = 0; k < count; ++k)

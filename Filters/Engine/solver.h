@@ -5,6 +5,7 @@
 // converges. Gather and ray casting run in parallel (TBB); element creation is
 // sequential, so results are identical for any thread count.
 
+#include "bf_oracle.h"
 #include "helement.h"
 #include "radiosity_types.h"
 
@@ -15,6 +16,7 @@ namespace terralux
 class Cluster;
 class PolygonElement;
 class SkyHierarchy;
+class TerrainPatch;
 class Visibility;
 
 struct RadiosityOptions
@@ -59,9 +61,9 @@ public:
 class HierarchicalRadiosity
 {
 public:
-  /// The scene's polygons become the leaves of the initial cluster hierarchy;
-  /// degenerate ones (zero area) are left out and counted. Throws Error when nothing
-  /// usable remains.
+  /// The scene's polygons, and each terrain's largest complete patches, become the
+  /// leaves of the initial cluster hierarchy; degenerate polygons (zero area) are left
+  /// out and counted. Throws Error when nothing usable remains.
   HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options);
   ~HierarchicalRadiosity();
 
@@ -76,6 +78,8 @@ public:
   std::size_t degeneratePolygons() const { return this->Degenerate; }
   /// Root element of each input polygon (null for degenerate ones).
   const std::vector<PolygonElement*>& polygonRoots() const { return this->Roots; }
+  /// Root of each terrain's patch tree (null for a terrain without a valid cell).
+  const std::vector<TerrainPatch*>& terrainRoots() const { return this->TerrainRoots; }
   /// Every element with its links, for the links output.
   const ElementStore& elements() const { return *this->Store; }
   const Cluster* root() const { return this->RootCluster; }
@@ -100,11 +104,14 @@ private:
   void gather();
   double pushPull();
   double referencePower() const;
+  OracleSettings oracleSettings() const;
 
   RadiosityOptions Options;
   std::unique_ptr<ElementStore> Store;
   std::unique_ptr<Visibility> Rays;
   std::vector<PolygonElement*> Roots;
+  std::vector<TerrainPatch*> TerrainRoots;
+  std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on
   Cluster* RootCluster = nullptr;
   HElement* Sun = nullptr;
   HElement* SkyRoot = nullptr;

@@ -1,6 +1,7 @@
 #include "visibility.h"
 
 #include "error.h"
+#include "terrain_grid.h"
 
 #include <embree3/rtcore.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace terralux
 {
@@ -37,16 +39,129 @@ Visibility::Visibility(const RadiosityScene& scene)
   // Watertight intersection: rays must not slip between triangles that share an edge.
   rtcSetSceneFlags(this->Scene, RTC_SCENE_FLAG_ROBUST);
 
-  // Vertices relative to the scene's centre keep float precision for large coordinates.
+  // Vertices relative to the scene's centre keep float precision for large coordinates;
+  // with terrains, the first one's origin, so its vertices are shared as they are.
   Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
   for (const Vec3& p : scene.points)
   {
     low = glm::min(low, p);
     high = glm::max(high, p);
   }
+  for (const TerrainGrid* terrain : scene.terrains)
+  {
+    const TerrainRangeSummary all = terrain->summarize(0, 0, terrain->cellsX(), terrain->cellsY());
+    if (all.validCells > 0)
+    {
+      low = glm::min(low, all.low);
+      high = glm::max(high, all.high);
+    }
+  }
   this->Offset = std::max(1e-9, 1e-5 * glm::length(high - low));
-  this->Centre = 0.5 * (low + high);
+  this->Centre = scene.terrains.empty() ? 0.5 * (low + high) : scene.terrains.front()->origin();
+  for (const TerrainGrid* terrain : scene.terrains)
+  {
+    this->addTerrain(*terrain);
+  }
+  if (!scene.polygons.empty())
+  {
+    this->addPolygons(scene);
+  }
+  rtcCommitScene(this->Scene);
+  if (rtcGetDeviceError(this->Device) != RTC_ERROR_NONE)
+  {
+    throw Error("Embree failed to build the visibility structure (out of memory?)");
+  }
+}
 
+void Visibility::addTerrain(const TerrainGrid& terrain)
+{
+  // Rectangles of valid cells, merged greedily: runs of valid cells in a row grow down
+  // the rows while the next row has the same run. Embree limits a grid to 32767 posts a side.
+  constexpr int largest = 32766;
+  struct Rectangle
+  {
+    int i0, j0, i1, j1;
+  };
+  std::vector<Rectangle> rectangles;
+  std::map<std::pair<int, int>, int> open; // run (i0, i1) -> first row
+  const int cx = terrain.cellsX(), cy = terrain.cellsY();
+  for (int j = 0; j <= cy; ++j)
+  {
+    std::map<std::pair<int, int>, int> next;
+    for (int i = 0; j < cy && i < cx;)
+    {
+      if (!terrain.cellValid(i, j))
+      {
+        ++i;
+        continue;
+      }
+      int end = i;
+      while (end < cx && end - i < largest && terrain.cellValid(end, j))
+        ++end;
+      const auto run = std::make_pair(i, end);
+      const auto it = open.find(run);
+      if (it != open.end() && j - it->second < largest)
+      {
+        next[run] = it->second;
+        open.erase(it);
+      }
+      else
+      {
+        next[run] = j;
+      }
+      i = end;
+    }
+    for (const auto& [run, first] : open) // runs that stop at this row
+      rectangles.push_back({ run.first, first, run.second, j });
+    open.swap(next);
+  }
+  if (rectangles.empty())
+  {
+    return;
+  }
+  RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_GRID);
+  const std::size_t posts = static_cast<std::size_t>(terrain.postsX()) * terrain.postsY();
+  if (terrain.origin() == this->Centre)
+  {
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, terrain.vertices(), 0,
+      3 * sizeof(float), posts);
+  }
+  else
+  {
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), posts));
+    if (!vertices)
+    {
+      rtcReleaseGeometry(geometry);
+      throw Error("Embree could not allocate a terrain's vertices (out of memory?)");
+    }
+    const Vec3 shift = terrain.origin() - this->Centre;
+    for (std::size_t k = 0; k < posts; ++k)
+      for (int c = 0; c < 3; ++c)
+        vertices[3 * k + c] = static_cast<float>(terrain.vertices()[3 * k + c] + shift[c]);
+  }
+  auto* grids = static_cast<RTCGrid*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_GRID, 0, RTC_FORMAT_GRID, sizeof(RTCGrid), rectangles.size()));
+  if (!grids)
+  {
+    rtcReleaseGeometry(geometry);
+    throw Error("Embree could not allocate a terrain's grids (out of memory?)");
+  }
+  for (std::size_t k = 0; k < rectangles.size(); ++k)
+  {
+    const Rectangle& r = rectangles[k];
+    grids[k].startVertexID = static_cast<unsigned>(r.j0 * static_cast<std::size_t>(terrain.postsX()) + r.i0);
+    grids[k].stride = static_cast<unsigned>(terrain.postsX());
+    grids[k].width = static_cast<unsigned short>(r.i1 - r.i0 + 1);
+    grids[k].height = static_cast<unsigned short>(r.j1 - r.j0 + 1);
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(this->Scene, geometry);
+  rtcReleaseGeometry(geometry);
+}
+
+void Visibility::addPolygons(const RadiosityScene& scene)
+{
   std::size_t triangleCount = 0;
   for (const ScenePolygon& polygon : scene.polygons)
   {
@@ -82,11 +197,6 @@ Visibility::Visibility(const RadiosityScene& scene)
   rtcCommitGeometry(geometry);
   rtcAttachGeometry(this->Scene, geometry);
   rtcReleaseGeometry(geometry);
-  rtcCommitScene(this->Scene);
-  if (rtcGetDeviceError(this->Device) != RTC_ERROR_NONE)
-  {
-    throw Error("Embree failed to build the visibility structure");
-  }
 }
 
 Visibility::~Visibility()

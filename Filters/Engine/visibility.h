@@ -13,11 +13,15 @@ struct RTCSceneTy;
 
 namespace terralux
 {
+class TerrainGrid;
+
 class Visibility
 {
 public:
-  /// Builds the Embree scene of every polygon (quads as two triangles). Throws Error
-  /// when Embree fails.
+  /// Builds the Embree scene of every polygon (quads as two triangles) and of every
+  /// terrain grid (Embree grid geometry over its valid cells, sharing the grid's own
+  /// vertices: no triangle mesh of the terrain is ever made). Throws Error when Embree
+  /// fails.
   explicit Visibility(const RadiosityScene& scene);
   ~Visibility();
   Visibility(const Visibility&) = delete;
@@ -36,6 +40,9 @@ public:
   std::uint64_t raysCast() const;
 
 private:
+  void addTerrain(const TerrainGrid& terrain);
+  void addPolygons(const RadiosityScene& scene);
+
   RTCDeviceTy* Device = nullptr;
   RTCSceneTy* Scene = nullptr;
   double Offset = 1e-6;

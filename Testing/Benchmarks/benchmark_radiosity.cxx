@@ -4,7 +4,9 @@
 // RMS error and the 95th percentile of the absolute relative error.
 //   benchmark_radiosity DEM TOLERANCE SAMPLES [--write REF | --compare REF]
 // With TERRALUX_BENCH_AVERAGED=1 in the environment, point values are averaged over
-// elements (EvaluateAtPoints off) instead of evaluated at the points.
+// elements (EvaluateAtPoints off) instead of evaluated at the points; with
+// TERRALUX_BENCH_TRIANGLES=1 the terrain enters as two triangles per cell
+// (UseTerrainHierarchy off) instead of as terrain patches.
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkHierarchicalRadiosity.h"
@@ -49,6 +51,7 @@ int main(int argc, char* argv[])
   radiosity->SetErrorTolerance(std::atof(argv[2]));
   radiosity->SetVisibilitySamples(std::atoi(argv[3]));
   radiosity->SetEvaluateAtPoints(std::getenv("TERRALUX_BENCH_AVERAGED") == nullptr);
+  radiosity->SetUseTerrainHierarchy(std::getenv("TERRALUX_BENCH_TRIANGLES") == nullptr);
   terrain->Update();
   sky->Update();
 

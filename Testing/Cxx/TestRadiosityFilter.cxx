@@ -226,7 +226,7 @@ TEST(RadiosityFilter, BadInput)
 
   vtkNew<vtkPolyData> empty;
   radiosity->SetInputData(empty);
-  expectError(radiosity, "no polygon with a non-zero area");
+  expectError(radiosity, "non-zero area");
 
   auto nan = plane(1);
   nan->GetPoints()->SetPoint(2, NAN, 0, 0);

@@ -71,11 +71,15 @@ class OlindaRadiosity(unittest.TestCase):
 
     def test_statistics_and_other_outputs(self):
         output = self.radiosity.GetOutput()
-        self.assertGreater(field(output, "Elements"), 24000)
+        # Terrain patches: far fewer elements than the 24,200 triangles of the grid.
+        self.assertGreater(field(output, "Elements"), 10)
+        self.assertLess(field(output, "Elements"), 24200)
         self.assertGreater(field(output, "Rays"), 0)
         self.assertGreaterEqual(field(output, "Iterations"), 1)
         leaves = self.radiosity.GetLeafMeshOutput()
-        self.assertGreaterEqual(leaves.GetNumberOfCells(), 110 * 110 * 2)
+        self.assertGreater(leaves.GetNumberOfCells(), 10)
+        self.assertEqual(leaves.GetPointData().GetArray("Irradiance").GetNumberOfTuples(),
+                         leaves.GetNumberOfPoints())
         links = self.radiosity.GetLinksOutput()
         self.assertEqual(links.GetNumberOfCells(), field(output, "Links"))
         writer = vtkXMLPolyDataWriter()

@@ -1,0 +1,187 @@
+#include "terrain_grid.h"
+
+#include "error.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace terralux
+{
+TerrainGrid::TerrainGrid(int nx, int ny, const Vec3& origin)
+  : Nx(nx)
+  , Ny(ny)
+  , Origin(origin)
+{
+  if (nx < 2 || ny < 2)
+  {
+    throw Error("a terrain grid needs at least 2 x 2 posts");
+  }
+  // 4 floats of padding: Embree reads vertices with 16-byte loads.
+  this->Xyz.assign(3 * static_cast<std::size_t>(nx) * ny + 4, 0.0f);
+  this->Valid.assign(static_cast<std::size_t>(nx - 1) * (ny - 1), 1);
+}
+
+void TerrainGrid::setPost(int i, int j, const Vec3& position)
+{
+  float* p = &this->Xyz[3 * this->postIndex(i, j)];
+  for (int c = 0; c < 3; ++c)
+    p[c] = static_cast<float>(position[c] - this->Origin[c]);
+}
+
+Vec3 TerrainGrid::post(int i, int j) const
+{
+  const float* p = &this->Xyz[3 * this->postIndex(i, j)];
+  return this->Origin + Vec3(p[0], p[1], p[2]);
+}
+
+void TerrainGrid::setUniformMaterial(const Spectrum& reflectance, const Spectrum& emission)
+{
+  this->UniformReflectance = reflectance;
+  this->UniformEmission = emission;
+}
+
+void TerrainGrid::setCellMaterial(int i, int j, const Spectrum& reflectance, const Spectrum& emission)
+{
+  if (this->CellReflectance.empty())
+  {
+    this->CellReflectance.assign(this->Valid.size(), this->UniformReflectance);
+    this->CellEmission.assign(this->Valid.size(), this->UniformEmission);
+  }
+  this->CellReflectance[this->cellIndex(i, j)] = reflectance;
+  this->CellEmission[this->cellIndex(i, j)] = emission;
+}
+
+Spectrum TerrainGrid::cellReflectance(int i, int j) const
+{
+  return this->CellReflectance.empty() ? this->UniformReflectance : this->CellReflectance[this->cellIndex(i, j)];
+}
+
+Spectrum TerrainGrid::cellEmission(int i, int j) const
+{
+  return this->CellEmission.empty() ? this->UniformEmission : this->CellEmission[this->cellIndex(i, j)];
+}
+
+TerrainPoint TerrainGrid::surfacePoint(double u, double v) const
+{
+  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, this->Nx - 2);
+  const int j = std::clamp(static_cast<int>(std::floor(v)), 0, this->Ny - 2);
+  const double s = std::clamp(u - i, 0.0, 1.0), t = std::clamp(v - j, 0.0, 1.0);
+  const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1);
+  const Vec3 p11 = this->post(i + 1, j + 1);
+  const bool lower = s + t <= 1.0;
+  const Vec3 n = lower ? glm::cross(p10 - p00, p01 - p00) : glm::cross(p01 - p11, p10 - p11);
+  const double length = glm::length(n);
+  const Vec3 normal = length > 0.0 ? n / length : Vec3(0.0, 0.0, 1.0);
+  if ((s == 0.0 || s == 1.0) && (t == 0.0 || t == 1.0))
+  {
+    return { s == 0.0 ? (t == 0.0 ? p00 : p01) : (t == 0.0 ? p10 : p11), normal }; // a post, exactly
+  }
+  if (lower)
+  {
+    return { p00 + s * (p10 - p00) + t * (p01 - p00), normal };
+  }
+  return { p11 + (1.0 - s) * (p01 - p11) + (1.0 - t) * (p10 - p11), normal };
+}
+
+Vec3 TerrainGrid::cellAreaVector(int i, int j) const
+{
+  const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1),
+             p11 = this->post(i + 1, j + 1);
+  return 0.5 * (glm::cross(p10 - p00, p01 - p00) + glm::cross(p01 - p11, p10 - p11));
+}
+
+TerrainRangeSummary TerrainGrid::summarize(int i0, int j0, int i1, int j1) const
+{
+  TerrainRangeSummary empty;
+  empty.low = Vec3(std::numeric_limits<double>::max());
+  empty.high = Vec3(-std::numeric_limits<double>::max());
+  auto add = [this](const tbb::blocked_range2d<int>& r, TerrainRangeSummary sum) {
+    for (int j = r.rows().begin(); j < r.rows().end(); ++j)
+      for (int i = r.cols().begin(); i < r.cols().end(); ++i)
+      {
+        ++sum.cells;
+        if (!this->cellValid(i, j))
+          continue;
+        const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1),
+                   p11 = this->post(i + 1, j + 1);
+        const Vec3 a = 0.5 * glm::cross(p10 - p00, p01 - p00), b = 0.5 * glm::cross(p01 - p11, p10 - p11);
+        const double area = glm::length(a) + glm::length(b);
+        sum.area += area;
+        sum.areaVector += a + b;
+        sum.low = glm::min(glm::min(sum.low, glm::min(p00, p10)), glm::min(p01, p11));
+        sum.high = glm::max(glm::max(sum.high, glm::max(p00, p10)), glm::max(p01, p11));
+        ++sum.validCells;
+        const Spectrum rho = this->cellReflectance(i, j), e = this->cellEmission(i, j);
+        for (int band = 0; band < maxBands; ++band)
+        {
+          sum.reflectance[band] += area * rho[band];
+          sum.emission[band] += area * e[band];
+        }
+      }
+    return sum;
+  };
+  auto join = [](TerrainRangeSummary a, const TerrainRangeSummary& b) {
+    a.area += b.area;
+    a.areaVector += b.areaVector;
+    a.low = glm::min(a.low, b.low);
+    a.high = glm::max(a.high, b.high);
+    a.validCells += b.validCells;
+    a.cells += b.cells;
+    for (int band = 0; band < maxBands; ++band)
+    {
+      a.reflectance[band] += b.reflectance[band];
+      a.emission[band] += b.emission[band];
+    }
+    return a;
+  };
+  const tbb::blocked_range2d<int> range(j0, j1, 64, i0, i1, 64);
+  TerrainRangeSummary sum = static_cast<std::size_t>(i1 - i0) * (j1 - j0) > 16384
+    ? tbb::parallel_reduce(range, empty, add, join)
+    : add(range, empty);
+  if (sum.area > 0.0)
+  {
+    for (int band = 0; band < maxBands; ++band)
+    {
+      sum.reflectance[band] /= sum.area;
+      sum.emission[band] /= sum.area;
+    }
+  }
+  return sum;
+}
+
+Vec3 TerrainGrid::postNormal(int i, int j) const
+{
+  // The triangles that have the post as a corner (six with this diagonal), as a
+  // triangle mesh's vertex normal: the cell to the upper right contributes its lower
+  // triangle, the lower-left one its upper triangle, the other two both.
+  Vec3 sum(0.0);
+  for (int cj = std::max(0, j - 1); cj <= std::min(j, this->Ny - 2); ++cj)
+    for (int ci = std::max(0, i - 1); ci <= std::min(i, this->Nx - 2); ++ci)
+    {
+      if (!this->cellValid(ci, cj))
+        continue;
+      const Vec3 p00 = this->post(ci, cj), p10 = this->post(ci + 1, cj), p01 = this->post(ci, cj + 1),
+                 p11 = this->post(ci + 1, cj + 1);
+      const bool lowerLeft = ci == i && cj == j, upperRight = ci < i && cj < j;
+      if (!upperRight)
+        sum += glm::cross(p10 - p00, p01 - p00);
+      if (!lowerLeft)
+        sum += glm::cross(p01 - p11, p10 - p11);
+    }
+  const double length = glm::length(sum);
+  return length > 0.0 ? sum / length : Vec3(0.0, 0.0, 1.0);
+}
+
+bool TerrainGrid::postUsed(int i, int j) const
+{
+  for (int cj = std::max(0, j - 1); cj <= std::min(j, this->Ny - 2); ++cj)
+    for (int ci = std::max(0, i - 1); ci <= std::min(i, this->Nx - 2); ++ci)
+      if (this->cellValid(ci, cj))
+        return true;
+  return false;
+}
+} // namespace terralux

@@ -1,0 +1,85 @@
+#pragma once
+// A terrain as the engine sees it (paper section 4): a regular grid of nx x ny posts
+// in 3-D with cells that may be missing (no data). Between posts the surface is two
+// triangles per cell, split along the (i+1, j)-(i, j+1) diagonal as Embree's grid
+// geometry splits its quads, so points sampled here lie exactly on what rays hit.
+// Parameters (u, v) are continuous post coordinates: u in [0, nx-1], v in [0, ny-1].
+
+#include "radiosity_types.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace terralux
+{
+/// What a parameter range of the grid holds, summed over its whole cells.
+struct TerrainRangeSummary
+{
+  double area = 0.0;          ///< true surface area of the valid cells, m^2
+  Vec3 areaVector{ 0.0 };     ///< sum of area x unit normal over the triangles
+  Vec3 low{ 0.0 }, high{ 0.0 }; ///< bounding box of the valid cells' posts
+  std::size_t validCells = 0;
+  std::size_t cells = 0;
+  Spectrum reflectance{};     ///< area-weighted mean
+  Spectrum emission{};        ///< area-weighted mean
+};
+
+/// A point on the terrain surface with the normal of the triangle it lies on.
+struct TerrainPoint
+{
+  Vec3 position;
+  Vec3 normal;
+};
+
+class TerrainGrid
+{
+public:
+  /// Posts are set afterwards with setPost (from any thread, each post once); every
+  /// cell starts valid. `origin`: positions are stored as floats relative to it.
+  TerrainGrid(int nx, int ny, const Vec3& origin);
+
+  int postsX() const { return this->Nx; }
+  int postsY() const { return this->Ny; }
+  int cellsX() const { return this->Nx - 1; }
+  int cellsY() const { return this->Ny - 1; }
+  const Vec3& origin() const { return this->Origin; }
+
+  void setPost(int i, int j, const Vec3& position);
+  Vec3 post(int i, int j) const;
+  void setCellValid(int i, int j, bool valid) { this->Valid[this->cellIndex(i, j)] = valid; }
+  bool cellValid(int i, int j) const { return this->Valid[this->cellIndex(i, j)] != 0; }
+  /// Per-cell materials (optional; a uniform value otherwise).
+  void setUniformMaterial(const Spectrum& reflectance, const Spectrum& emission);
+  void setCellMaterial(int i, int j, const Spectrum& reflectance, const Spectrum& emission);
+  Spectrum cellReflectance(int i, int j) const;
+  Spectrum cellEmission(int i, int j) const;
+
+  /// The surface at parameter (u, v) inside a valid cell (clamped to the grid).
+  TerrainPoint surfacePoint(double u, double v) const;
+  /// Area vector (area x unit normal) of cell (i, j): both triangles.
+  Vec3 cellAreaVector(int i, int j) const;
+  /// Sum over the whole cells of [i0, i1) x [j0, j1) (parallel for large ranges).
+  TerrainRangeSummary summarize(int i0, int j0, int i1, int j1) const;
+  /// Area-weighted unit normal of the valid triangles around post (i, j) (+z if none).
+  Vec3 postNormal(int i, int j) const;
+  /// True when post (i, j) is a corner of a valid cell.
+  bool postUsed(int i, int j) const;
+
+  /// Float xyz relative to origin(), nx*ny posts row by row (i fastest), padded for
+  /// Embree's 16-byte loads: share it with the ray tracer instead of copying.
+  const float* vertices() const { return this->Xyz.data(); }
+
+private:
+  std::size_t cellIndex(int i, int j) const { return static_cast<std::size_t>(j) * (this->Nx - 1) + i; }
+  std::size_t postIndex(int i, int j) const { return static_cast<std::size_t>(j) * this->Nx + i; }
+
+  int Nx, Ny;
+  Vec3 Origin;
+  std::vector<float> Xyz;
+  std::vector<std::uint8_t> Valid;
+  Spectrum UniformReflectance{};
+  Spectrum UniformEmission{};
+  std::vector<Spectrum> CellReflectance; // empty: uniform
+  std::vector<Spectrum> CellEmission;
+};
+} // namespace terralux

@@ -1,0 +1,74 @@
+#pragma once
+// Terrain patch H-element (paper section 4.2): a parameter range of a TerrainGrid,
+// approximated for form factors by the quad of its four corner posts but with the true
+// area, mean normal and bounds of the cells it covers. Splitting uses finer posts
+// (halving the range at a post); below one cell it goes on as a regular quadtree in
+// parameter space with corners on the cell's triangles. Samples, and so visibility,
+// always lie on the full-resolution surface, never on the coarse quad.
+//
+// Ranges holding missing cells are structural only: they split at construction until
+// each part is complete or empty, and never take part in the solution.
+
+#include "polygon_element.h"
+#include "terrain_grid.h"
+
+namespace terralux
+{
+/// A rectangle of the grid's parameter space, in post units.
+struct ParameterRange
+{
+  double u0 = 0.0, v0 = 0.0, u1 = 0.0, v1 = 0.0;
+  double width() const { return this->u1 - this->u0; }
+  double height() const { return this->v1 - this->v0; }
+  bool contains(double u, double v) const { return u >= this->u0 && u <= this->u1 && v >= this->v0 && v <= this->v1; }
+};
+
+class TerrainPatch : public PolygonElement
+{
+public:
+  /// The tree over a grid: its root (null when no cell is valid) and, in `complete`,
+  /// the largest patches without missing cells, which are what the solver works on.
+  static TerrainPatch* buildTree(ElementStore& store, const TerrainGrid& grid, int terrainIndex,
+    std::vector<TerrainPatch*>& complete);
+
+  TerrainPatch(std::uint64_t id, int level, ElementStore* store, const TerrainGrid* grid,
+    const ParameterRange& range, const TerrainRangeSummary& summary, TerrainPatch* up, int terrainIndex);
+
+  const ParameterRange& range() const { return this->Range; }
+  /// The patch whose range holds this one (null for the root of the grid).
+  TerrainPatch* up() const { return this->Up; }
+  /// Children that exist now, without creating any.
+  const std::vector<HElement*>& existingChildren() const { return this->Children; }
+  /// False for structural patches that hold missing cells.
+  bool complete() const { return this->Complete; }
+  int terrain() const { return this->TerrainIndex; }
+  const TerrainGrid& grid() const { return *this->Grid; }
+
+  const std::vector<HElement*>& children() override;
+  bool canSplit() const override;
+  SurfaceSample sample(int k, int n, SampleGenerator& random) const override;
+  void bounds(Vec3& low, Vec3& high) const override;
+  bool childrenShareNormal() const override { return false; }
+
+  /// Area not aligned with the mean normal, A - |sum A_i n_i|: 0 for a flat patch. It
+  /// bounds both how much the patch lights itself and how far its parts' cosines
+  /// toward a source differ from the mean one.
+  double unalignedArea() const { return this->UnalignedArea; }
+
+  /// The child ranges of a range: halved at a post along each side longer than one cell;
+  /// a single cell or less is halved along both sides.
+  static std::vector<ParameterRange> splitRange(const ParameterRange& range);
+
+private:
+  static TerrainPatch* buildNode(ElementStore& store, const TerrainGrid& grid, int terrainIndex,
+    const ParameterRange& range, TerrainPatch* up, int level, std::vector<TerrainPatch*>& complete);
+
+  const TerrainGrid* Grid;
+  ParameterRange Range;
+  TerrainPatch* Up;
+  int TerrainIndex;
+  bool Complete = true;
+  double UnalignedArea = 0.0;
+  Vec3 Low{ 0.0 }, High{ 0.0 };
+};
+} // namespace terralux
