@@ -208,23 +208,40 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
     }
     else
     {
+      // Sky and reflected light vary slowly: interpolated from the continuous leaf mesh.
+      // Direct sun does not, and costs one ray: taken at each post with its own normal.
       const terralux::TerrainLeafMesh mesh(*root);
       const std::vector<double> vertexValues = mesh.vertexValues(flatLeafValues(mesh), valueComponents);
-      double flat[valueComponents];
-      for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
-      {
-        const terralux::ParameterRange& r = mesh.leaves()[k]->range();
-        for (int j = static_cast<int>(std::ceil(r.v0)); j <= static_cast<int>(std::floor(r.v1)); ++j)
-          for (int i = static_cast<int>(std::ceil(r.u0)); i <= static_cast<int>(std::floor(r.u1)); ++i)
-          {
-            mesh.interpolate(k, vertexValues, valueComponents, i, j, flat);
-            Values v{};
-            for (int q = 0; q < quantities; ++q)
+      vtkSMPTools::For(0, static_cast<vtkIdType>(mesh.leaves().size()), [&](vtkIdType first, vtkIdType last) {
+        double flat[valueComponents];
+        for (vtkIdType k = first; k < last; ++k)
+        {
+          const terralux::TerrainPatch& leaf = *mesh.leaves()[k];
+          const terralux::ParameterRange& r = leaf.range();
+          // A post on the range's border is written by the leaf that leafHolding finds
+          // for it, so each post is written once (values agree anyway: the mesh is
+          // continuous).
+          for (int j = static_cast<int>(std::ceil(r.v0)); j <= static_cast<int>(std::floor(r.v1)); ++j)
+            for (int i = static_cast<int>(std::ceil(r.u0)); i <= static_cast<int>(std::floor(r.u1)); ++i)
+            {
+              const bool border = i == r.u0 || i == r.u1 || j == r.v0 || j == r.v1;
+              if (!grid.postUsed(i, j) || (border && leafHolding(*root, i, j) != &leaf))
+                continue;
+              mesh.interpolate(static_cast<std::size_t>(k), vertexValues, valueComponents, i, j, flat);
+              Values v{};
+              for (int q = 0; q < quantities; ++q)
+                for (int band = 0; band < terralux::maxBands; ++band)
+                  v[q][band] = flat[q * terralux::maxBands + band];
+              v[1] = solver.directSunAt(grid.post(i, j), grid.postNormal(i, j));
               for (int band = 0; band < terralux::maxBands; ++band)
-                v[q][band] = flat[q * terralux::maxBands + band];
-            put(i + static_cast<vtkIdType>(j) * nx, v);
-          }
-      }
+              {
+                v[0][band] = v[1][band] + v[2][band] + v[3][band];
+                v[4][band] = leaf.emission()[band] + leaf.reflectance()[band] * v[0][band];
+              }
+              put(i + static_cast<vtkIdType>(j) * nx, v);
+            }
+        }
+      });
     }
   }
   for (const auto& array : arrays)

@@ -481,6 +481,18 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   return result;
 }
 
+Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal) const
+{
+  Spectrum result{};
+  if (!this->Sun)
+    return result;
+  const double transport = transportToPoint(point, normal, *this->Sun, *this->Rays, 1, 0);
+  const Spectrum flux = this->Sun->emittance();
+  for (int band = 0; band < maxBands; ++band)
+    result[band] = transport * flux[band];
+  return result;
+}
+
 void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,
   const std::vector<Vec3>& points, const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const
 {

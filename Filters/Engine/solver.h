@@ -93,6 +93,9 @@ public:
   /// The same with another unit normal at the point (e.g. a terrain post's, averaged over
   /// the cells around it), still through the links that reach `leaf`.
   PointIrradiance irradianceAt(const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const;
+  /// Direct sunlight at a point with a unit normal: normal irradiance x cosine, 0 where
+  /// the point is shadowed (one ray); zero without a sun.
+  Spectrum directSunAt(const Vec3& point, const Vec3& normal) const;
   /// Many points at once, in parallel.
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
     const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const;
