@@ -1,0 +1,31 @@
+#pragma once
+// Terrain grids for engine tests, built in code: planes, hills, steps, holes.
+
+#include "terrain_grid.h"
+
+#include <functional>
+#include <memory>
+
+namespace terralux_test
+{
+/// nx x ny posts at `spacing` metres, post (i, j) at (x(i), y(j), height(x, y)); cells
+/// for which `valid` is false are missing.
+inline std::unique_ptr<terralux::TerrainGrid> makeGrid(int nx, int ny, double spacing,
+  const std::function<double(double, double)>& height,
+  const std::function<bool(int, int)>& valid = [](int, int) { return true; },
+  const std::function<double(int)>& xOf = nullptr)
+{
+  auto grid = std::make_unique<terralux::TerrainGrid>(nx, ny, terralux::Vec3(0.5 * spacing * (nx - 1), 0.5 * spacing * (ny - 1), 0.0));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+    {
+      const double x = xOf ? xOf(i) : spacing * i, y = spacing * j;
+      grid->setPost(i, j, terralux::Vec3(x, y, height(x, y)));
+    }
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i)
+      grid->setCellValid(i, j, valid(i, j));
+  grid->setUniformMaterial(terralux::uniformSpectrum(0.2), terralux::uniformSpectrum(0.0));
+  return grid;
+}
+} // namespace terralux_test
