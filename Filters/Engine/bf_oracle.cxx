@@ -28,11 +28,28 @@ double relativeSize(const HElement& element, double sceneArea)
 }
 } // namespace
 
-// Bounding radius of the cluster(s) of a link over the distance between centres.
-double clusterSizeOverDistance(const HElement& receiver, const HElement& sender)
+// Whether the element's kernels come from a far-field model: clusters, and terrain
+// patches too large for exact form factors (their coarse quad can be far from the
+// surface near them).
+bool approximated(const HElement& e)
+{
+  if (e.isCluster())
+    return true;
+  const auto* patch = dynamic_cast<const TerrainPatch*>(&e);
+  return patch && !patch->exactFormFactors();
+}
+
+// Bounding radius of the approximated element(s) of a link over the distance between centres.
+double approximatedSizeOverDistance(const HElement& receiver, const HElement& sender)
 {
   auto radius = [](const HElement& e) {
-    return e.isCluster() ? 0.5 * glm::length(static_cast<const Cluster&>(e).high() - static_cast<const Cluster&>(e).low()) : 0.0;
+    if (!approximated(e))
+      return 0.0;
+    if (e.isCluster())
+      return 0.5 * glm::length(static_cast<const Cluster&>(e).high() - static_cast<const Cluster&>(e).low());
+    Vec3 low, high;
+    static_cast<const TerrainPatch&>(e).bounds(low, high);
+    return 0.5 * glm::length(high - low);
   };
   const double distance = glm::length(sender.centre() - receiver.centre());
   const double size = std::max(radius(receiver), radius(sender));
@@ -72,11 +89,11 @@ Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSe
   // value for the whole element (the bounds-based refinement the paper cites [10, 5]).
   const Spectrum e = link.sender->emittance();
   const double variation = std::max({ e[0], e[1], e[2] }) * link.kernelSpread * link.visibility * receiver.area();
-  // Cluster kernels are far-field estimates: near the other element they are refined
-  // while they carry any noticeable power.
-  const bool nearCluster = (receiver.isCluster() || link.sender->isCluster()) &&
-    clusterSizeOverDistance(receiver, *link.sender) > 0.25 && power > 0.01 * settings.powerThreshold;
-  const bool refine = nearCluster || power > settings.powerThreshold ||
+  // Cluster kernels and coarse terrain quads are far-field estimates: near the other
+  // element they are refined while they carry any noticeable power.
+  const bool nearApproximation = !link.sender->isExternal() && (approximated(receiver) || approximated(*link.sender)) &&
+    approximatedSizeOverDistance(receiver, *link.sender) > 0.25 && power > 0.01 * settings.powerThreshold;
+  const bool refine = nearApproximation || power > settings.powerThreshold ||
     variation > settings.powerThreshold * settings.partialVisibilityFactor ||
     (partial && power > settings.partialVisibilityFactor * settings.powerThreshold);
   if (!refine)

@@ -21,6 +21,21 @@ constexpr double pi = 3.14159265358979323846;
 // form factors rather than through the cluster model.
 constexpr std::size_t exactClusterSurfaces = 8;
 
+// A direction from `directionOf` above the surface with unit normal n: a sky patch
+// straddling the surface's horizon is sampled where the surface sees it (its kernel
+// counts only that part). False when a few draws all fall below.
+template <typename DirectionOf>
+bool directionAbove(const Vec3& n, DirectionOf& directionOf, int k, Vec3& d)
+{
+  for (int attempt = 0; attempt < 8; ++attempt)
+  {
+    d = directionOf(k);
+    if (glm::dot(n, d) > 0.0)
+      return true;
+  }
+  return false;
+}
+
 // Fraction of receiver samples that see a direction at infinity; samples on surfaces
 // facing away do not count (their cosine is zero anyway).
 template <typename DirectionOf>
@@ -31,8 +46,8 @@ double visibilityToward(HElement& receiver, const Visibility& visibility, int sa
   for (int k = 0; k < samples; ++k)
   {
     const SurfaceSample s = receiver.sample(k, samples, random);
-    const Vec3 d = directionOf(k);
-    if (glm::dot(s.normal, d) <= 0.0)
+    Vec3 d;
+    if (!directionAbove(s.normal, directionOf, k, d))
     {
       continue;
     }
@@ -96,6 +111,43 @@ double clusterKernel(const HElement& sender, const Vec3& towardSender, double di
 }
 } // namespace
 
+namespace
+{
+// A terrain patch too large for exact form factors with a point within twice its
+// bounding radius of its centre: there its coarse quad may pass far from the surface
+// around the point (a point on the patch's border can even lie under the quad).
+bool nearCoarseTerrain(const Vec3& point, const HElement& sender)
+{
+  const auto* patch = dynamic_cast<const TerrainPatch*>(&sender);
+  if (!patch || patch->exactFormFactors())
+    return false;
+  Vec3 low, high;
+  patch->bounds(low, high);
+  return glm::length(point - patch->centre()) < glm::length(high - low);
+}
+
+// Form factor x visibility from a point to a terrain patch's true surface, by its own
+// samples: each carries area A / N, seen like a disc of that area (Wallace et al.
+// 1989), which stays bounded as the point nears the surface.
+double sampledFormFactor(const Vec3& point, const Vec3& n, const TerrainPatch& sender, const Visibility& visibility,
+  int samples, SampleGenerator& random)
+{
+  const double share = sender.area() / samples;
+  double sum = 0.0;
+  for (int k = 0; k < samples; ++k)
+  {
+    const SurfaceSample y = sender.sample(k, samples, random);
+    const Vec3 d = y.position - point;
+    const double r2 = glm::dot(d, d);
+    const double cx = glm::dot(n, d), cy = -glm::dot(y.normal, d);
+    if (!(cx > 0.0 && cy > 0.0) || visibility.occluded(point, n, y.position, y.normal))
+      continue;
+    sum += (cx * cy / r2) / (pi * r2 + share);
+  }
+  return sum * share;
+}
+} // namespace
+
 double surfaceKernel(const PolygonElement& receiver, const HElement& sender, double* spread)
 {
   if (!sender.isSurface())
@@ -127,7 +179,7 @@ double surfaceKernel(const PolygonElement& receiver, const HElement& sender, dou
   for (const Vec3& x : receiverPoints(receiver))
   {
     const double f =
-      pointToPolygonFormFactor(x, receiver.normal(), polygon.corners(), polygon.cornerCount(), polygon.normal());
+      polygon.formFactorFrom(x, receiver.normal());
     low = std::min(low, f);
     high = std::max(high, f);
     sum += f;
@@ -189,14 +241,14 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
 {
   SampleGenerator random(seed);
   const Vec3& n = normal;
-  auto seen = [&](const std::function<Vec3(int)>& directionOf) {
+  auto seen = [&](std::function<Vec3(int)> directionOf) {
     if (samples == 0)
       return 1.0; // the caller knows the sender is unoccluded
     int counted = 0, visible = 0;
     for (int k = 0; k < samples; ++k)
     {
-      const Vec3 d = directionOf(k);
-      if (glm::dot(n, d) <= 0.0)
+      Vec3 d;
+      if (!directionAbove(n, directionOf, k, d))
         continue;
       ++counted;
       visible += !visibility.occludedToward(point, n, d);
@@ -221,9 +273,13 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
     }
     default:
     {
+      if (samples > 0 && nearCoarseTerrain(point, sender))
+      {
+        return sampledFormFactor(point, n, static_cast<const TerrainPatch&>(sender), visibility, samples, random);
+      }
       double kernel = 0.0;
       auto formFactor = [&](const PolygonElement& polygon) {
-        return pointToPolygonFormFactor(point, n, polygon.corners(), polygon.cornerCount(), polygon.normal());
+        return polygon.formFactorFrom(point, n);
       };
       if (sender.isSurface())
       {
@@ -321,8 +377,7 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
   {
     // Cluster receiver: the form factor onto a surface facing the sender.
     auto& polygon = static_cast<PolygonElement&>(sender);
-    link.kernel = pointToPolygonFormFactor(
-      receiver.centre(), link.direction, polygon.corners(), polygon.cornerCount(), polygon.normal());
+    link.kernel = polygon.formFactorFrom(receiver.centre(), link.direction);
   }
   else
   {

@@ -1,5 +1,7 @@
 #include "polygon_element.h"
 
+#include "point_form_factor.h"
+
 #include <algorithm>
 
 namespace terralux
@@ -97,6 +99,11 @@ SurfaceSample PolygonElement::sample(int k, int n, SampleGenerator& random) cons
     p = (1 - s) * (1 - t) * c[0] + s * (1 - t) * c[1] + s * t * c[2] + (1 - s) * t * c[3];
   }
   return { p, this->Normal };
+}
+
+double PolygonElement::formFactorFrom(const Vec3& x, const Vec3& n) const
+{
+  return pointToPolygonFormFactor(x, n, this->Corners, this->Count, this->Normal);
 }
 
 void PolygonElement::bounds(Vec3& low, Vec3& high) const

@@ -28,6 +28,9 @@ public:
   bool hasChildren() const { return !this->Children.empty(); }
   SurfaceSample sample(int k, int n, SampleGenerator& random) const override;
   double receiverFactor(const Vec3& towardSender) const override;
+  /// Form factor from a differential area at x with unit normal n to this surface
+  /// (exact, without occlusion).
+  virtual double formFactorFrom(const Vec3& x, const Vec3& n) const;
   /// Bounding box of the surface this element stands for.
   virtual void bounds(Vec3& low, Vec3& high) const;
   /// Whether every descendant has this element's normal, so irradiance from sources at

@@ -194,7 +194,17 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
       }
       if (!(link.kernel > 0.0))
       {
-        continue; // carries nothing, now or later
+        // Carries nothing, now or later; but a rough terrain patch facing away from a
+        // sky patch on average may hold slopes facing it: split while those could matter.
+        Link rough = link;
+        rough.kernel = link.kernelSpread;
+        rough.visibility = 1.0;
+        if (receiver->canSplit() && linkPower(*receiver, rough) > oracle.partialVisibilityFactor * oracle.powerThreshold)
+        {
+          ++splits;
+          addChildLinks(receiver, sender, true);
+        }
+        continue;
       }
       if (!(link.visibility > 0.0))
       {

@@ -153,6 +153,26 @@ TerrainRangeSummary TerrainGrid::summarize(int i0, int j0, int i1, int j1) const
   return sum;
 }
 
+double TerrainGrid::meanCosine(int i0, int j0, int i1, int j1, const Vec3& d) const
+{
+  const int stepI = std::max(1, (i1 - i0) / 64), stepJ = std::max(1, (j1 - j0) / 64);
+  double weighted = 0.0, area = 0.0;
+  for (int j = j0 + stepJ / 2; j < j1; j += stepJ)
+    for (int i = i0 + stepI / 2; i < i1; i += stepI)
+    {
+      if (!this->cellValid(i, j))
+        continue;
+      const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1),
+                 p11 = this->post(i + 1, j + 1);
+      for (const Vec3& a : { 0.5 * glm::cross(p10 - p00, p01 - p00), 0.5 * glm::cross(p01 - p11, p10 - p11) })
+      {
+        weighted += std::max(0.0, glm::dot(a, d)); // |a| max(0, n . d)
+        area += glm::length(a);
+      }
+    }
+  return area > 0.0 ? weighted / area : 0.0;
+}
+
 Vec3 TerrainGrid::postNormal(int i, int j) const
 {
   // The triangles that have the post as a corner (six with this diagonal), as a

@@ -60,6 +60,10 @@ public:
   Vec3 cellAreaVector(int i, int j) const;
   /// Sum over the whole cells of [i0, i1) x [j0, j1) (parallel for large ranges).
   TerrainRangeSummary summarize(int i0, int j0, int i1, int j1) const;
+  /// Area-weighted mean of max(0, n . d) over the triangles of the whole cells of
+  /// [i0, i1) x [j0, j1): the cosine factor of a rough surface toward direction d. Large
+  /// ranges are estimated from at most about 64 x 64 evenly strided cells.
+  double meanCosine(int i0, int j0, int i1, int j1, const Vec3& d) const;
   /// Area-weighted unit normal of the valid triangles around post (i, j) (+z if none).
   Vec3 postNormal(int i, int j) const;
   /// True when post (i, j) is a corner of a valid cell.

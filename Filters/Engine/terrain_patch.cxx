@@ -1,5 +1,7 @@
 #include "terrain_patch.h"
 
+#include "point_form_factor.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -166,6 +168,45 @@ SurfaceSample TerrainPatch::sample(int k, int n, SampleGenerator& random) const
   const TerrainPoint p = this->Grid->surfacePoint(
     this->Range.u0 + s * this->Range.width(), this->Range.v0 + t * this->Range.height());
   return { p.position, p.normal };
+}
+
+double TerrainPatch::receiverFactor(const Vec3& towardSender) const
+{
+  if (!wholeCells(this->Range))
+  {
+    return PolygonElement::receiverFactor(towardSender); // within a cell: nearly planar
+  }
+  return this->Grid->meanCosine(static_cast<int>(this->Range.u0), static_cast<int>(this->Range.v0),
+    static_cast<int>(this->Range.u1), static_cast<int>(this->Range.v1), towardSender);
+}
+
+bool TerrainPatch::exactFormFactors() const
+{
+  return wholeCells(this->Range) && 2.0 * this->Range.width() * this->Range.height() <= exactTriangles;
+}
+
+double TerrainPatch::formFactorFrom(const Vec3& x, const Vec3& n) const
+{
+  if (!this->exactFormFactors())
+  {
+    return PolygonElement::formFactorFrom(x, n);
+  }
+  double sum = 0.0;
+  for (int j = static_cast<int>(this->Range.v0); j < this->Range.v1; ++j)
+    for (int i = static_cast<int>(this->Range.u0); i < this->Range.u1; ++i)
+    {
+      const Vec3 p00 = this->Grid->post(i, j), p10 = this->Grid->post(i + 1, j), p01 = this->Grid->post(i, j + 1),
+                 p11 = this->Grid->post(i + 1, j + 1);
+      const Vec3 lower[3] = { p00, p10, p01 }, upper[3] = { p11, p01, p10 };
+      for (const Vec3* t : { lower, upper })
+      {
+        const Vec3 a = glm::cross(t[1] - t[0], t[2] - t[0]);
+        const double length = glm::length(a);
+        if (length > 0.0)
+          sum += pointToPolygonFormFactor(x, n, t, 3, a / length);
+      }
+    }
+  return sum;
 }
 
 void TerrainPatch::bounds(Vec3& low, Vec3& high) const

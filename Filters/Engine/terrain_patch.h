@@ -49,6 +49,15 @@ public:
   SurfaceSample sample(int k, int n, SampleGenerator& random) const override;
   void bounds(Vec3& low, Vec3& high) const override;
   bool childrenShareNormal() const override { return false; }
+  /// The mean cosine of the cells toward the sender, not the cosine of the mean normal:
+  /// a patch facing away on average may hold slopes that face the sender.
+  double receiverFactor(const Vec3& towardSender) const override;
+  /// Over the true triangles for patches of up to exactTriangles / 2 cells (near a
+  /// point the coarse quad can be far from the surface); the coarse quad beyond.
+  double formFactorFrom(const Vec3& x, const Vec3& n) const override;
+  static constexpr int exactTriangles = 32;
+  /// Whether form factors to this patch use its true triangles.
+  bool exactFormFactors() const;
 
   /// Area not aligned with the mean normal, A - |sum A_i n_i|: 0 for a flat patch. It
   /// bounds both how much the patch lights itself and how far its parts' cosines
