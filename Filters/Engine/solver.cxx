@@ -465,10 +465,12 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
 {
   PointIrradiance result;
   auto& irradiance = result.irradiance;
-  // Visibility from a point is noisier than over an element: more samples, most where
-  // the element saw the sender only in part.
+  // Visibility from a point is noisier than over an element: many more samples where
+  // the element saw the sender only in part; as many as the link had where it saw all
+  // of it (more there halved nothing but the speed: Olinda's error moved from 0.134 to
+  // 0.141 % at tolerance 1e-3 while point evaluation took 40 % less time).
   const int partialSamples = 8 * this->Options.visibilitySamples;
-  const int clearSamples = 2 * this->Options.visibilitySamples;
+  const int clearSamples = this->Options.visibilitySamples;
   std::uint64_t salt = 0;
   for (const HElement* element = &leaf; element; element = element->Parent)
   {
