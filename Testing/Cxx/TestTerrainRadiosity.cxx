@@ -6,7 +6,10 @@
 #include "vtk_test_support.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkPoints.h"
 #include "vtkFieldData.h"
 #include "vtkHierarchicalRadiosity.h"
 #include "vtkIdList.h"
@@ -242,5 +245,107 @@ TEST(TerrainRadiosity, LeafMeshHasNoCracks)
       EXPECT_EQ(count, 1);
       EXPECT_TRUE(onBorder(a) && onBorder(b)) << "crack at (" << a[0] << ", " << a[1] << ")";
     }
+  }
+}
+
+namespace
+{
+// A 2-D structured grid of a gentle hill, nx x ny posts at 10 m, shifted by `offset`.
+vtkSmartPointer<vtkStructuredGrid> hillGrid(int nx, int ny, double offset = 0.0)
+{
+  auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+  grid->SetDimensions(nx, ny, 1);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+    {
+      const double x = 10.0 * i - 5.0 * nx, y = 10.0 * j - 5.0 * ny;
+      points->InsertNextPoint(x + offset, y + offset, 30.0 * std::exp(-(x * x + y * y) / 20000.0));
+    }
+  grid->SetPoints(points);
+  return grid;
+}
+} // namespace
+
+TEST(TerrainRadiosity, BadAndExtremeTerrainInput)
+{
+  vtkNew<vtkSunSource> sun;
+  sun->SetDateTime("2024-06-21T12:00:00+02:00");
+  sun->SetLatitude(46.0);
+  sun->SetLongitude(8.0);
+  sun->SetIrradianceModelToUser();
+  sun->SetUserNormalIrradiance(800.0);
+  sun->SetUserDiffuseHorizontalIrradiance(100.0);
+  vtkNew<vtkSkySource> sky;
+  sky->SetSunConnection(sun->GetOutputPort());
+  sky->SetSkyModelToUniform();
+  sky->SetLevels(5);
+  vtkNew<vtkHierarchicalRadiosity> radiosity;
+  radiosity->AddLightConnection(sun->GetOutputPort());
+  radiosity->AddLightConnection(sky->GetOutputPort(0));
+  auto expectError = [&](vtkDataObject* input, const std::string& words) {
+    radiosity->SetInputData(input);
+    vtkNew<MessageCatcher> messages;
+    EXPECT_EQ(runPipeline(radiosity, messages), 0);
+    EXPECT_NE(messages->Errors.find(words), std::string::npos) << words << ": " << messages->Errors;
+    EXPECT_EQ(radiosity->GetLeafMeshOutput()->GetNumberOfCells(), 0);
+  };
+  // Every cell blanked: nothing to light.
+  auto blanked = hillGrid(8, 8);
+  for (vtkIdType c = 0; c < blanked->GetNumberOfCells(); ++c)
+    blanked->BlankCell(c);
+  expectError(blanked, "non-zero area");
+  // NaN in a visible cell is an error; in blanked cells only it is fine.
+  auto withNaN = hillGrid(8, 8);
+  withNaN->GetPoints()->SetPoint(9, NAN, 0.0, 0.0);
+  expectError(withNaN, "NaN");
+  for (vtkIdType c : { 0, 1, 7, 8 }) // the cells around post 9 = (1, 1)
+    withNaN->BlankCell(c);
+  radiosity->SetInputData(withNaN);
+  vtkNew<MessageCatcher> messages;
+  ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+  EXPECT_TRUE(std::isnan(array(vtkDataSet::SafeDownCast(radiosity->GetOutput()), "Irradiance")->GetComponent(9, 0)));
+  EXPECT_EQ(withNaN->GetPointData()->GetNumberOfArrays(), 0); // the input is not modified
+
+  // Huge coordinates (6,000 km off the origin) give the same light as near it.
+  auto run = [&](vtkDataObject* input) {
+    radiosity->SetInputData(input);
+    vtkNew<MessageCatcher> quiet;
+    EXPECT_EQ(runPipeline(radiosity, quiet), 1) << quiet->Errors;
+    auto copy = vtkSmartPointer<vtkStructuredGrid>::New();
+    copy->DeepCopy(radiosity->GetOutput());
+    return copy;
+  };
+  const auto near = run(hillGrid(33, 33));
+  const auto far = run(hillGrid(33, 33, 6e6));
+  EXPECT_LT(relativeRms(array(far, "Irradiance"), array(near, "Irradiance")), 1e-3);
+
+  // Per-cell reflectance near 1: radiosity is that reflectance times the irradiance.
+  auto bright = hillGrid(17, 17);
+  vtkNew<vtkDoubleArray> rho;
+  rho->SetName("rho");
+  rho->SetNumberOfTuples(bright->GetNumberOfCells());
+  rho->Fill(0.98);
+  bright->GetCellData()->AddArray(rho);
+  radiosity->SetReflectanceArrayName("rho");
+  const auto lit = run(bright);
+  radiosity->SetReflectanceArrayName(nullptr);
+  vtkDataArray* e = array(lit, "Irradiance");
+  vtkDataArray* b = array(lit, "Radiosity");
+  for (vtkIdType k = 0; k < lit->GetNumberOfPoints(); k += 5)
+  {
+    ASSERT_TRUE(std::isfinite(e->GetComponent(k, 0)));
+    EXPECT_NEAR(b->GetComponent(k, 0), 0.98 * e->GetComponent(k, 0), 1e-9 * e->GetComponent(k, 0));
+  }
+
+  // The sun below the horizon: no direct light anywhere, no NaN.
+  sun->SetDateTime("2024-06-21T23:30:00+02:00");
+  const auto night = run(hillGrid(17, 17));
+  vtkDataArray* direct = array(night, "SunIrradiance");
+  for (vtkIdType k = 0; k < night->GetNumberOfPoints(); ++k)
+  {
+    EXPECT_EQ(direct->GetComponent(k, 0), 0.0);
+    EXPECT_TRUE(std::isfinite(array(night, "Irradiance")->GetComponent(k, 0)));
   }
 }
