@@ -40,17 +40,24 @@ const char* const quantityNames[quantities] = { "Irradiance", "SunIrradiance", "
   "ReflectedIrradiance", "Radiosity" };
 using Values = std::array<Spectrum, quantities>;
 
-Values valuesOf(const terralux::PolygonElement& leaf)
+// The irradiance quantities from irradiance by category; radiosity is left to the caller.
+Values irradianceValues(const std::array<Spectrum, terralux::lightCategories>& irradiance)
 {
   Values v{};
   for (int band = 0; band < terralux::maxBands; ++band)
   {
-    v[1][band] = leaf.Irradiance[terralux::SunLight][band];
-    v[2][band] = leaf.Irradiance[terralux::SkyLight][band];
-    v[3][band] = leaf.Irradiance[terralux::ReflectedLight][band];
+    v[1][band] = irradiance[terralux::SunLight][band];
+    v[2][band] = irradiance[terralux::SkyLight][band];
+    v[3][band] = irradiance[terralux::ReflectedLight][band];
     v[0][band] = v[1][band] + v[2][band] + v[3][band];
-    v[4][band] = leaf.Radiosity[band];
   }
+  return v;
+}
+
+Values valuesOf(const terralux::PolygonElement& leaf)
+{
+  Values v = irradianceValues(leaf.Irradiance);
+  v[4] = leaf.Radiosity;
   return v;
 }
 
@@ -116,15 +123,9 @@ void store(const std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkIdType
 
 Values valuesAtPoint(const terralux::PointIrradiance& point, const Spectrum& reflectance, const Spectrum& emission)
 {
-  Values v{};
+  Values v = irradianceValues(point.irradiance);
   for (int band = 0; band < terralux::maxBands; ++band)
-  {
-    v[1][band] = point.irradiance[terralux::SunLight][band];
-    v[2][band] = point.irradiance[terralux::SkyLight][band];
-    v[3][band] = point.irradiance[terralux::ReflectedLight][band];
-    v[0][band] = v[1][band] + v[2][band] + v[3][band];
     v[4][band] = emission[band] + reflectance[band] * v[0][band];
-  }
   return v;
 }
 
