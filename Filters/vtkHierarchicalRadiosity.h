@@ -10,8 +10,9 @@
  * with Embree against the full-resolution scene.
  *
  * Input port 0 (repeatable): vtkPolyData (triangles, quads, polygons, strips),
- * vtkStructuredGrid (e.g. vtkTerrainSource output; each visible cell becomes two
- * triangles) or a composite data set of them. Reflectance per cell from the cell
+ * 2-D vtkStructuredGrid (e.g. vtkTerrainSource output; a terrain: terrain patches of
+ * paper section 4 over its visible cells, or with UseTerrainHierarchy off two
+ * triangles per cell) or a composite data set of them. Reflectance per cell from the cell
  * array ReflectanceArrayName (1 or 3 components) or DefaultReflectance; optional
  * emission (radiosity, W/m^2) from EmissionArrayName.
  * Input port 1 (optional, repeatable): the light sources, vtkSkySource output 0 (its
@@ -30,7 +31,8 @@
  * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
  * `Level`, and the same point arrays, continuous across elements (values at
- * T-vertices interpolated along the coarser edge).
+ * T-vertices interpolated along the coarser edge; a terrain leaf's polygon holds the
+ * T-vertices of its edges, so the mesh has no cracks).
  * Output port 2: the links as lines from receiver to sender (sun and sky links drawn
  * toward the sky) with cell data `Level` and transported `Power` (W), as in the
  * paper's Fig. 9.
@@ -119,9 +121,10 @@ public:
   ///@{
   /**
    * Set/Get whether output 0's point values are evaluated at each point (every link
-   * reaching the element there re-evaluated at the point; accurate, and gives
-   * SkyViewFactor) or averaged over the leaf elements around it (faster for large
-   * scenes, smears values over elements). Default is on.
+   * reaching the element there re-evaluated at the point; accurate) or averaged over
+   * the leaf elements around it (fast for large scenes, smears values over elements;
+   * on terrain patches interpolated from the continuous leaf mesh, direct sun still
+   * taken at each post with one ray). Default is on.
    */
   vtkSetMacro(EvaluateAtPoints, vtkTypeBool);
   vtkGetMacro(EvaluateAtPoints, vtkTypeBool);

@@ -129,9 +129,21 @@ Values valuesAtPoint(const terralux::PointIrradiance& point, const Spectrum& ref
   return v;
 }
 
-constexpr int valueComponents = quantities * terralux::maxBands;
+// SkyViewFactor for a terrain lit by a sky, NaN until set.
+vtkSmartPointer<vtkDoubleArray> skyViewFactorArray(vtkIdType count)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName("SkyViewFactor");
+  array->SetNumberOfTuples(count);
+  array->Fill(std::numeric_limits<double>::quiet_NaN());
+  return array;
+}
 
-// Leaf values flattened for TerrainLeafMesh: quantity-major, then band.
+constexpr int skyViewComponent = quantities * terralux::maxBands;
+constexpr int valueComponents = skyViewComponent + 1;
+
+// Leaf values flattened for TerrainLeafMesh: quantity-major, then band; the sky view
+// factor last.
 std::vector<double> flatLeafValues(const terralux::TerrainLeafMesh& mesh)
 {
   std::vector<double> flat(mesh.leaves().size() * valueComponents);
@@ -141,6 +153,7 @@ std::vector<double> flatLeafValues(const terralux::TerrainLeafMesh& mesh)
     for (int q = 0; q < quantities; ++q)
       for (int band = 0; band < terralux::maxBands; ++band)
         flat[k * valueComponents + q * terralux::maxBands + band] = v[q][band];
+    flat[k * valueComponents + skyViewComponent] = mesh.leaves()[k]->SkyViewFactor;
   }
   return flat;
 }
@@ -166,14 +179,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
   const vtkIdType count = output->GetNumberOfPoints();
   const double none = std::numeric_limits<double>::quiet_NaN();
   const auto arrays = makeArrays(bands, count, none);
-  vtkSmartPointer<vtkDoubleArray> skyViewFactor;
-  if (withSky && evaluateAtPoints)
-  {
-    skyViewFactor = vtkSmartPointer<vtkDoubleArray>::New();
-    skyViewFactor->SetName("SkyViewFactor");
-    skyViewFactor->SetNumberOfTuples(count);
-    skyViewFactor->Fill(none);
-  }
+  const vtkSmartPointer<vtkDoubleArray> skyViewFactor = withSky ? skyViewFactorArray(count) : nullptr;
   std::array<double*, quantities> out{};
   for (int q = 0; q < quantities; ++q)
     out[q] = arrays[q]->GetPointer(0);
@@ -234,6 +240,8 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
                 for (int band = 0; band < terralux::maxBands; ++band)
                   v[q][band] = flat[q * terralux::maxBands + band];
               v[1] = solver.directSunAt(grid.post(i, j), grid.postNormal(i, j));
+              if (skyViewFactor)
+                skyViewFactor->SetValue(i + static_cast<vtkIdType>(j) * nx, flat[skyViewComponent]);
               for (int band = 0; band < terralux::maxBands; ++band)
               {
                 v[0][band] = v[1][band] + v[2][band] + v[3][band];
@@ -291,7 +299,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   std::vector<const terralux::PolygonElement*> leafOfPoint(count, nullptr);
   std::vector<Vec3> normalOfPoint(count, Vec3(0.0));
   std::vector<Values> sums(evaluateAtPoints ? 0 : count, Values{});
-  std::vector<double> weights(evaluateAtPoints ? 0 : count, 0.0);
+  std::vector<double> weights(evaluateAtPoints ? 0 : count, 0.0), skyViews(evaluateAtPoints ? 0 : count, 0.0);
   const auto& roots = solver.polygonRoots();
   for (std::size_t k = 0; k < roots.size(); ++k)
   {
@@ -308,6 +316,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
       if (!evaluateAtPoints)
       {
         accumulate(sums[point], valuesOf(*leaf), leaf->area());
+        skyViews[point] += leaf->SkyViewFactor * leaf->area();
         weights[point] += leaf->area();
       }
     }
@@ -315,6 +324,10 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   // Points on no polygon (no-data posts, loose vertices) have no value: NaN.
   const double none = std::numeric_limits<double>::quiet_NaN();
   const auto arrays = makeArrays(bands, count, none);
+  const vtkSmartPointer<vtkDoubleArray> skyViewFactor =
+    scene.Sky && vtkStructuredGrid::SafeDownCast(input.data) ? skyViewFactorArray(count) : nullptr;
+  if (skyViewFactor)
+    output->GetPointData()->AddArray(skyViewFactor);
   if (!evaluateAtPoints)
   {
     for (vtkIdType p = 0; p < count; ++p)
@@ -324,6 +337,8 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
         Values v{};
         accumulate(v, sums[p], 1.0 / weights[p]);
         store(arrays, p, v, bands);
+        if (skyViewFactor)
+          skyViewFactor->SetValue(p, skyViews[p] / weights[p]);
       }
     }
     for (const auto& array : arrays)
@@ -349,14 +364,6 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   std::vector<terralux::PointIrradiance> results;
   solver.irradianceAt(leaves, points, normals, results);
 
-  vtkSmartPointer<vtkDoubleArray> skyViewFactor;
-  if (scene.Sky && vtkStructuredGrid::SafeDownCast(input.data))
-  {
-    skyViewFactor = vtkSmartPointer<vtkDoubleArray>::New();
-    skyViewFactor->SetName("SkyViewFactor");
-    skyViewFactor->SetNumberOfTuples(count);
-    skyViewFactor->Fill(none);
-  }
   for (std::size_t k = 0; k < pointIds.size(); ++k)
   {
     if (skyViewFactor)
@@ -367,8 +374,6 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   }
   for (const auto& array : arrays)
     output->GetPointData()->AddArray(array);
-  if (skyViewFactor)
-    output->GetPointData()->AddArray(skyViewFactor);
   output->GetPointData()->SetActiveScalars("Irradiance");
 }
 

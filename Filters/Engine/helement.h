@@ -84,6 +84,7 @@ public:
   Spectrum Radiosity{};
   std::array<Spectrum, lightCategories> Gathered{}; ///< irradiance gathered at this level
   double GatheredPartial = 0.0; ///< the part of it from partially visible links (largest band)
+  double GatheredSkyView = 0.0; ///< sky kernels x visibility gathered here, over pi
   std::vector<Link> Incoming;
 
 protected:

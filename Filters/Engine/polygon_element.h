@@ -43,6 +43,9 @@ public:
 
   /// Irradiance by category once push-pull has run (leaves only).
   std::array<Spectrum, lightCategories> Irradiance{};
+  /// Cosine-weighted fraction of the sky the leaf sees, once push-pull has run (0
+  /// without a sky).
+  double SkyViewFactor = 0.0;
   /// Kernels of the links evaluated at this leaf during push, kept while the link
   /// structure does not change.
   std::vector<double> LeafKernels;

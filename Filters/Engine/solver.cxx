@@ -20,6 +20,8 @@ namespace terralux
 {
 namespace
 {
+constexpr double pi = 3.14159265358979323846;
+
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -249,6 +251,7 @@ void HierarchicalRadiosity::gather()
     HElement& element = *all[k];
     element.Gathered = {};
     element.GatheredPartial = 0.0;
+    element.GatheredSkyView = 0.0;
     if (!element.isSurface() || !static_cast<PolygonElement&>(element).childrenShareNormal())
     {
       return; // evaluated at the leaves during push instead
@@ -268,6 +271,10 @@ void HierarchicalRadiosity::gather()
         element.GatheredPartial +=
           link.kernel * link.visibility * std::max({ emittance[0], emittance[1], emittance[2] });
       }
+      if (category == SkyLight)
+      {
+        element.GatheredSkyView += link.kernel * link.visibility / pi;
+      }
     }
   });
 }
@@ -283,11 +290,19 @@ struct DeferredLink
 
 // What push hands to one leaf: irradiance that holds for it as is, and the links to
 // evaluate with its own geometry (a slice of a shared array).
+// What a surface passes down unchanged: irradiance, its partially visible part, and
+// its sky view.
+struct Inherited
+{
+  std::array<Spectrum, lightCategories> irradiance{};
+  double partial = 0.0;
+  double skyView = 0.0;
+};
+
 struct LeafTask
 {
   PolygonElement* leaf;
-  std::array<Spectrum, lightCategories> inherited;
-  double partial;
+  Inherited inherited;
   std::size_t first;
   std::size_t count;
 };
@@ -306,9 +321,8 @@ struct LeafResult
 // normal) and the links to evaluate at the leaf (links stored on clusters, whose
 // irradiance each contained surface takes by its own orientation, and links from other
 // surfaces, evaluated with the leaf's own points at whatever level they live).
-void collectLeafTasks(HElement& element, const std::array<Spectrum, lightCategories>& inherited,
-  double inheritedPartial, std::vector<DeferredLink>& deferred, std::vector<DeferredLink>& flat,
-  std::vector<LeafTask>& tasks)
+void collectLeafTasks(HElement& element, const Inherited& inherited, std::vector<DeferredLink>& deferred,
+  std::vector<DeferredLink>& flat, std::vector<LeafTask>& tasks)
 {
   const std::size_t mark = deferred.size();
   // Terrain patches pass nothing down as is: their children have normals of their own.
@@ -321,27 +335,27 @@ void collectLeafTasks(HElement& element, const std::array<Spectrum, lightCategor
   if (element.isSurface())
   {
     auto& polygon = static_cast<PolygonElement&>(element);
-    std::array<Spectrum, lightCategories> irradiance = inherited;
+    Inherited passed = inherited;
     for (int c = 0; c < lightCategories; ++c)
       for (int band = 0; band < maxBands; ++band)
-        irradiance[c][band] += polygon.Gathered[c][band];
-    const double partial = inheritedPartial + polygon.GatheredPartial;
+        passed.irradiance[c][band] += polygon.Gathered[c][band];
+    passed.partial += polygon.GatheredPartial;
+    passed.skyView += polygon.GatheredSkyView;
     if (!polygon.hasChildren())
     {
-      tasks.push_back({ &polygon, irradiance, partial, flat.size(), deferred.size() });
+      tasks.push_back({ &polygon, passed, flat.size(), deferred.size() });
       flat.insert(flat.end(), deferred.begin(), deferred.end());
     }
     else
     {
       for (HElement* child : polygon.children())
-        collectLeafTasks(*child, irradiance, partial, deferred, flat, tasks);
+        collectLeafTasks(*child, passed, deferred, flat, tasks);
     }
   }
   else
   {
-    const std::array<Spectrum, lightCategories> nothing{};
     for (HElement* child : element.children())
-      collectLeafTasks(*child, nothing, 0.0, deferred, flat, tasks);
+      collectLeafTasks(*child, Inherited{}, deferred, flat, tasks);
   }
   deferred.resize(mark);
 }
@@ -353,7 +367,8 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, bool re
   const Visibility& rays, int samples)
 {
   PolygonElement& polygon = *task.leaf;
-  std::array<Spectrum, lightCategories> irradiance = task.inherited;
+  std::array<Spectrum, lightCategories> irradiance = task.inherited.irradiance;
+  double skyView = task.inherited.skyView;
   if (!reuseKernels || polygon.LeafKernels.size() != task.count)
   {
     polygon.LeafKernels.resize(task.count);
@@ -386,9 +401,12 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, bool re
     const int category = lightCategoryOf(*link.sender);
     for (int band = 0; band < maxBands; ++band)
       irradiance[category][band] += transport * e[band];
+    if (category == SkyLight)
+      skyView += transport / pi;
   }
   polygon.Irradiance = irradiance;
-  polygon.PartialIrradiance = task.partial + polygon.DeferredPartial;
+  polygon.SkyViewFactor = skyView;
+  polygon.PartialIrradiance = task.inherited.partial + polygon.DeferredPartial;
   LeafResult result;
   double incident = 0.0;
   for (int band = 0; band < maxBands; ++band)
@@ -430,7 +448,7 @@ double HierarchicalRadiosity::pushPull()
 {
   std::vector<DeferredLink> deferred, flat;
   std::vector<LeafTask> tasks;
-  collectLeafTasks(*this->RootCluster, {}, 0.0, deferred, flat, tasks);
+  collectLeafTasks(*this->RootCluster, Inherited{}, deferred, flat, tasks);
 
   const bool reuseKernels = !this->StructureChanged;
   this->StructureChanged = false;
@@ -486,7 +504,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
       if (category == SkyLight)
       {
         // Sky links cover the whole sky once: their projected solid angles, seen, over pi.
-        result.skyViewFactor += transport / 3.14159265358979323846;
+        result.skyViewFactor += transport / pi;
       }
     }
   }

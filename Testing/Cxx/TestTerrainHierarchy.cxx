@@ -332,6 +332,10 @@ TEST(TerrainRadiosity, FlatAndTiltedPlanesAgainstClosedForms)
       EXPECT_NEAR(e.irradiance[SkyLight][0] / expectedSky, 1.0, 0.01) << slope << " at " << i << ", " << j;
       EXPECT_NEAR(e.irradiance[ReflectedLight][0], 0.0, 1e-9);
     });
+    // The leaves' own sky view factor (what interpolated outputs use).
+    const TerrainLeafMesh leaves(*solver.terrainRoots()[0]);
+    for (const TerrainPatch* leaf : leaves.leaves())
+      EXPECT_NEAR(leaf->SkyViewFactor, (1.0 + std::cos(slope * degree)) / 2.0, 0.01) << slope;
   }
 }
 
