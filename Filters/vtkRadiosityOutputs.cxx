@@ -24,7 +24,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <functional>
 #include <limits>
 #include <unordered_map>
@@ -262,18 +261,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
 
 struct PositionHash
 {
-  std::size_t operator()(const Vec3& p) const
-  {
-    std::size_t h = 1469598103934665603ull;
-    for (int k = 0; k < 3; ++k)
-    {
-      std::uint64_t bits;
-      const double value = p[k] == 0.0 ? 0.0 : p[k]; // -0 and +0 alike
-      std::memcpy(&bits, &value, sizeof bits);
-      h = (h ^ bits) * 1099511628211ull;
-    }
-    return h;
-  }
+  std::size_t operator()(const Vec3& p) const { return terralux::hashPosition(p); }
 };
 } // namespace
 

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace terralux
@@ -17,6 +18,21 @@ using Spectrum = std::array<double, maxBands>;
 inline Spectrum uniformSpectrum(double value)
 {
   return { value, value, value };
+}
+
+/// FNV-1a over the bits of a position (-0 and +0 alike): for hash maps keyed by exact
+/// positions and for seeds that belong to a point.
+inline std::uint64_t hashPosition(const Vec3& p)
+{
+  std::uint64_t h = 1469598103934665603ull;
+  for (int k = 0; k < 3; ++k)
+  {
+    std::uint64_t bits;
+    const double value = p[k] == 0.0 ? 0.0 : p[k];
+    std::memcpy(&bits, &value, sizeof bits);
+    h = (h ^ bits) * 1099511628211ull;
+  }
+  return h;
 }
 
 /// Where irradiance comes from, kept apart for the outputs.

@@ -489,12 +489,14 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   // 0.141 % at tolerance 1e-3 while point evaluation took 40 % less time).
   const int partialSamples = 8 * this->Options.visibilitySamples;
   const int clearSamples = this->Options.visibilitySamples;
-  std::uint64_t salt = 0;
+  // Seeded by the point itself: points sharing a leaf (posts inside a terrain patch)
+  // must not share their jitter, or the noise would be the same pattern at each.
+  std::uint64_t salt = hashPosition(point) ^ (leaf.id() * 31);
   for (const HElement* element = &leaf; element; element = element->Parent)
   {
     for (const Link& link : element->Incoming)
     {
-      const std::uint64_t seed = linkSeed(leaf.id() * 31 + (salt++), link.sender->id());
+      const std::uint64_t seed = linkSeed(salt++, link.sender->id());
       const double transport = transportToPoint(
         point, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
       const Spectrum e = link.sender->emittance();
