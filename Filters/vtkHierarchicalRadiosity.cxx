@@ -285,7 +285,7 @@ int vtkHierarchicalRadiosity::RequestData(
   };
   addValue("Elements", static_cast<double>(stats.elements));
   addValue("Links", static_cast<double>(stats.links));
-  addValue("Rays", static_cast<double>(stats.rays));
+  addValue("Rays", static_cast<double>(solver->raysCast())); // the solve's and the points'
   addValue("Iterations", stats.iterations);
   addValue("DegeneratePolygons", static_cast<double>(solver->degeneratePolygons()));
   addValue("SecondsVisibilityBuild", stats.secondsVisibilityBuild);

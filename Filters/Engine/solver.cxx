@@ -94,6 +94,11 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
 
 HierarchicalRadiosity::~HierarchicalRadiosity() = default;
 
+std::uint64_t HierarchicalRadiosity::raysCast() const
+{
+  return this->Rays->raysCast();
+}
+
 void HierarchicalRadiosity::setSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance)
 {
   this->Sun = largest(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0

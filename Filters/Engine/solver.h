@@ -75,6 +75,8 @@ public:
   bool solve(RadiosityProgress* progress = nullptr);
 
   const RadiosityStatistics& statistics() const { return this->Stats; }
+  /// Rays cast so far: the solve's and those of later point evaluations.
+  std::uint64_t raysCast() const;
   std::size_t degeneratePolygons() const { return this->Degenerate; }
   /// Root element of each input polygon (null for degenerate ones).
   const std::vector<PolygonElement*>& polygonRoots() const { return this->Roots; }
