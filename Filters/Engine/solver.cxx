@@ -7,6 +7,7 @@
 #include "polygon_element.h"
 #include "sky_hierarchy.h"
 #include "sky_patch_element.h"
+#include "terrain_mesh.h"
 #include "terrain_patch.h"
 #include "visibility.h"
 
@@ -538,24 +539,12 @@ void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*
     [&](std::size_t k) { results[k] = this->irradianceAt(*leaves[k], points[k], normals[k]); });
 }
 
-std::size_t HierarchicalRadiosity::splitShadowedLeaves()
+std::size_t HierarchicalRadiosity::splitLeaves(const std::vector<PolygonElement*>& leaves)
 {
-  // A leaf lit through many partially visible links, none worth refining alone, still
-  // averages a shadow over its area: split it when that light carries enough power.
-  const double threshold = this->Options.errorTolerance * this->Stats.referencePowerW;
+  // The leaves' links move to their children, evaluated and refined there.
   std::vector<std::pair<HElement*, Link>> pending;
-  std::size_t splits = 0;
-  const std::size_t count = this->Store->size();
-  for (std::size_t k = 0; k < count; ++k)
+  for (PolygonElement* polygon : leaves)
   {
-    HElement* element = this->Store->all()[k].get();
-    if (!element->isSurface())
-      continue;
-    auto* polygon = static_cast<PolygonElement*>(element);
-    if (polygon->hasChildren() || !polygon->canSplit() ||
-      polygon->PartialIrradiance * polygon->area() <= threshold)
-      continue;
-    ++splits;
     for (HElement* child : polygon->children())
       for (const Link& link : polygon->Incoming)
       {
@@ -569,11 +558,56 @@ std::size_t HierarchicalRadiosity::splitShadowedLeaves()
   {
     this->refine(pending, false);
   }
-  if (splits)
+  if (!leaves.empty())
   {
     this->StructureChanged = true;
   }
-  return splits;
+  return leaves.size();
+}
+
+std::size_t HierarchicalRadiosity::splitShadowedLeaves()
+{
+  // A leaf lit through many partially visible links, none worth refining alone, still
+  // averages a shadow over its area: split it when that light carries enough power.
+  const double threshold = this->Options.errorTolerance * this->Stats.referencePowerW;
+  std::vector<PolygonElement*> leaves;
+  for (const auto& element : this->Store->all())
+  {
+    if (!element->isSurface())
+      continue;
+    auto* polygon = static_cast<PolygonElement*>(element.get());
+    if (!polygon->hasChildren() && polygon->canSplit() && polygon->PartialIrradiance * polygon->area() > threshold)
+      leaves.push_back(polygon);
+  }
+  return this->splitLeaves(leaves);
+}
+
+std::size_t HierarchicalRadiosity::restrictTerrainMeshes()
+{
+  // Restricted subdivision (paper section 4.2): no leaf has a neighbour more than one
+  // level finer, i.e. more than one T-vertex on an edge, so shading varies gradually
+  // from coarse to fine leaves. Splits cascade outward until none is needed.
+  std::size_t splits = 0;
+  for (;;)
+  {
+    std::vector<PolygonElement*> leaves;
+    for (const TerrainPatch* root : this->TerrainRoots)
+    {
+      if (!root)
+        continue;
+      const TerrainLeafMesh mesh(*root);
+      for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
+      {
+        // Ids are positions in the store, which owns the (mutable) element.
+        auto* leaf = static_cast<PolygonElement*>(this->Store->all()[mesh.leaves()[k]->id()].get());
+        if (mesh.mostTVerticesOnAnEdge(k) > 1 && leaf->canSplit())
+          leaves.push_back(leaf);
+      }
+    }
+    if (leaves.empty())
+      return splits;
+    splits += this->splitLeaves(leaves);
+  }
 }
 
 bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
@@ -613,9 +647,11 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     {
       return false;
     }
-    const std::size_t shadowSplits = this->splitShadowedLeaves();
-    if ((change < this->Options.convergenceTolerance && shadowSplits == 0) ||
-      iteration + 1 == this->Options.maximumIterations)
+    // Leaves split now get their irradiance in the next iteration, so the last one
+    // splits nothing.
+    const bool last = iteration + 1 == this->Options.maximumIterations;
+    const std::size_t splits = last ? 0 : this->splitShadowedLeaves() + this->restrictTerrainMeshes();
+    if ((change < this->Options.convergenceTolerance && splits == 0) || last)
     {
       break;
     }

@@ -106,6 +106,8 @@ private:
   /// Refines pending links; returns how many were split.
   std::size_t refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated);
   std::size_t splitShadowedLeaves();
+  std::size_t restrictTerrainMeshes();
+  std::size_t splitLeaves(const std::vector<PolygonElement*>& leaves);
   void gather();
   double pushPull();
   double referencePower() const;

@@ -40,6 +40,7 @@ TerrainLeafMesh::TerrainLeafMesh(const TerrainPatch& root)
   std::vector<bool> anchored;
   this->Boundaries.resize(this->Leaves.size());
   this->Corners.resize(this->Leaves.size());
+  this->MostOnAnEdge.assign(this->Leaves.size(), 0);
   for (std::size_t k = 0; k < this->Leaves.size(); ++k)
   {
     const ParameterRange& r = this->Leaves[k]->range();
@@ -53,6 +54,7 @@ TerrainLeafMesh::TerrainLeafMesh(const TerrainPatch& root)
       this->Boundaries[k].push_back(a);
       const GenericEdge edge = edgeOf(*this->Leaves[k], static_cast<Side>(side));
       std::vector<double> ts = tVertices(edge);
+      this->MostOnAnEdge[k] = std::max(this->MostOnAnEdge[k], static_cast<int>(ts.size()));
       // Counter-clockwise: the high sides run backwards along their parameter.
       if (side >= 2)
         std::reverse(ts.begin(), ts.end());

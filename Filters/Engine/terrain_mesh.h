@@ -29,6 +29,9 @@ public:
   /// The four corner vertices of leaf k, counter-clockwise from (u0, v0).
   const std::array<std::size_t, 4>& corners(std::size_t leaf) const { return this->Corners[leaf]; }
   std::size_t tVertexCount() const { return this->Anchors.size(); }
+  /// The most T-vertices on one edge of leaf k. More than one means a neighbour two or
+  /// more levels finer: a restricted subdivision splits the leaf.
+  int mostTVerticesOnAnEdge(std::size_t leaf) const { return this->MostOnAnEdge[leaf]; }
 
   /// Continuous per-vertex values (`components` per vertex) from per-leaf values:
   /// area-weighted at shared corners, interpolated at T-vertices.
@@ -49,5 +52,6 @@ private:
   std::vector<std::vector<std::size_t>> Boundaries;
   std::vector<std::array<std::size_t, 4>> Corners;
   std::vector<Anchor> Anchors;
+  std::vector<int> MostOnAnEdge;
 };
 } // namespace terralux

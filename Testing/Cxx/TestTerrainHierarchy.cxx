@@ -15,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
+#include <iterator>
 #include <random>
 
 using namespace terralux;
@@ -406,6 +408,17 @@ TEST(TerrainRadiosity, VerticalStepCastsItsShadowAndNoLightLeaks)
     for (int i = 12; i < 21; ++i) // the plateau is lit
       EXPECT_NEAR(solver.directSunAt(grid->post(i, j), grid->postNormal(i, j))[0], lit, 1e-6);
   }
+  // Uneven refinement along the shadow, yet restricted: no leaf has a neighbour two
+  // levels finer (more than one T-vertex on an edge).
+  const TerrainLeafMesh mesh(*solver.terrainRoots()[0]);
+  int levels[64] = {};
+  for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
+  {
+    ++levels[std::min(63, mesh.leaves()[k]->level())];
+    if (mesh.leaves()[k]->canSplit())
+      EXPECT_LE(mesh.mostTVerticesOnAnEdge(k), 1) << "leaf " << k;
+  }
+  EXPECT_GE(std::count_if(std::begin(levels), std::end(levels), [](int n) { return n > 0; }), 3);
   // The wall element faces away from the sun; the low ground in its shadow still gets
   // light reflected by the lit ground in front (not through the wall).
   forEachPost(solver, *grid, [&](int i, int j, const PointIrradiance& e) {
