@@ -235,7 +235,10 @@ TEST(TerrainLeafMesh, ContinuousAcrossLevels)
   // The coarse east patch's boundary: 4 corners and the 3 T-vertices on its west side.
   for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
     if (mesh.leaves()[k] == p.east)
+    {
       EXPECT_EQ(mesh.boundary(k).size(), 7u);
+      EXPECT_EQ(mesh.mostTVerticesOnAnEdge(k), 3); // not restricted: neighbours 3 levels finer
+    }
   // Arbitrary values per leaf (3 components); along every edge, both sides agree at the
   // neighbours' corners and in between.
   std::mt19937 random(11);
