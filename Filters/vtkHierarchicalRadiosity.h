@@ -30,9 +30,10 @@
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons` and seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
- * `Level`, and the same point arrays, continuous across elements (values at
- * T-vertices interpolated along the coarser edge; a terrain leaf's polygon holds the
- * T-vertices of its edges, so the mesh has no cracks).
+ * `Level`, and the irradiance and radiosity point arrays (not SkyViewFactor),
+ * continuous across elements (values at T-vertices interpolated along the coarser
+ * edge; a terrain leaf's polygon holds the T-vertices of its edges, so the mesh has no
+ * cracks).
  * Output port 2: the links as lines from receiver to sender (sun and sky links drawn
  * toward the sky) with cell data `Level` and transported `Power` (W), as in the
  * paper's Fig. 9.
