@@ -278,8 +278,17 @@ void vtkRadiosityScene::AddLight(vtkDataObject* light)
     throw terralux::Error("input port 1 takes vtkSkySource's radiance map and vtkSunSource's "
                           "output; this input is neither");
   }
-  this->HasSun = true;
+  // Three values, as three tuples (vtkSunSource) or one tuple of three components.
+  const int components = direction->GetNumberOfComponents();
   for (int k = 0; k < 3; ++k)
-    this->SunDirection[k] = direction->GetComponent(k, 0);
-  this->SunIrradiance = terralux::uniformSpectrum(irradiance->GetComponent(0, 0));
+    this->SunDirection[k] = direction->GetComponent(k / components, k % components);
+  const double flux = irradiance->GetNumberOfValues() > 0 ? irradiance->GetComponent(0, 0) : NAN;
+  if (!(glm::length(this->SunDirection) > 0.0) || !std::isfinite(glm::length(this->SunDirection)) ||
+    !(flux >= 0.0) || !std::isfinite(flux))
+  {
+    throw terralux::Error("the sun on input port 1 needs a finite, non-zero SunDirection and a finite "
+                          "SunNormalIrradiance >= 0 (W/m^2)");
+  }
+  this->HasSun = true;
+  this->SunIrradiance = terralux::uniformSpectrum(flux);
 }

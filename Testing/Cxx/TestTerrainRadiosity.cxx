@@ -21,6 +21,8 @@
 #include "vtkStructuredGrid.h"
 #include "vtkSunSource.h"
 #include "vtkTerrainSource.h"
+#include "vtkTrivialProducer.h"
+#include "vtkMultiBlockDataSet.h"
 
 #include <gtest/gtest.h>
 
@@ -350,4 +352,78 @@ TEST(TerrainRadiosity, BadAndExtremeTerrainInput)
     EXPECT_EQ(direct->GetComponent(k, 0), 0.0);
     EXPECT_TRUE(std::isfinite(array(night, "Irradiance")->GetComponent(k, 0)));
   }
+}
+
+TEST(TerrainRadiosity, TwoTerrainsShadeEachOther)
+{
+  // Ground 320 x 320 m at z = 0 and a 100 x 100 m roof-like grid at z = 50 over its
+  // middle (a second terrain: its own origin, so its vertices are copied into Embree
+  // rather than shared). Sun straight down: the ground below the roof is dark.
+  auto flatGrid = [](int n, double spacing, double x0, double y0, double z) {
+    auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+    grid->SetDimensions(n, n, 1);
+    vtkNew<vtkPoints> points;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        points->InsertNextPoint(x0 + spacing * i, y0 + spacing * j, z);
+    grid->SetPoints(points);
+    return grid;
+  };
+  auto ground = flatGrid(33, 10.0, 0.0, 0.0, 0.0);
+  auto roof = flatGrid(11, 10.0, 110.0, 110.0, 50.0);
+  // A sun straight overhead, given as the field data vtkSunSource writes.
+  vtkNew<vtkPolyData> sun;
+  vtkNew<vtkDoubleArray> direction;
+  direction->SetName("SunDirection");
+  direction->SetNumberOfComponents(3);
+  direction->InsertNextTuple3(0.0, 0.0, 1.0);
+  vtkNew<vtkDoubleArray> flux;
+  flux->SetName("SunNormalIrradiance");
+  flux->InsertNextValue(1000.0);
+  sun->GetFieldData()->AddArray(direction);
+  sun->GetFieldData()->AddArray(flux);
+  vtkNew<vtkTrivialProducer> sunProducer;
+  sunProducer->SetOutput(sun);
+  vtkNew<vtkHierarchicalRadiosity> radiosity;
+  radiosity->AddInputData(ground);
+  radiosity->AddInputData(roof);
+  radiosity->AddLightConnection(sunProducer->GetOutputPort());
+  vtkNew<MessageCatcher> messages;
+  ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(radiosity->GetOutput());
+  ASSERT_NE(blocks, nullptr);
+  auto* litGround = vtkDataSet::SafeDownCast(blocks->GetBlock(0));
+  auto* litRoof = vtkDataSet::SafeDownCast(blocks->GetBlock(1));
+  vtkDataArray* sunGround = array(litGround, "SunIrradiance");
+  for (vtkIdType k = 0; k < litGround->GetNumberOfPoints(); ++k)
+  {
+    double p[3];
+    litGround->GetPoint(k, p);
+    const bool under = p[0] > 110.0 && p[0] < 210.0 && p[1] > 110.0 && p[1] < 210.0;
+    const bool clear = p[0] < 105.0 || p[0] > 215.0 || p[1] < 105.0 || p[1] > 215.0;
+    if (under)
+      EXPECT_EQ(sunGround->GetComponent(k, 0), 0.0) << p[0] << ", " << p[1];
+    else if (clear)
+      EXPECT_NEAR(sunGround->GetComponent(k, 0), 1000.0, 1e-6) << p[0] << ", " << p[1];
+  }
+  vtkDataArray* sunRoof = array(litRoof, "SunIrradiance");
+  for (vtkIdType k = 0; k < litRoof->GetNumberOfPoints(); ++k)
+    EXPECT_NEAR(sunRoof->GetComponent(k, 0), 1000.0, 1e-6);
+  // The roof faces up: the ground under it sees only its unlit back, so no reflected
+  // light arrives there either.
+  vtkDataArray* reflected = array(litGround, "ReflectedIrradiance");
+  const vtkIdType middle = 16 + 33 * 16;
+  EXPECT_EQ(sunGround->GetComponent(middle, 0), 0.0);
+  EXPECT_EQ(reflected->GetComponent(middle, 0), 0.0);
+
+  // A sun without a usable direction or flux is refused.
+  flux->SetValue(0, NAN);
+  sun->Modified();
+  vtkNew<MessageCatcher> refused;
+  EXPECT_EQ(runPipeline(radiosity, refused), 0);
+  EXPECT_NE(refused->Errors.find("finite"), std::string::npos) << refused->Errors;
+  flux->SetValue(0, 1000.0);
+  direction->SetTuple3(0, 0.0, 0.0, 0.0);
+  sun->Modified();
+  EXPECT_EQ(runPipeline(radiosity, refused), 0);
 }
