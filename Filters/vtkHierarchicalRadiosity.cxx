@@ -293,7 +293,7 @@ int vtkHierarchicalRadiosity::RequestData(
   addValue("SecondsGather", stats.secondsGather);
   addValue("SecondsPushPull", stats.secondsPushPull);
 
-  vtkRadiosityOutputs::BuildLeafMesh(*solver, this->NumberOfBands, leafMesh);
+  vtkRadiosityOutputs::BuildLeafMesh(*solver, this->NumberOfBands, scene.Sky != nullptr, leafMesh);
   vtkRadiosityOutputs::BuildLinks(*solver, links);
   this->UpdateProgress(1.0);
   return 1;

@@ -30,7 +30,7 @@
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons` and seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
- * `Level`, and the irradiance and radiosity point arrays (not SkyViewFactor),
+ * `Level`, and the same point arrays (SkyViewFactor: the leaves' own, under a sky),
  * continuous across elements (values at T-vertices interpolated along the coarser
  * edge; a terrain leaf's polygon holds the T-vertices of its edges, so the mesh has no
  * cracks).

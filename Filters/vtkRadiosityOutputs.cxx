@@ -365,7 +365,8 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   output->GetPointData()->SetActiveScalars("Irradiance");
 }
 
-void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& solver, int bands, vtkPolyData* output)
+void vtkRadiosityOutputs::BuildLeafMesh(
+  const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output)
 {
   std::vector<terralux::PolygonElement*> leaves;
   for (terralux::PolygonElement* root : solver.polygonRoots())
@@ -375,7 +376,7 @@ void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& s
   std::unordered_map<Vec3, vtkIdType, PositionHash> index;
   std::vector<Vec3> positions;
   std::vector<Values> values;
-  std::vector<double> weights;
+  std::vector<double> weights, skyViews;
   vtkNew<vtkCellArray> polygons;
   vtkNew<vtkIntArray> level;
   level->SetName("Level");
@@ -391,10 +392,12 @@ void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& s
         positions.push_back(leaf->corners()[c]);
         values.emplace_back();
         weights.push_back(0.0);
+        skyViews.push_back(0.0);
       }
       ids[c] = it->second;
       accumulate(values[it->second], v, leaf->area());
       weights[it->second] += leaf->area();
+      skyViews[it->second] += leaf->area() * leaf->SkyViewFactor;
     }
     polygons->InsertNextCell(leaf->cornerCount(), ids);
     level->InsertNextValue(leaf->level());
@@ -404,6 +407,7 @@ void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& s
     Values normalised{};
     accumulate(normalised, values[k], 1.0 / weights[k]);
     values[k] = normalised;
+    skyViews[k] /= weights[k];
   }
 
   // T-vertices: a vertex in the middle of a coarser leaf's edge takes the value linear
@@ -418,6 +422,7 @@ void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& s
     accumulate(mid, values[a], 0.5);
     accumulate(mid, values[b], 0.5);
     values[it->second] = mid;
+    skyViews[it->second] = 0.5 * (skyViews[a] + skyViews[b]);
     anchor(a, it->second);
     anchor(it->second, b);
   };
@@ -441,6 +446,7 @@ void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& s
         for (int band = 0; band < terralux::maxBands; ++band)
           v[q][band] = vertexValues[k * valueComponents + q * terralux::maxBands + band];
       values.push_back(v);
+      skyViews.push_back(vertexValues[k * valueComponents + skyViewComponent]);
     }
     std::vector<vtkIdType> ids;
     for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
@@ -457,15 +463,20 @@ void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& s
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
   const auto arrays = makeArrays(bands, static_cast<vtkIdType>(positions.size()));
+  const auto skyViewFactor = withSky ? skyViewFactorArray(static_cast<vtkIdType>(positions.size())) : nullptr;
   for (std::size_t k = 0; k < positions.size(); ++k)
   {
     points->SetPoint(static_cast<vtkIdType>(k), positions[k].x, positions[k].y, positions[k].z);
     store(arrays, static_cast<vtkIdType>(k), values[k], bands);
+    if (skyViewFactor)
+      skyViewFactor->SetValue(static_cast<vtkIdType>(k), skyViews[k]);
   }
   output->SetPoints(points);
   output->SetPolys(polygons);
   for (const auto& array : arrays)
     output->GetPointData()->AddArray(array);
+  if (skyViewFactor)
+    output->GetPointData()->AddArray(skyViewFactor);
   output->GetPointData()->SetActiveScalars("Irradiance");
   output->GetCellData()->AddArray(level);
 }

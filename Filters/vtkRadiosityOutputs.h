@@ -23,7 +23,9 @@ struct vtkRadiosityOutputs
   /// around the point; no SkyViewFactor).
   static void AddPointArrays(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
     int index, int bands, bool evaluateAtPoints, vtkDataSet* output);
-  static void BuildLeafMesh(const terralux::HierarchicalRadiosity& solver, int bands, vtkPolyData* output);
+  /// withSky: add SkyViewFactor (the leaves' own, continuous like the other arrays).
+  static void BuildLeafMesh(
+    const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output);
   static void BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output);
 };
 

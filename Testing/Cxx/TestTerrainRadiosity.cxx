@@ -221,6 +221,13 @@ TEST(TerrainRadiosity, LeafMeshHasNoCracks)
   const auto out = lit.run(true);
   vtkPolyData* mesh = lit.radiosity->GetLeafMeshOutput();
   ASSERT_GT(mesh->GetNumberOfCells(), 50);
+  // Under a sky the leaf mesh has the leaves' sky view factors too. The hill's steepest
+  // slope, 150 / 60 e^-1/2 = 57 degrees, sees (1 + cos 57) / 2 = 0.77 of the sky; its
+  // foot sees a little less than the plain.
+  vtkDataArray* svf = mesh->GetPointData()->GetArray("SkyViewFactor");
+  ASSERT_NE(svf, nullptr);
+  EXPECT_GT(svf->GetRange()[0], 0.7);
+  EXPECT_LE(svf->GetRange()[1], 1.0 + 1e-6);
   // Every polygon edge is shared by two polygons (same point ids, so the same values),
   // except along the grid's border.
   std::map<std::pair<vtkIdType, vtkIdType>, int> edges;
