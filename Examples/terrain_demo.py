@@ -6,8 +6,9 @@
 Default DEM: the SRTM Olinda tile (UTM 25S) extracted by cmake/install-dependencies.sh.
 Writes DIR/terrain.vtp (surface with normals and Elevation), DIR/shaded_relief.png,
 DIR/irradiance.vts (the DEM grid with Irradiance, SunIrradiance, SkyIrradiance,
-ReflectedIrradiance and Radiosity in W/m^2 for a December morning under a clear sky)
-and DIR/irradiance.png (global irradiance in colour).
+ReflectedIrradiance, Radiosity in W/m^2 and SkyViewFactor for a December morning under
+a clear sky), DIR/leaves.vtp (the adaptive mesh of terrain patches the solution used,
+with its Level) and DIR/irradiance.png (global irradiance in colour).
 """
 import argparse
 import os
@@ -172,6 +173,12 @@ def main():
     grid_writer.SetInputData(lit)
     grid_writer.Write()
     print("wrote", vts)
+    leaves = os.path.join(args.output_dir, "leaves.vtp")
+    leaf_writer = vtkXMLPolyDataWriter()
+    leaf_writer.SetFileName(leaves)
+    leaf_writer.SetInputData(radiosity.GetLeafMeshOutput())
+    leaf_writer.Write()
+    print("wrote", leaves)
     lit_surface = vtkDataSetSurfaceFilter()
     lit_surface.SetInputData(lit)
     lit_normals = vtkPolyDataNormals()

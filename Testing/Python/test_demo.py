@@ -1,5 +1,5 @@
 """The demo end to end: Olinda DEM -> terrain.vtp, a shaded-relief PNG, and the lit
-terrain (irradiance.vts, irradiance.png).
+terrain (irradiance.vts, leaves.vtp, irradiance.png).
 
 Rendering needs an X display (Debian's VTK aborts without one): the demo runs
 under xvfb-run when there is no DISPLAY, and the test is skipped when neither exists.
@@ -63,6 +63,15 @@ class Demo(unittest.TestCase):
         self.assertGreater(low, 0.0)
         self.assertLess(high, 1400.0)  # below the solar constant
         self.assertIn("global irradiance", result.stdout)
+
+        # The leaf mesh: terrain patches, far fewer than the grid's 24,200 triangles.
+        leaves = vtkXMLPolyDataReader()
+        leaves.SetFileName(os.path.join(out, "leaves.vtp"))
+        leaves.Update()
+        mesh = leaves.GetOutput()
+        self.assertGreater(mesh.GetNumberOfCells(), 10)
+        self.assertLess(mesh.GetNumberOfCells(), 110 * 110 * 2)
+        self.assertIsNotNone(mesh.GetCellData().GetArray("Level"))
 
 
 if __name__ == "__main__":
