@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -117,6 +118,53 @@ PixelWindow DemRaster::windowCovering(double xmin, double ymin, double xmax, dou
     static_cast<int>(rowMax - rowMin) };
 }
 
+namespace
+{
+// Reads the posts of `window` at `stride` into `out` (elements of `type`, `size`
+// bytes), in chunks of rows with the band's block cache dropped after each, so a huge
+// raster never sits in GDAL's cache. False when GDAL fails.
+bool readWindow(GDALRasterBand& band, const PixelWindow& window, int stride, GDALDataType type,
+  std::size_t size, void* out)
+{
+  const int nx = PixelWindow::postCount(window.width, stride);
+  const int ny = PixelWindow::postCount(window.height, stride);
+  auto* bytes = static_cast<unsigned char*>(out);
+  bool ok = true;
+  if (stride == 1)
+  {
+    const int rowsPerChunk =
+      static_cast<int>(std::max<std::size_t>(1, rowChunkBytes / (size * static_cast<std::size_t>(nx))));
+    for (int row = 0; row < ny && ok; row += rowsPerChunk)
+    {
+      const int rows = std::min(rowsPerChunk, ny - row);
+      ok = band.RasterIO(GF_Read, window.col0, window.row0 + row, nx, rows,
+             bytes + static_cast<std::size_t>(row) * nx * size, nx, rows, type, 0, 0, nullptr) == CE_None;
+      band.FlushCache();
+    }
+    return ok;
+  }
+  // Only the rows that hold posts are read; columns are picked from each row.
+  std::vector<unsigned char> rowBuffer(static_cast<std::size_t>(window.width) * size);
+  std::size_t bytesSinceFlush = 0;
+  for (int j = 0; j < ny && ok; ++j)
+  {
+    ok = band.RasterIO(GF_Read, window.col0, window.row0 + j * stride, window.width, 1, rowBuffer.data(),
+           window.width, 1, type, 0, 0, nullptr) == CE_None;
+    unsigned char* row = bytes + static_cast<std::size_t>(j) * nx * size;
+    for (int i = 0; i < nx; ++i)
+      std::memcpy(row + static_cast<std::size_t>(i) * size, rowBuffer.data() + static_cast<std::size_t>(i) * stride * size, size);
+    bytesSinceFlush += rowBuffer.size() * static_cast<std::size_t>(stride);
+    if (bytesSinceFlush > rowChunkBytes)
+    {
+      band.FlushCache();
+      bytesSinceFlush = 0;
+    }
+  }
+  band.FlushCache();
+  return ok;
+}
+} // namespace
+
 std::size_t DemRaster::read(const PixelWindow& window, int stride, float* heights)
 {
   return this->readPosts(window, stride, heights);
@@ -146,52 +194,21 @@ std::size_t DemRaster::readPosts(const PixelWindow& window, int stride, T* heigh
   GDALRasterBand& band = *this->State->band;
   const int nx = PixelWindow::postCount(window.width, stride);
   const int ny = PixelWindow::postCount(window.height, stride);
-  const GDALDataType type = gdalTypeOf<T>();
-  auto fail = [&]() {
-    band.FlushCache();
+  if (!readWindow(band, window, stride, gdalTypeOf<T>(), sizeof(T), heights))
+  {
     throw Error("reading the DEM failed: " + quiet.lastMessage());
-  };
-
-  if (stride == 1)
-  {
-    const int rowsPerChunk = static_cast<int>(
-      std::max<std::size_t>(1, rowChunkBytes / (sizeof(T) * static_cast<std::size_t>(nx))));
-    for (int row = 0; row < ny; row += rowsPerChunk)
-    {
-      const int rows = std::min(rowsPerChunk, ny - row);
-      if (band.RasterIO(GF_Read, window.col0, window.row0 + row, nx, rows,
-            heights + static_cast<std::size_t>(row) * nx, nx, rows, type, 0, 0, nullptr) != CE_None)
-      {
-        fail();
-      }
-      band.FlushCache();
-    }
   }
-  else
+  // A real mask (per dataset, alpha or per band; not the no-data value, handled below)
+  // blanks the posts it marks as invalid (0).
+  const int maskFlags = band.GetMaskFlags();
+  std::vector<GByte> mask;
+  if (!(maskFlags & GMF_ALL_VALID) && !(maskFlags & GMF_NODATA))
   {
-    // Only the rows that hold posts are read; columns are picked from each row.
-    std::vector<T> rowBuffer(static_cast<std::size_t>(window.width));
-    std::size_t bytesSinceFlush = 0;
-    for (int j = 0; j < ny; ++j)
+    mask.resize(static_cast<std::size_t>(nx) * ny);
+    if (!readWindow(*band.GetMaskBand(), window, stride, GDT_Byte, 1, mask.data()))
     {
-      if (band.RasterIO(GF_Read, window.col0, window.row0 + j * stride, window.width, 1,
-            rowBuffer.data(), window.width, 1, type, 0, 0, nullptr) != CE_None)
-      {
-        fail();
-      }
-      T* out = heights + static_cast<std::size_t>(j) * nx;
-      for (int i = 0; i < nx; ++i)
-      {
-        out[i] = rowBuffer[static_cast<std::size_t>(i) * stride];
-      }
-      bytesSinceFlush += rowBuffer.size() * sizeof(T) * static_cast<std::size_t>(stride);
-      if (bytesSinceFlush > rowChunkBytes)
-      {
-        band.FlushCache();
-        bytesSinceFlush = 0;
-      }
+      throw Error("reading the DEM's mask failed: " + quiet.lastMessage());
     }
-    band.FlushCache();
   }
 
   const T noData = static_cast<T>(this->Info.noData);
@@ -200,7 +217,7 @@ std::size_t DemRaster::readPosts(const PixelWindow& window, int stride, T* heigh
   const std::size_t count = static_cast<std::size_t>(nx) * ny;
   for (std::size_t k = 0; k < count; ++k)
   {
-    if (!std::isfinite(heights[k]) || (hasNoData && heights[k] == noData))
+    if (!std::isfinite(heights[k]) || (hasNoData && heights[k] == noData) || (!mask.empty() && mask[k] == 0))
     {
       heights[k] = std::numeric_limits<T>::quiet_NaN();
     }

@@ -75,6 +75,22 @@ TEST(DemRaster, NoDataBecomesNaN)
   EXPECT_EQ(heights[4 * 23 + 6], 1.0);
 }
 
+TEST(DemRaster, MaskedPostsBecomeNaN)
+{
+  // A per-dataset mask (no no-data value): masked posts are blanked, with and without stride.
+  RasterSpec spec = rampSpec();
+  spec.elevation = [](int, int) { return 5.0; };
+  spec.masked = [](int col, int row) { return col >= 8 && col < 12 && row >= 4 && row < 8; };
+  DemRaster raster(writeRaster("masked.tif", spec), 1);
+  std::vector<float> heights(23 * 17);
+  EXPECT_EQ(raster.read(raster.fullWindow(), 1, heights.data()), heights.size() - 16);
+  EXPECT_TRUE(std::isnan(heights[5 * 23 + 9]));
+  EXPECT_EQ(heights[5 * 23 + 7], 5.0f);
+  std::vector<float> strided(PixelWindow::postCount(23, 2) * PixelWindow::postCount(17, 2));
+  EXPECT_EQ(raster.read(raster.fullWindow(), 2, strided.data()), strided.size() - 4); // cols 8, 10 x rows 4, 6
+  EXPECT_TRUE(std::isnan(strided[2 * 12 + 4]));
+}
+
 TEST(DemRaster, WindowCoveringMapBounds)
 {
   DemRaster raster(writeRaster("ramp.tif", rampSpec()), 1);

@@ -65,6 +65,19 @@ std::string writeRaster(const std::string& name, const RasterSpec& spec, const c
   {
     throw std::runtime_error("cannot fill test raster " + name);
   }
+  if (spec.masked)
+  {
+    std::vector<GByte> mask(values.size());
+    for (int row = 0; row < spec.height; ++row)
+      for (int col = 0; col < spec.width; ++col)
+        mask[static_cast<std::size_t>(row) * spec.width + col] = spec.masked(col, row) ? 0 : 255;
+    if (dataset->CreateMaskBand(GMF_PER_DATASET) != CE_None ||
+      band->GetMaskBand()->RasterIO(GF_Write, 0, 0, spec.width, spec.height, mask.data(), spec.width,
+        spec.height, GDT_Byte, 0, 0, nullptr) != CE_None)
+    {
+      throw std::runtime_error("cannot write the mask of test raster " + name);
+    }
+  }
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driverName);
   std::unique_ptr<GDALDataset> copy(
     driver->CreateCopy(path.c_str(), dataset.get(), FALSE, nullptr, nullptr, nullptr));

@@ -21,6 +21,8 @@ struct RasterSpec
   bool float64 = false;
   /// Height of pixel (col, row); return NaN to write the no-data value there.
   std::function<double(int col, int row)> elevation = [](int, int) { return 0.0; };
+  /// When set: a per-dataset mask band, invalid (0) where this returns true.
+  std::function<bool(int col, int row)> masked;
 };
 
 /// Writes the raster as a GeoTIFF (or with the named GDAL driver) and returns the path.
