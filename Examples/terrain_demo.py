@@ -62,6 +62,14 @@ def light_terrain(terrain, when):
     return sun, radiosity
 
 
+def write_xml(writer, data, path):
+    """Writes a data set with a VTK XML writer and says so."""
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    writer.Write()
+    print("wrote", path)
+
+
 def render_shaded_relief(surface, png, size=(1000, 1000), array="Elevation", tint=None):
     """Hillshade as GIS tools draw it: sun from the north-west, 45 deg up, hypsometric tint."""
     from vtkmodules.vtkIOImage import vtkPNGWriter
@@ -142,12 +150,8 @@ def main():
           % (os.path.basename(args.dem), *grid.GetDimensions()[:2], lat, lon, height,
              *grid.GetPointData().GetArray("Elevation").GetRange()))
 
-    vtp = os.path.join(args.output_dir, "terrain.vtp")
-    writer = vtkXMLPolyDataWriter()
-    writer.SetFileName(vtp)
-    writer.SetInputConnection(surface.GetOutputPort())
-    writer.Write()
-    print("wrote", vtp)
+    surface.Update()
+    write_xml(vtkXMLPolyDataWriter(), surface.GetOutput(), os.path.join(args.output_dir, "terrain.vtp"))
 
     if not os.environ.get("DISPLAY"):
         # Debian's VTK renders only through X; without one the render window aborts.
@@ -167,18 +171,8 @@ def main():
              fields.GetArray("Elements").GetValue(0), fields.GetArray("Links").GetValue(0),
              sum(fields.GetArray(n).GetValue(0) for n in
                  ("SecondsVisibilityBuild", "SecondsRefine", "SecondsGather", "SecondsPushPull"))))
-    vts = os.path.join(args.output_dir, "irradiance.vts")
-    grid_writer = vtkXMLStructuredGridWriter()
-    grid_writer.SetFileName(vts)
-    grid_writer.SetInputData(lit)
-    grid_writer.Write()
-    print("wrote", vts)
-    leaves = os.path.join(args.output_dir, "leaves.vtp")
-    leaf_writer = vtkXMLPolyDataWriter()
-    leaf_writer.SetFileName(leaves)
-    leaf_writer.SetInputData(radiosity.GetLeafMeshOutput())
-    leaf_writer.Write()
-    print("wrote", leaves)
+    write_xml(vtkXMLStructuredGridWriter(), lit, os.path.join(args.output_dir, "irradiance.vts"))
+    write_xml(vtkXMLPolyDataWriter(), radiosity.GetLeafMeshOutput(), os.path.join(args.output_dir, "leaves.vtp"))
     lit_surface = vtkDataSetSurfaceFilter()
     lit_surface.SetInputData(lit)
     lit_normals = vtkPolyDataNormals()
