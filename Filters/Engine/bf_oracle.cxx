@@ -2,7 +2,7 @@
 
 #include "cluster.h"
 #include "sky_patch_element.h"
-#include "terrain_patch.h"
+#include "polygon_element.h"
 
 #include <algorithm>
 #include <limits>
@@ -28,15 +28,11 @@ double relativeSize(const HElement& element, double sceneArea)
 }
 } // namespace
 
-// Whether the element's kernels come from a far-field model: clusters, and terrain
-// patches too large for exact form factors (their coarse quad can be far from the
-// surface near them).
+// Whether the element's kernels come from a far-field model: clusters, and surfaces
+// whose form factors use an approximate shape (large terrain patches).
 bool approximated(const HElement& e)
 {
-  if (e.isCluster())
-    return true;
-  const auto* patch = dynamic_cast<const TerrainPatch*>(&e);
-  return patch && !patch->exactFormFactors();
+  return e.isCluster() || (e.isSurface() && static_cast<const PolygonElement&>(e).approximateShape());
 }
 
 // Bounding radius of the approximated element(s) of a link over the distance between centres.
@@ -48,7 +44,7 @@ double approximatedSizeOverDistance(const HElement& receiver, const HElement& se
     if (e.isCluster())
       return 0.5 * glm::length(static_cast<const Cluster&>(e).high() - static_cast<const Cluster&>(e).low());
     Vec3 low, high;
-    static_cast<const TerrainPatch&>(e).bounds(low, high);
+    static_cast<const PolygonElement&>(e).bounds(low, high);
     return 0.5 * glm::length(high - low);
   };
   const double distance = glm::length(sender.centre() - receiver.centre());
@@ -65,20 +61,20 @@ double linkPower(const HElement& receiver, const Link& link)
   return emittance * link.kernel * link.visibility * receiver.area() * (link.directional ? receiver.scaleFactor() : 1.0);
 }
 
-bool terrainLightsItself(const HElement& element, const OracleSettings& settings)
+bool lightsItself(const HElement& element, const OracleSettings& settings)
 {
-  const auto* patch = dynamic_cast<const TerrainPatch*>(&element);
-  if (!patch || !patch->complete())
+  if (!element.isSurface())
   {
     return false;
   }
+  const auto& surface = static_cast<const PolygonElement&>(element);
   double radiosity = 0.0;
   for (int band = 0; band < maxBands; ++band)
   {
-    radiosity = std::max({ radiosity, patch->Radiosity[band],
-      patch->emission()[band] + patch->reflectance()[band] * settings.meanIrradiance });
+    radiosity = std::max({ radiosity, surface.Radiosity[band],
+      surface.emission()[band] + surface.reflectance()[band] * settings.meanIrradiance });
   }
-  return radiosity * patch->unalignedArea() > settings.powerThreshold;
+  return radiosity * surface.unalignedArea() > settings.powerThreshold;
 }
 
 Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSettings& settings)

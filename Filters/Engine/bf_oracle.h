@@ -29,10 +29,10 @@ double linkPower(const HElement& receiver, const Link& link);
 
 Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSettings& settings);
 
-/// Whether a terrain patch lights itself enough for its self-link to be split into
-/// links between its parts. A surface of area A whose area vector has length |N|
-/// sends at most B (A - |N|) onto itself (all of it in a cavity, nothing on a flat
-/// or convex patch); B is its radiosity or, before the first gather, its reflectance
-/// times the scene's mean irradiance. False for anything but a terrain patch.
-bool terrainLightsItself(const HElement& element, const OracleSettings& settings);
+/// Whether a surface lights itself enough for its self-link to be split into links
+/// between its parts. A surface of area A whose area vector has length |N| sends at
+/// most B (A - |N|) onto itself (all of it in a cavity, nothing on a flat or convex
+/// surface: planar polygons never); B is its radiosity or, before the first gather,
+/// its reflectance times the scene's mean irradiance. False for non-surfaces.
+bool lightsItself(const HElement& element, const OracleSettings& settings);
 } // namespace terralux

@@ -4,7 +4,6 @@
 #include "point_form_factor.h"
 #include "polygon_element.h"
 #include "sky_patch_element.h"
-#include "terrain_patch.h"
 #include "visibility.h"
 
 #include <algorithm>
@@ -113,23 +112,22 @@ double clusterKernel(const HElement& sender, const Vec3& towardSender, double di
 
 namespace
 {
-// A terrain patch too large for exact form factors with a point within twice its
-// bounding radius of its centre: there its coarse quad may pass far from the surface
-// around the point (a point on the patch's border can even lie under the quad).
-bool nearCoarseTerrain(const Vec3& point, const HElement& sender)
+// A surface of approximate shape with a point within twice its bounding radius of its
+// centre: there its coarse quad may pass far from the surface around the point (a
+// point on a terrain patch's border can even lie under the quad).
+bool nearApproximateShape(const Vec3& point, const HElement& sender)
 {
-  const auto* patch = dynamic_cast<const TerrainPatch*>(&sender);
-  if (!patch || patch->exactFormFactors())
+  if (!sender.isSurface() || !static_cast<const PolygonElement&>(sender).approximateShape())
     return false;
   Vec3 low, high;
-  patch->bounds(low, high);
-  return glm::length(point - patch->centre()) < glm::length(high - low);
+  static_cast<const PolygonElement&>(sender).bounds(low, high);
+  return glm::length(point - sender.centre()) < glm::length(high - low);
 }
 
-// Form factor x visibility from a point to a terrain patch's true surface, by its own
-// samples: each carries area A / N, seen like a disc of that area (Wallace et al.
-// 1989), which stays bounded as the point nears the surface.
-double sampledFormFactor(const Vec3& point, const Vec3& n, const TerrainPatch& sender, const Visibility& visibility,
+// Form factor x visibility from a point to a surface's true shape, by its own samples:
+// each carries area A / N, seen like a disc of that area (Wallace et al. 1989), which
+// stays bounded as the point nears the surface.
+double sampledFormFactor(const Vec3& point, const Vec3& n, const HElement& sender, const Visibility& visibility,
   int samples, SampleGenerator& random)
 {
   const double share = sender.area() / samples;
@@ -273,9 +271,9 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
     }
     default:
     {
-      if (samples > 0 && nearCoarseTerrain(point, sender))
+      if (samples > 0 && nearApproximateShape(point, sender))
       {
-        return sampledFormFactor(point, n, static_cast<const TerrainPatch&>(sender), visibility, samples, random);
+        return sampledFormFactor(point, n, sender, visibility, samples, random);
       }
       double kernel = 0.0;
       auto formFactor = [&](const PolygonElement& polygon) {
@@ -322,12 +320,13 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
 namespace
 {
 // How much the cosine toward a source at infinity varies over a surface receiver, per
-// unit kernel: the share of a terrain patch's area not aligned with its mean normal
-// (0 for planar polygons, whose cosine is the same everywhere).
+// unit kernel: the share of its area not aligned with its mean normal (0 for planar
+// polygons, whose cosine is the same everywhere).
 double cosineSpread(const HElement& receiver)
 {
-  const auto* patch = dynamic_cast<const TerrainPatch*>(&receiver);
-  return patch && patch->area() > 0.0 ? patch->unalignedArea() / patch->area() : 0.0;
+  if (!receiver.isSurface() || !(receiver.area() > 0.0))
+    return 0.0;
+  return static_cast<const PolygonElement&>(receiver).unalignedArea() / receiver.area();
 }
 } // namespace
 

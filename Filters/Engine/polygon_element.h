@@ -36,6 +36,14 @@ public:
   /// Whether every descendant has this element's normal, so irradiance from sources at
   /// infinity gathered here holds for them as is (planar polygons; not terrain patches).
   virtual bool childrenShareNormal() const { return true; }
+  /// Whether formFactorFrom is a far-field approximation of the surface (a large
+  /// terrain patch's coarse quad): near the element, links are refined and points
+  /// sample its true surface instead.
+  virtual bool approximateShape() const { return false; }
+  /// Area not aligned with the mean normal, A - |sum A_i n_i|: 0 for a planar polygon.
+  /// It bounds both how much the surface lights itself and how far its parts' cosines
+  /// toward a source differ from the mean one.
+  double unalignedArea() const { return this->UnalignedArea; }
 
   /// Area of a planar polygon and its unit normal (right-handed corner order);
   /// returns 0 area for degenerate input.
@@ -61,6 +69,7 @@ protected:
   Vec3 Normal{ 0.0, 0.0, 1.0 };
   Vec3 Centre{ 0.0 };
   double Area = 0.0;
+  double UnalignedArea = 0.0;
   Spectrum Reflectance;
   Spectrum Emission;
   int RootPolygon;

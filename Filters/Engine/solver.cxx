@@ -192,7 +192,7 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
           for (HElement* member : receiver->children())
             addChildLinks(receiver, member, true);
         }
-        else if (terrainLightsItself(*receiver, oracle) && !receiver->children().empty())
+        else if (lightsItself(*receiver, oracle) && !receiver->children().empty())
         {
           ++splits;
           for (HElement* part : receiver->children())

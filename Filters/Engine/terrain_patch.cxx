@@ -180,14 +180,14 @@ double TerrainPatch::receiverFactor(const Vec3& towardSender) const
     static_cast<int>(this->Range.u1), static_cast<int>(this->Range.v1), towardSender);
 }
 
-bool TerrainPatch::exactFormFactors() const
+bool TerrainPatch::approximateShape() const
 {
-  return wholeCells(this->Range) && 2.0 * this->Range.width() * this->Range.height() <= exactTriangles;
+  return !(wholeCells(this->Range) && 2.0 * this->Range.width() * this->Range.height() <= exactTriangles);
 }
 
 double TerrainPatch::formFactorFrom(const Vec3& x, const Vec3& n) const
 {
-  if (!this->exactFormFactors())
+  if (this->approximateShape())
   {
     return PolygonElement::formFactorFrom(x, n);
   }

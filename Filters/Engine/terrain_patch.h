@@ -56,13 +56,9 @@ public:
   /// point the coarse quad can be far from the surface); the coarse quad beyond.
   double formFactorFrom(const Vec3& x, const Vec3& n) const override;
   static constexpr int exactTriangles = 32;
-  /// Whether form factors to this patch use its true triangles.
-  bool exactFormFactors() const;
+  /// True unless form factors to this patch use its true triangles.
+  bool approximateShape() const override;
 
-  /// Area not aligned with the mean normal, A - |sum A_i n_i|: 0 for a flat patch. It
-  /// bounds both how much the patch lights itself and how far its parts' cosines
-  /// toward a source differ from the mean one.
-  double unalignedArea() const { return this->UnalignedArea; }
 
   /// The child ranges of a range: halved at a post along each side longer than one cell;
   /// a single cell or less is halved along both sides.
@@ -77,7 +73,6 @@ private:
   TerrainPatch* Up;
   int TerrainIndex;
   bool Complete = true;
-  double UnalignedArea = 0.0;
   Vec3 Low{ 0.0 }, High{ 0.0 };
 };
 } // namespace terralux
