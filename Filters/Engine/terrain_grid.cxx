@@ -65,33 +65,36 @@ Spectrum TerrainGrid::cellEmission(int i, int j) const
   return this->CellEmission.empty() ? this->UniformEmission : this->CellEmission[this->cellIndex(i, j)];
 }
 
+std::array<TerrainGrid::Triangle, 2> TerrainGrid::cellTriangles(int i, int j) const
+{
+  const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1),
+             p11 = this->post(i + 1, j + 1);
+  return { Triangle{ p00, p10, p01 }, Triangle{ p11, p01, p10 } };
+}
+
 TerrainPoint TerrainGrid::surfacePoint(double u, double v) const
 {
   const int i = std::clamp(static_cast<int>(std::floor(u)), 0, this->Nx - 2);
   const int j = std::clamp(static_cast<int>(std::floor(v)), 0, this->Ny - 2);
   const double s = std::clamp(u - i, 0.0, 1.0), t = std::clamp(v - j, 0.0, 1.0);
-  const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1);
-  const Vec3 p11 = this->post(i + 1, j + 1);
   const bool lower = s + t <= 1.0;
-  const Vec3 n = lower ? glm::cross(p10 - p00, p01 - p00) : glm::cross(p01 - p11, p10 - p11);
+  const Triangle tri = this->cellTriangles(i, j)[lower ? 0 : 1];
+  // Coordinates along the triangle's two edges from its first corner.
+  const double a = lower ? s : 1.0 - s, b = lower ? t : 1.0 - t;
+  const Vec3 n = areaVector(tri);
   const double length = glm::length(n);
   const Vec3 normal = length > 0.0 ? n / length : Vec3(0.0, 0.0, 1.0);
-  if ((s == 0.0 || s == 1.0) && (t == 0.0 || t == 1.0))
+  if ((a == 0.0 || a == 1.0) && (b == 0.0 || b == 1.0))
   {
-    return { s == 0.0 ? (t == 0.0 ? p00 : p01) : (t == 0.0 ? p10 : p11), normal }; // a post, exactly
+    return { a == 1.0 ? tri[1] : (b == 1.0 ? tri[2] : tri[0]), normal }; // a post, exactly
   }
-  if (lower)
-  {
-    return { p00 + s * (p10 - p00) + t * (p01 - p00), normal };
-  }
-  return { p11 + (1.0 - s) * (p01 - p11) + (1.0 - t) * (p10 - p11), normal };
+  return { tri[0] + a * (tri[1] - tri[0]) + b * (tri[2] - tri[0]), normal };
 }
 
 Vec3 TerrainGrid::cellAreaVector(int i, int j) const
 {
-  const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1),
-             p11 = this->post(i + 1, j + 1);
-  return 0.5 * (glm::cross(p10 - p00, p01 - p00) + glm::cross(p01 - p11, p10 - p11));
+  const auto cell = this->cellTriangles(i, j);
+  return areaVector(cell[0]) + areaVector(cell[1]);
 }
 
 TerrainRangeSummary TerrainGrid::summarize(int i0, int j0, int i1, int j1) const
@@ -106,14 +109,16 @@ TerrainRangeSummary TerrainGrid::summarize(int i0, int j0, int i1, int j1) const
         ++sum.cells;
         if (!this->cellValid(i, j))
           continue;
-        const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1),
-                   p11 = this->post(i + 1, j + 1);
-        const Vec3 a = 0.5 * glm::cross(p10 - p00, p01 - p00), b = 0.5 * glm::cross(p01 - p11, p10 - p11);
+        const auto cell = this->cellTriangles(i, j);
+        const Vec3 a = areaVector(cell[0]), b = areaVector(cell[1]);
         const double area = glm::length(a) + glm::length(b);
         sum.area += area;
         sum.areaVector += a + b;
-        sum.low = glm::min(glm::min(sum.low, glm::min(p00, p10)), glm::min(p01, p11));
-        sum.high = glm::max(glm::max(sum.high, glm::max(p00, p10)), glm::max(p01, p11));
+        for (const Vec3& p : { cell[0][0], cell[0][1], cell[0][2], cell[1][0] }) // the four posts
+        {
+          sum.low = glm::min(sum.low, p);
+          sum.high = glm::max(sum.high, p);
+        }
         ++sum.validCells;
         const Spectrum rho = this->cellReflectance(i, j), e = this->cellEmission(i, j);
         for (int band = 0; band < maxBands; ++band)
@@ -162,10 +167,9 @@ double TerrainGrid::meanCosine(int i0, int j0, int i1, int j1, const Vec3& d) co
     {
       if (!this->cellValid(i, j))
         continue;
-      const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1),
-                 p11 = this->post(i + 1, j + 1);
-      for (const Vec3& a : { 0.5 * glm::cross(p10 - p00, p01 - p00), 0.5 * glm::cross(p01 - p11, p10 - p11) })
+      for (const Triangle& triangle : this->cellTriangles(i, j))
       {
+        const Vec3 a = areaVector(triangle);
         weighted += std::max(0.0, glm::dot(a, d)); // |a| max(0, n . d)
         area += glm::length(a);
       }
@@ -184,13 +188,12 @@ Vec3 TerrainGrid::postNormal(int i, int j) const
     {
       if (!this->cellValid(ci, cj))
         continue;
-      const Vec3 p00 = this->post(ci, cj), p10 = this->post(ci + 1, cj), p01 = this->post(ci, cj + 1),
-                 p11 = this->post(ci + 1, cj + 1);
+      const auto cell = this->cellTriangles(ci, cj);
       const bool lowerLeft = ci == i && cj == j, upperRight = ci < i && cj < j;
       if (!upperRight)
-        sum += glm::cross(p10 - p00, p01 - p00);
+        sum += areaVector(cell[0]);
       if (!lowerLeft)
-        sum += glm::cross(p01 - p11, p10 - p11);
+        sum += areaVector(cell[1]);
     }
   const double length = glm::length(sum);
   return length > 0.0 ? sum / length : Vec3(0.0, 0.0, 1.0);

@@ -7,6 +7,7 @@
 
 #include "radiosity_types.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -53,6 +54,14 @@ public:
   void setCellMaterial(int i, int j, const Spectrum& reflectance, const Spectrum& emission);
   Spectrum cellReflectance(int i, int j) const;
   Spectrum cellEmission(int i, int j) const;
+
+  using Triangle = std::array<Vec3, 3>;
+  /// The two triangles of cell (i, j), split as Embree splits its grids: lower
+  /// (p00, p10, p01) and upper (p11, p01, p10), counter-clockwise seen from above. Every
+  /// use of the cell's surface goes through here, so all agree with what rays hit.
+  std::array<Triangle, 2> cellTriangles(int i, int j) const;
+  /// Area x unit normal of a triangle.
+  static Vec3 areaVector(const Triangle& t) { return 0.5 * glm::cross(t[1] - t[0], t[2] - t[0]); }
 
   /// The surface at parameter (u, v) inside a valid cell (clamped to the grid).
   TerrainPoint surfacePoint(double u, double v) const;

@@ -195,15 +195,12 @@ double TerrainPatch::formFactorFrom(const Vec3& x, const Vec3& n) const
   for (int j = static_cast<int>(this->Range.v0); j < this->Range.v1; ++j)
     for (int i = static_cast<int>(this->Range.u0); i < this->Range.u1; ++i)
     {
-      const Vec3 p00 = this->Grid->post(i, j), p10 = this->Grid->post(i + 1, j), p01 = this->Grid->post(i, j + 1),
-                 p11 = this->Grid->post(i + 1, j + 1);
-      const Vec3 lower[3] = { p00, p10, p01 }, upper[3] = { p11, p01, p10 };
-      for (const Vec3* t : { lower, upper })
+      for (const TerrainGrid::Triangle& triangle : this->Grid->cellTriangles(i, j))
       {
-        const Vec3 a = glm::cross(t[1] - t[0], t[2] - t[0]);
+        const Vec3 a = TerrainGrid::areaVector(triangle);
         const double length = glm::length(a);
         if (length > 0.0)
-          sum += pointToPolygonFormFactor(x, n, t, 3, a / length);
+          sum += pointToPolygonFormFactor(x, n, triangle.data(), 3, a / length);
       }
     }
   return sum;
