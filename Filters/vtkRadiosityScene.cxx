@@ -79,6 +79,7 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
   auto terrain = std::make_unique<terralux::TerrainGrid>(dims[0], dims[1], std::isfinite(centre.x) &&
       std::isfinite(centre.y) && std::isfinite(centre.z) ? centre : terralux::Vec3(0.0));
   std::atomic<vtkIdType> badPoint{ -1 };
+  std::atomic<bool> anyNonFinite{ false };
   const bool blanking = grid->HasAnyBlankCells() || grid->HasAnyBlankPoints();
   vtkSMPTools::For(0, dims[1], [&](vtkIdType first, vtkIdType last) {
     double p[3];
@@ -88,6 +89,8 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
         grid->GetPoint(i + static_cast<vtkIdType>(j) * dims[0], p);
         const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
         terrain->setPost(i, j, finite ? terralux::Vec3(p[0], p[1], p[2]) : terrain->origin());
+        if (!finite)
+          anyNonFinite = true;
         if (i + 1 < dims[0] && j + 1 < dims[1])
         {
           const vtkIdType cell = i + static_cast<vtkIdType>(j) * (dims[0] - 1);
@@ -95,8 +98,9 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
         }
       }
   });
-  // Posts with NaN or infinite coordinates are allowed only where no visible cell uses them.
-  vtkSMPTools::For(0, dims[1] - 1, [&](vtkIdType first, vtkIdType last) {
+  // Posts with NaN or infinite coordinates are allowed only where no visible cell uses
+  // them; the cells are checked only when there are such posts.
+  vtkSMPTools::For(0, anyNonFinite ? dims[1] - 1 : 0, [&](vtkIdType first, vtkIdType last) {
     double p[3];
     for (int j = static_cast<int>(first); j < last; ++j)
       for (int i = 0; i + 1 < dims[0]; ++i)
