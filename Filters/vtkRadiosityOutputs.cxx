@@ -157,19 +157,6 @@ std::vector<double> flatLeafValues(const terralux::TerrainLeafMesh& mesh)
   return flat;
 }
 
-// The leaf below `patch` whose closed range holds (u, v), or null.
-const terralux::TerrainPatch* leafHolding(const terralux::TerrainPatch& patch, double u, double v)
-{
-  if (!patch.range().contains(u, v))
-    return nullptr;
-  if (patch.existingChildren().empty())
-    return patch.complete() ? &patch : nullptr;
-  for (const terralux::HElement* child : patch.existingChildren())
-    if (auto* leaf = leafHolding(static_cast<const terralux::TerrainPatch&>(*child), u, v))
-      return leaf;
-  return nullptr;
-}
-
 // Per-post arrays of a terrain input: evaluated at each post, or interpolated from the
 // continuous leaf mesh.
 void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const terralux::TerrainPatch* root,
@@ -201,7 +188,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
           {
             if (!grid.postUsed(i, j))
               continue;
-            const terralux::TerrainPatch* leaf = leafHolding(*root, i, j);
+            const terralux::TerrainPatch* leaf = root->leafHolding(i, j);
             if (!leaf)
               continue;
             const terralux::PointIrradiance result = solver.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j));
@@ -231,7 +218,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
             for (int i = static_cast<int>(std::ceil(r.u0)); i <= static_cast<int>(std::floor(r.u1)); ++i)
             {
               const bool border = i == r.u0 || i == r.u1 || j == r.v0 || j == r.v1;
-              if (!grid.postUsed(i, j) || (border && leafHolding(*root, i, j) != &leaf))
+              if (!grid.postUsed(i, j) || (border && root->leafHolding(i, j) != &leaf))
                 continue;
               mesh.interpolate(static_cast<std::size_t>(k), vertexValues, valueComponents, i, j, flat);
               Values v{};

@@ -132,6 +132,18 @@ TerrainPatch* TerrainPatch::buildTree(
   return buildNode(store, grid, terrainIndex, whole, nullptr, 0, complete);
 }
 
+const TerrainPatch* TerrainPatch::leafHolding(double u, double v) const
+{
+  if (!this->Range.contains(u, v))
+    return nullptr;
+  if (this->Children.empty())
+    return this->Complete ? this : nullptr;
+  for (const HElement* child : this->Children)
+    if (const TerrainPatch* leaf = static_cast<const TerrainPatch*>(child)->leafHolding(u, v))
+      return leaf;
+  return nullptr;
+}
+
 bool TerrainPatch::canSplit() const
 {
   if (!this->Complete)

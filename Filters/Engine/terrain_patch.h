@@ -39,6 +39,9 @@ public:
   TerrainPatch* up() const { return this->Up; }
   /// Children that exist now, without creating any.
   const std::vector<HElement*>& existingChildren() const { return this->Children; }
+  /// The leaf below this patch whose closed range holds parameter (u, v) (the first one
+  /// found on shared borders), or null: outside the range, or in a hole.
+  const TerrainPatch* leafHolding(double u, double v) const;
   /// False for structural patches that hold missing cells.
   bool complete() const { return this->Complete; }
   int terrain() const { return this->TerrainIndex; }

@@ -292,15 +292,8 @@ void forEachPost(const HierarchicalRadiosity& solver, const TerrainGrid& grid, C
   for (int j = 0; j < grid.postsY(); ++j)
     for (int i = 0; i < grid.postsX(); ++i)
     {
-      const TerrainPatch* leaf = root;
-      while (!leaf->existingChildren().empty())
-      {
-        const TerrainPatch* next = nullptr;
-        for (const HElement* c : leaf->existingChildren())
-          if (static_cast<const TerrainPatch*>(c)->range().contains(i, j))
-            next = static_cast<const TerrainPatch*>(c);
-        leaf = next;
-      }
+      const TerrainPatch* leaf = root->leafHolding(i, j);
+      ASSERT_NE(leaf, nullptr) << i << ", " << j;
       check(i, j, solver.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
     }
 }
