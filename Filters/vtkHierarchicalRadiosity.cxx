@@ -1,7 +1,8 @@
 #include "vtkHierarchicalRadiosity.h"
 
 #include "vtkCompositeDataSet.h"
-#include "vtkDataObjectTreeIterator.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkDataObjectTree.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -17,6 +18,7 @@
 #include "vtkStructuredGrid.h"
 
 #include "error.h"
+#include "finite_parameters.h"
 #include "solver.h"
 
 #include <vector>
@@ -34,8 +36,8 @@ std::vector<vtkDataSet*> inputDataSets(vtkInformationVector* port)
     vtkDataObject* data = port->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT());
     if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
     {
-      vtkSmartPointer<vtkDataObjectTreeIterator> it;
-      it.TakeReference(vtkDataObjectTreeIterator::SafeDownCast(composite->NewIterator()));
+      vtkSmartPointer<vtkCompositeDataIterator> it;
+      it.TakeReference(composite->NewIterator());
       for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
         if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
           result.push_back(dataSet);
@@ -73,6 +75,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , VisibilitySamples(4)
   , MaximumIterations(30)
   , ConvergenceTolerance(1e-3)
+  , MaximumNumberOfElements(4000000)
   , DefaultReflectance(0.2)
   , ReflectanceArrayName(nullptr)
   , EmissionArrayName(nullptr)
@@ -161,12 +164,13 @@ vtkTypeBool vtkHierarchicalRadiosity::ProcessRequest(
 int vtkHierarchicalRadiosity::RequestDataObject(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // One plain input: output 0 has its type; several or a composite: a multiblock.
+  // One input: output 0 has its type (a composite keeps its structure); several: a
+  // multiblock with a block per input.
   vtkDataObject* first = inputVector[0]->GetNumberOfInformationObjects() == 1
     ? inputVector[0]->GetInformationObject(0)->Get(vtkDataObject::DATA_OBJECT())
     : nullptr;
   vtkSmartPointer<vtkDataObject> wanted;
-  if (first && (first->IsA("vtkPolyData") || first->IsA("vtkStructuredGrid")))
+  if (first && (first->IsA("vtkPolyData") || first->IsA("vtkStructuredGrid") || first->IsA("vtkDataObjectTree")))
   {
     wanted.TakeReference(first->NewInstance());
   }
@@ -198,50 +202,75 @@ int vtkHierarchicalRadiosity::RequestData(
   vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
   vtkPolyData* leafMesh = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* links = vtkPolyData::GetData(outputVector, 2);
-  output->Initialize();
-  leafMesh->Initialize();
-  links->Initialize();
-
-  vtkRadiosityScene scene;
-  std::unique_ptr<terralux::HierarchicalRadiosity> solver;
+  auto clearOutputs = [&]() {
+    output->Initialize();
+    leafMesh->Initialize();
+    links->Initialize();
+  };
+  clearOutputs();
   try
   {
-    const std::vector<vtkDataSet*> inputs = inputDataSets(inputVector[0]);
-    for (vtkDataSet* input : inputs)
-    {
-      scene.AddDataSet(input, this->DefaultReflectance, this->ReflectanceArrayName, this->EmissionArrayName,
-        this->UseTerrainHierarchy != 0);
-    }
-    for (int k = 0; k < inputVector[1]->GetNumberOfInformationObjects(); ++k)
-    {
-      scene.AddLight(inputVector[1]->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()));
-    }
-    if (!scene.Sky && !scene.HasSun && !scene.HasEmission)
-    {
-      throw terralux::Error("no light source: connect a vtkSunSource or vtkSkySource with "
-                            "AddLightConnection(), or give an EmissionArrayName");
-    }
-    terralux::RadiosityOptions options;
-    options.errorTolerance = this->ErrorTolerance;
-    options.minimumElementArea = this->MinimumElementArea;
-    options.visibilitySamples = this->VisibilitySamples;
-    options.maximumIterations = this->MaximumIterations;
-    options.convergenceTolerance = this->ConvergenceTolerance;
-    solver = std::make_unique<terralux::HierarchicalRadiosity>(scene.Scene, options);
+    const int status = this->Solve(inputVector, output, leafMesh, links);
+    if (status == 0)
+      clearOutputs();
+    return status;
   }
   catch (const terralux::Error& error)
   {
     vtkErrorMacro(<< error.what());
-    return 0;
   }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory: raise ErrorTolerance or MinimumElementArea, lower "
+                  "MaximumNumberOfElements, or give fewer posts (vtkTerrainSource's Stride).");
+  }
+  catch (const std::exception& error)
+  {
+    vtkErrorMacro("Radiosity failed: " << error.what());
+  }
+  clearOutputs();
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkHierarchicalRadiosity::Solve(
+  vtkInformationVector** inputVector, vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links)
+{
+  terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
+    { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
+    { "DefaultReflectance", this->DefaultReflectance } });
+  vtkRadiosityScene scene;
+  const std::vector<vtkDataSet*> inputs = inputDataSets(inputVector[0]);
+  for (vtkDataSet* input : inputs)
+  {
+    scene.AddDataSet(input, this->DefaultReflectance, this->ReflectanceArrayName, this->EmissionArrayName,
+      this->UseTerrainHierarchy != 0);
+  }
+  for (int k = 0; k < inputVector[1]->GetNumberOfInformationObjects(); ++k)
+  {
+    scene.AddLight(inputVector[1]->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()));
+  }
+  if (!scene.Sky && scene.Suns.empty() && !scene.HasEmission)
+  {
+    throw terralux::Error("no light source: connect a vtkSunSource or vtkSkySource with "
+                          "AddLightConnection(), or give an EmissionArrayName");
+  }
+  terralux::RadiosityOptions options;
+  options.errorTolerance = this->ErrorTolerance;
+  options.minimumElementArea = this->MinimumElementArea;
+  options.visibilitySamples = this->VisibilitySamples;
+  options.maximumIterations = this->MaximumIterations;
+  options.convergenceTolerance = this->ConvergenceTolerance;
+  options.maximumElements = static_cast<std::size_t>(this->MaximumNumberOfElements);
+  auto solver = std::make_unique<terralux::HierarchicalRadiosity>(scene.Scene, options);
   if (solver->degeneratePolygons() > 0)
   {
     vtkWarningMacro("Skipped " << solver->degeneratePolygons()
                                << " degenerate polygon(s) with zero area.");
   }
-  if (scene.HasSun)
+  for (const vtkRadiosityScene::SunLight& sun : scene.Suns)
   {
-    solver->setSun(scene.SunDirection, scene.SunIrradiance);
+    solver->addSun(sun.direction, sun.irradiance);
   }
   solver->setSky(scene.Sky.get());
   this->UpdateProgress(0.1);
@@ -251,31 +280,68 @@ int vtkHierarchicalRadiosity::RequestData(
     vtkWarningMacro("Aborted.");
     return 1;
   }
-
-  // Output 0: the inputs, same points and cells, with the point arrays.
-  auto addResults = [&](vtkDataSet* copy, int index) {
-    vtkRadiosityOutputs::AddPointArrays(
-      *solver, scene, index, this->NumberOfBands, this->EvaluateAtPoints != 0, copy);
-  };
-  if (auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(output))
+  const terralux::RadiosityStatistics& stats = solver->statistics();
+  if (stats.elementBudgetReached)
   {
-    multiblock->SetNumberOfBlocks(static_cast<unsigned int>(scene.Inputs.size()));
-    for (std::size_t k = 0; k < scene.Inputs.size(); ++k)
+    vtkWarningMacro("Refinement stopped at MaximumNumberOfElements ("
+      << this->MaximumNumberOfElements << " elements): the solution is coarser than ErrorTolerance "
+      << this->ErrorTolerance << " asks. Raise ErrorTolerance or MaximumNumberOfElements.");
+  }
+  if (!stats.converged)
+  {
+    vtkWarningMacro("Radiosity did not converge in MaximumIterations (" << this->MaximumIterations
+      << "): the estimated remaining change of radiosity is " << stats.residual
+      << " of the largest, above ConvergenceTolerance " << this->ConvergenceTolerance
+      << ". Raise MaximumIterations.");
+  }
+
+  // Output 0: the inputs, same points and cells and the same composite structure,
+  // with the point arrays.
+  int index = 0;
+  auto withResults = [&](vtkDataSet* input) {
+    vtkSmartPointer<vtkDataSet> copy;
+    copy.TakeReference(input->NewInstance());
+    copy->ShallowCopy(input);
+    vtkRadiosityOutputs::AddPointArrays(
+      *solver, scene, index++, this->NumberOfBands, this->EvaluateAtPoints != 0, copy);
+    return copy;
+  };
+  auto copyComposite = [&](vtkCompositeDataSet* input) {
+    vtkSmartPointer<vtkCompositeDataSet> copy;
+    copy.TakeReference(input->NewInstance());
+    copy->CopyStructure(input);
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(input->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+        copy->SetDataSet(it, withResults(dataSet));
+    return copy;
+  };
+  const int connections = inputVector[0]->GetNumberOfInformationObjects();
+  auto inputAt = [&](int k) { return inputVector[0]->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()); };
+  if (connections == 1 && vtkCompositeDataSet::SafeDownCast(inputAt(0)))
+  {
+    output->ShallowCopy(copyComposite(vtkCompositeDataSet::SafeDownCast(inputAt(0))));
+  }
+  else if (auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(output))
+  {
+    multiblock->SetNumberOfBlocks(static_cast<unsigned int>(connections));
+    for (int k = 0; k < connections; ++k)
     {
-      vtkSmartPointer<vtkDataSet> copy;
-      copy.TakeReference(scene.Inputs[k].data->NewInstance());
-      copy->ShallowCopy(scene.Inputs[k].data);
-      addResults(copy, static_cast<int>(k));
-      multiblock->SetBlock(static_cast<unsigned int>(k), copy);
+      vtkDataObject* input = inputAt(k);
+      if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+        multiblock->SetBlock(static_cast<unsigned int>(k), copyComposite(composite));
+      else if (auto* dataSet = vtkDataSet::SafeDownCast(input))
+        multiblock->SetBlock(static_cast<unsigned int>(k), withResults(dataSet));
     }
   }
   else
   {
     auto* dataSet = vtkDataSet::SafeDownCast(output);
     dataSet->ShallowCopy(scene.Inputs[0].data);
-    addResults(dataSet, 0);
+    vtkRadiosityOutputs::AddPointArrays(
+      *solver, scene, 0, this->NumberOfBands, this->EvaluateAtPoints != 0, dataSet);
   }
-  const terralux::RadiosityStatistics& stats = solver->statistics();
   vtkFieldData* fieldData = output->GetFieldData();
   auto addValue = [&](const char* name, double value) {
     vtkNew<vtkDoubleArray> array;
@@ -287,6 +353,7 @@ int vtkHierarchicalRadiosity::RequestData(
   addValue("Links", static_cast<double>(stats.links));
   addValue("Rays", static_cast<double>(solver->raysCast())); // the solve's and the points'
   addValue("Iterations", stats.iterations);
+  addValue("Residual", stats.residual);
   addValue("DegeneratePolygons", static_cast<double>(solver->degeneratePolygons()));
   addValue("SecondsVisibilityBuild", stats.secondsVisibilityBuild);
   addValue("SecondsRefine", stats.secondsRefine);
@@ -308,6 +375,7 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
+  os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";
   os << indent << "DefaultReflectance: " << this->DefaultReflectance << "\n";
   os << indent << "ReflectanceArrayName: " << (this->ReflectanceArrayName ? this->ReflectanceArrayName : "(none)") << "\n";
   os << indent << "EmissionArrayName: " << (this->EmissionArrayName ? this->EmissionArrayName : "(none)") << "\n";

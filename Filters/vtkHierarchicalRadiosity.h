@@ -16,10 +16,15 @@
  * array ReflectanceArrayName (1 or 3 components) or DefaultReflectance; optional
  * emission (radiosity, W/m^2) from EmissionArrayName.
  * Input port 1 (optional, repeatable): the light sources, vtkSkySource output 0 (its
- * radiance map) and vtkSunSource output.
+ * radiance map) and vtkSunSource output. Every source connected counts: several suns
+ * add their light, several skies are summed into one sky.
  *
- * Output port 0: the input geometry (same points and cells; a vtkMultiBlockDataSet when
- * there are several inputs or a composite one) with point data `Irradiance` (global),
+ * Polygons of more than four points, and concave quads, are ear-clipped into
+ * triangles (a fan would cover a notch); self-intersecting ones are refused.
+ *
+ * Output port 0: the input geometry (same points and cells; one input gives its own type,
+ * a composite input a composite of the same structure, null and empty blocks kept;
+ * several inputs a vtkMultiBlockDataSet with one block per input) with point data `Irradiance` (global),
  * `SunIrradiance`, `SkyIrradiance`, `ReflectedIrradiance` and `Radiosity` in W/m^2
  * (NumberOfBands components), evaluated at each point (every link reaching the
  * element there re-evaluated at the point: exact form factors, visibility from the
@@ -37,6 +42,11 @@
  * Output port 2: the links as lines from receiver to sender (sun and sky links drawn
  * toward the sky) with cell data `Level` and transported `Power` (W), as in the
  * paper's Fig. 9.
+ *
+ * Refused with an error naming the fix, outputs empty: NaN or infinite parameters;
+ * cells whose point ids are out of range; structured grids whose dimensions do not
+ * match their points; ghost arrays of the wrong size; NaN coordinates in used cells;
+ * reflectance outside [0, 1), negative emission; no light; running out of memory.
  *
  * @sa vtkTerrainSource vtkSunSource vtkSkySource
  */
@@ -92,8 +102,23 @@ public:
 
   ///@{
   /**
-   * Set/Get the convergence tolerance: iterations stop when the largest change of
-   * radiosity falls below this fraction of the largest radiosity. Default is 1e-3.
+   * Set/Get the most elements refinement may create. A solve that reaches it stops
+   * refining, warns, and returns the solution at that size (coarser than
+   * ErrorTolerance asks): a guard against tolerances that would outgrow memory (an
+   * element with its links takes about 0.5-1 KiB). Default is 4,000,000.
+   */
+  vtkSetClampMacro(MaximumNumberOfElements, vtkIdType, 1000, VTK_ID_MAX);
+  vtkGetMacro(MaximumNumberOfElements, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the convergence tolerance: iterations stop when the estimated remaining
+   * change of radiosity (the last change over one minus its ratio to the change
+   * before, since gathering converges geometrically) falls below this fraction of the
+   * largest radiosity. Where that ratio is high and steady (bright, closed scenes),
+   * radiosity jumps ahead by the geometric sum. Iterations that stop at
+   * MaximumIterations before converging warn with that estimate. Default is 1e-3.
    */
   vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
   vtkGetMacro(ConvergenceTolerance, double);
@@ -191,12 +216,15 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  // RequestData's work; throws terralux::Error on bad input.
+  int Solve(vtkInformationVector** inputVector, vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links);
 
   double ErrorTolerance;
   double MinimumElementArea;
   int VisibilitySamples;
   int MaximumIterations;
   double ConvergenceTolerance;
+  vtkIdType MaximumNumberOfElements;
   double DefaultReflectance;
   char* ReflectanceArrayName;
   char* EmissionArrayName;

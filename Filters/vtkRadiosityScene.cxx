@@ -7,12 +7,16 @@
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolygon.h"
 #include "vtkSMPTools.h"
 #include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "error.h"
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <string>
@@ -65,6 +69,80 @@ private:
   vtkDataArray* Array = nullptr;
   double Fallback;
 };
+
+// Every point id of a cell must name a point of the data set (a corrupt cell array
+// would otherwise read past the points).
+void checkPointIds(vtkIdType cell, vtkIdType count, const vtkIdType* ids, vtkIdType pointCount, int owner)
+{
+  for (vtkIdType c = 0; c < count; ++c)
+    if (ids[c] < 0 || ids[c] >= pointCount)
+    {
+      throw terralux::Error("cell " + std::to_string(cell) + " of input " + std::to_string(owner) +
+        " uses point id " + std::to_string(ids[c]) + " but the data set has " + std::to_string(pointCount) +
+        " points: repair the cell array (every id in [0, number of points))");
+    }
+}
+
+// Ghost arrays must have one value per point / cell, or blanking reads past them.
+void checkGhostArrays(vtkDataSet* data, int owner)
+{
+  vtkUnsignedCharArray* points = data->GetPointGhostArray();
+  vtkUnsignedCharArray* cells = data->GetCellGhostArray();
+  if ((points && points->GetNumberOfTuples() != data->GetNumberOfPoints()) ||
+    (cells && cells->GetNumberOfTuples() != data->GetNumberOfCells()))
+  {
+    throw terralux::Error("the vtkGhostType array of input " + std::to_string(owner) +
+      " does not have one value per point (or cell): remove it or give it the right size");
+  }
+}
+
+// A quad whose diagonals cross: convex (and so safely one planar element).
+bool convexQuad(const std::vector<terralux::Vec3>& points, vtkIdType first, const vtkIdType* ids)
+{
+  const terralux::Vec3 a = points[first + ids[0]], b = points[first + ids[1]];
+  const terralux::Vec3 c = points[first + ids[2]], d = points[first + ids[3]];
+  const terralux::Vec3 n = glm::cross(c - a, d - b); // the quad's area vector, twice
+  // Each corner turns the same way as the whole quad.
+  return glm::dot(glm::cross(b - a, c - b), n) > 0.0 && glm::dot(glm::cross(c - b, d - c), n) > 0.0 &&
+    glm::dot(glm::cross(d - c, a - d), n) > 0.0 && glm::dot(glm::cross(a - d, b - a), n) > 0.0;
+}
+
+// Ear-clipping triangulation of a polygon cell (vtkPolygon), as point ids of the data set.
+std::vector<std::array<vtkIdType, 3>> triangulate(const std::vector<terralux::Vec3>& points, vtkIdType first,
+  vtkIdType cell, vtkIdType count, const vtkIdType* ids, int owner)
+{
+  vtkNew<vtkPolygon> polygon;
+  polygon->GetPoints()->SetNumberOfPoints(count);
+  polygon->GetPointIds()->SetNumberOfIds(count);
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    const terralux::Vec3& p = points[first + ids[c]];
+    polygon->GetPoints()->SetPoint(c, p.x, p.y, p.z);
+    polygon->GetPointIds()->SetId(c, c);
+  }
+  vtkNew<vtkIdList> corners;
+  std::vector<std::array<vtkIdType, 3>> triangles;
+  if (polygon->Triangulate(corners) && corners->GetNumberOfIds() == 3 * (count - 2))
+  {
+    // Newell's normal of the whole polygon: each triangle keeps its orientation.
+    terralux::Vec3 normal(0.0);
+    for (vtkIdType c = 0; c < count; ++c)
+      normal += glm::cross(points[first + ids[c]], points[first + ids[(c + 1) % count]]);
+    for (vtkIdType t = 0; t < corners->GetNumberOfIds(); t += 3)
+    {
+      std::array<vtkIdType, 3> triangle{ ids[corners->GetId(t)], ids[corners->GetId(t + 1)],
+        ids[corners->GetId(t + 2)] };
+      const terralux::Vec3& a = points[first + triangle[0]];
+      if (glm::dot(glm::cross(points[first + triangle[1]] - a, points[first + triangle[2]] - a), normal) < 0.0)
+        std::swap(triangle[1], triangle[2]);
+      triangles.push_back(triangle);
+    }
+    return triangles;
+  }
+  throw terralux::Error("polygon " + std::to_string(cell) + " of input " + std::to_string(owner) +
+    " (" + std::to_string(count) + " points) cannot be triangulated (self-intersecting or not planar): "
+    "run vtkTriangleFilter on the input, or repair the polygon");
+}
 
 // A 2-D structured grid as a terrain grid: posts, blanked cells, materials per cell.
 std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
@@ -153,7 +231,16 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
       throw terralux::Error("structured grids must be 2-D surfaces (dimensions nx x ny x 1, nx, ny >= 2), "
                             "as vtkTerrainSource makes them");
     }
+    const vtkIdType posts = static_cast<vtkIdType>(dims[0]) * dims[1];
+    if (structured->GetNumberOfPoints() != posts)
+    {
+      throw terralux::Error("structured grid " + std::to_string(owner) + " has dimensions " +
+        std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " but " +
+        std::to_string(structured->GetNumberOfPoints()) + " points: give it exactly nx * ny points "
+        "(SetDimensions() and SetPoints() must agree)");
+    }
   }
+  checkGhostArrays(data, owner);
   if (structured && terrainHierarchy)
   {
     this->Terrains.push_back(makeTerrainGrid(structured, reflectance, emission, owner));
@@ -168,10 +255,9 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
     data->GetPoint(k, p);
     this->Scene.points.emplace_back(p[0], p[1], p[2]);
   }
-  auto addPolygon = [&](vtkIdType cell, int count, const vtkIdType* ids) {
-    terralux::ScenePolygon polygon;
-    polygon.vertexCount = count;
-    for (int c = 0; c < count; ++c)
+  const vtkIdType pointCount = data->GetNumberOfPoints();
+  auto requireFinite = [&](vtkIdType count, const vtkIdType* ids) {
+    for (vtkIdType c = 0; c < count; ++c)
     {
       const terralux::Vec3& p = this->Scene.points[first + ids[c]];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -179,8 +265,13 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
         throw terralux::Error("point " + std::to_string(ids[c]) + " of input " + std::to_string(owner) +
           " has a NaN or infinite coordinate: remove or repair it");
       }
-      polygon.vertices[c] = static_cast<int>(first + ids[c]);
     }
+  };
+  auto addPolygon = [&](vtkIdType cell, int count, const vtkIdType* ids) {
+    terralux::ScenePolygon polygon;
+    polygon.vertexCount = count;
+    for (int c = 0; c < count; ++c)
+      polygon.vertices[c] = static_cast<int>(first + ids[c]);
     polygon.reflectance = reflectance.at(cell);
     polygon.emission = emission.at(cell);
     polygon.owner = owner;
@@ -202,6 +293,8 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
         const vtkIdType p00 = i + static_cast<vtkIdType>(j) * dims[0], p10 = p00 + 1;
         const vtkIdType p01 = p00 + dims[0], p11 = p01 + 1;
         const vtkIdType a[3] = { p00, p10, p01 }, b[3] = { p11, p01, p10 };
+        requireFinite(3, a);
+        requireFinite(3, b);
         addPolygon(cell, 3, a);
         addPolygon(cell, 3, b);
       }
@@ -221,23 +314,29 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
   {
     const vtkIdType n = ids->GetNumberOfIds();
     const vtkIdType* p = ids->GetPointer(0);
-    if (n == 3 || n == 4)
+    checkPointIds(cell, n, p, pointCount, owner);
+    requireFinite(n, p);
+    if (n < 3)
     {
-      addPolygon(cell, static_cast<int>(n), p); // quads are taken as planar
+      ++this->SkippedCells; // a polygon cell of fewer than 3 points has no area
+    }
+    else if (n == 3 || (n == 4 && convexQuad(this->Scene.points, first, p)))
+    {
+      addPolygon(cell, static_cast<int>(n), p); // convex quads are taken as planar
     }
     else
     {
-      for (vtkIdType k = 1; k + 1 < n; ++k) // fan of a planar polygon
-      {
-        const vtkIdType tri[3] = { p[0], p[k], p[k + 1] };
-        addPolygon(cell, 3, tri);
-      }
+        // Larger or concave polygons: ear-clipped triangles (a fan would cover a notch).
+      for (const auto& triangle : triangulate(this->Scene.points, first, cell, n, p, owner))
+        addPolygon(cell, 3, triangle.data());
     }
   }
   auto strips = polyData->GetStrips();
   for (strips->InitTraversal(); strips->GetNextCell(ids); ++cell)
   {
     const vtkIdType* p = ids->GetPointer(0);
+    checkPointIds(cell, ids->GetNumberOfIds(), p, pointCount, owner);
+    requireFinite(ids->GetNumberOfIds(), p);
     for (vtkIdType k = 0; k + 2 < ids->GetNumberOfIds(); ++k)
     {
       const vtkIdType tri[3] = { p[k], p[k % 2 ? k + 2 : k + 1], p[k % 2 ? k + 1 : k + 2] };
@@ -270,8 +369,7 @@ void vtkRadiosityScene::AddLight(vtkDataObject* light)
         for (int band = 0; band < bands; ++band)
           averages[(static_cast<std::size_t>(j) * n + (i + n / 2) % n) * bands + band] =
             radiance->GetComponent(i + static_cast<vtkIdType>(j) * n, band);
-    this->Sky = std::make_unique<terralux::SkyHierarchy>(
-      terralux::SkyHierarchy::fromCellAverages(level, bands, averages));
+    this->AddSky(level, bands, std::move(averages));
     return;
   }
   vtkFieldData* fieldData = light ? light->GetFieldData() : nullptr;
@@ -284,15 +382,56 @@ void vtkRadiosityScene::AddLight(vtkDataObject* light)
   }
   // Three values, as three tuples (vtkSunSource) or one tuple of three components.
   const int components = direction->GetNumberOfComponents();
+  terralux::Vec3 toward(0.0);
   for (int k = 0; k < 3; ++k)
-    this->SunDirection[k] = direction->GetComponent(k / components, k % components);
+    toward[k] = direction->GetComponent(k / components, k % components);
   const double flux = irradiance->GetNumberOfValues() > 0 ? irradiance->GetComponent(0, 0) : NAN;
-  if (!(glm::length(this->SunDirection) > 0.0) || !std::isfinite(glm::length(this->SunDirection)) ||
-    !(flux >= 0.0) || !std::isfinite(flux))
+  if (!(glm::length(toward) > 0.0) || !std::isfinite(glm::length(toward)) || !(flux >= 0.0) ||
+    !std::isfinite(flux))
   {
     throw terralux::Error("the sun on input port 1 needs a finite, non-zero SunDirection and a finite "
                           "SunNormalIrradiance >= 0 (W/m^2)");
   }
-  this->HasSun = true;
-  this->SunIrradiance = terralux::uniformSpectrum(flux);
+  this->Suns.push_back({ toward, terralux::uniformSpectrum(flux) });
+}
+
+void vtkRadiosityScene::AddSky(int level, int bands, std::vector<double> averages)
+{
+  for (double value : averages)
+    if (!(value >= 0.0) || !std::isfinite(value))
+    {
+      throw terralux::Error("the sky's Radiance array holds a negative, NaN or infinite value: "
+                            "give radiances >= 0 (W/m^2/sr)");
+    }
+  // Resamples cell averages of a (level, bands) map to the finer (toLevel, toBands) one:
+  // each fine cell takes its coarse cell's average, which keeps every integral.
+  auto resampled = [](const std::vector<double>& values, int level, int bands, int toLevel, int toBands) {
+    const int side = 1 << level, toSide = 1 << toLevel, ratio = toSide / side;
+    std::vector<double> result(static_cast<std::size_t>(toSide) * toSide * toBands);
+    for (int iu = 0; iu < toSide; ++iu)
+      for (int iv = 0; iv < toSide; ++iv)
+        for (int band = 0; band < toBands; ++band)
+          result[(static_cast<std::size_t>(iu) * toSide + iv) * toBands + band] =
+            values[(static_cast<std::size_t>(iu / ratio) * side + iv / ratio) * bands + std::min(band, bands - 1)];
+    return result;
+  };
+  if (this->SkyAverages.empty())
+  {
+    this->SkyLevel = level;
+    this->SkyBands = bands;
+    this->SkyAverages = std::move(averages);
+  }
+  else
+  {
+    const int toLevel = std::max(level, this->SkyLevel), toBands = std::max(bands, this->SkyBands);
+    std::vector<double> sum = resampled(this->SkyAverages, this->SkyLevel, this->SkyBands, toLevel, toBands);
+    const std::vector<double> added = resampled(averages, level, bands, toLevel, toBands);
+    for (std::size_t k = 0; k < sum.size(); ++k)
+      sum[k] += added[k];
+    this->SkyLevel = toLevel;
+    this->SkyBands = toBands;
+    this->SkyAverages = std::move(sum);
+  }
+  this->Sky = std::make_unique<terralux::SkyHierarchy>(
+    terralux::SkyHierarchy::fromCellAverages(this->SkyLevel, this->SkyBands, this->SkyAverages));
 }

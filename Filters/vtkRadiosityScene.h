@@ -31,18 +31,31 @@ public:
   /// two triangles per cell.
   void AddDataSet(vtkDataSet* data, double defaultReflectance, const char* reflectanceName,
     const char* emissionName, bool terrainHierarchy);
-  /// Adds a vtkSkySource radiance map or a vtkSunSource output.
+  /// Adds a vtkSkySource radiance map or a vtkSunSource output. Every light counts:
+  /// suns each become a sun element, skies are summed into one radiance map (at the
+  /// finest resolution among them; a one-band sky lights every band alike).
   void AddLight(vtkDataObject* light);
+
+  struct SunLight
+  {
+    terralux::Vec3 direction;
+    terralux::Spectrum irradiance;
+  };
 
   terralux::RadiosityScene Scene;
   std::vector<Input> Inputs;
   std::vector<std::unique_ptr<terralux::TerrainGrid>> Terrains;
-  std::unique_ptr<terralux::SkyHierarchy> Sky;
-  bool HasSun = false;
-  terralux::Vec3 SunDirection{ 0.0 };
-  terralux::Spectrum SunIrradiance{};
+  std::unique_ptr<terralux::SkyHierarchy> Sky; ///< the sum of the skies added, or null
+  std::vector<SunLight> Suns;
   bool HasEmission = false;
   std::size_t SkippedCells = 0; ///< vertices and lines, ignored
+
+private:
+  void AddSky(int level, int bands, std::vector<double> averages);
+  // The summed skies' cell averages, finest pyramid order ((iu * side + iv) * bands + band).
+  int SkyLevel = 0;
+  int SkyBands = 0;
+  std::vector<double> SkyAverages;
 };
 
 #endif

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace terralux
 {
@@ -100,11 +101,11 @@ std::uint64_t HierarchicalRadiosity::raysCast() const
   return this->Rays->raysCast();
 }
 
-void HierarchicalRadiosity::setSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance)
+void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance)
 {
-  this->Sun = largest(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0
-    ? this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance)
-    : nullptr;
+  // A sun below every surface's horizon still gets its link: the oracle drops it at once.
+  if (largest(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0)
+    this->Suns.push_back(this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance));
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
@@ -126,20 +127,16 @@ double HierarchicalRadiosity::referencePower() const
 {
   // Direct light on every polygon without occlusion, plus emission: the scale of the
   // oracle's tolerance.
-  Vec3 sun(0.0);
-  Spectrum flux{};
-  if (this->Sun)
-  {
-    sun = static_cast<const SunElement*>(this->Sun)->direction();
-    flux = this->Sun->emittance();
-  }
   double total = 0.0;
   for (const PolygonElement* polygon : this->TopSurfaces)
   {
     double incident = 0.0;
     for (int band = 0; band < maxBands; ++band)
     {
-      double e = flux[band] * std::max(0.0, glm::dot(polygon->normal(), sun)) + polygon->emission()[band];
+      double e = polygon->emission()[band];
+      for (const HElement* sun : this->Suns)
+        e += sun->emittance()[band] *
+          std::max(0.0, glm::dot(polygon->normal(), static_cast<const SunElement*>(sun)->direction()));
       if (this->Sky)
       {
         e += this->Sky->horizontalIrradiance(std::min(band, this->Sky->bands() - 1)) *
@@ -150,6 +147,14 @@ double HierarchicalRadiosity::referencePower() const
     total += incident * polygon->area();
   }
   return total;
+}
+
+bool HierarchicalRadiosity::mayGrow()
+{
+  if (this->Store->size() < this->Options.maximumElements)
+    return true;
+  this->Stats.elementBudgetReached = true;
+  return false;
 }
 
 std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated)
@@ -192,7 +197,7 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
           for (HElement* member : receiver->children())
             addChildLinks(receiver, member, true);
         }
-        else if (lightsItself(*receiver, oracle) && !receiver->children().empty())
+        else if (lightsItself(*receiver, oracle) && this->mayGrow() && !receiver->children().empty())
         {
           ++splits;
           for (HElement* part : receiver->children())
@@ -207,7 +212,8 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
         Link rough = link;
         rough.kernel = link.kernelSpread;
         rough.visibility = 1.0;
-        if (receiver->canSplit() && linkPower(*receiver, rough) > oracle.partialVisibilityFactor * oracle.powerThreshold)
+        if (receiver->canSplit() && linkPower(*receiver, rough) > oracle.partialVisibilityFactor * oracle.powerThreshold &&
+          this->mayGrow())
         {
           ++splits;
           addChildLinks(receiver, sender, true);
@@ -220,14 +226,21 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
         // receiver while the unoccluded transport would matter, else drop the link.
         Link unoccluded = link;
         unoccluded.visibility = 1.0;
-        if (receiver->canSplit() && linkPower(*receiver, unoccluded) > oracle.partialVisibilityFactor * oracle.powerThreshold)
+        if (receiver->canSplit() &&
+          linkPower(*receiver, unoccluded) > oracle.partialVisibilityFactor * oracle.powerThreshold && this->mayGrow())
         {
           ++splits;
           addChildLinks(receiver, sender, true);
         }
         continue;
       }
-      switch (decideRefinement(*receiver, link, oracle))
+      const Refinement decision = decideRefinement(*receiver, link, oracle);
+      if (decision != Refinement::Keep && !this->mayGrow())
+      {
+        receiver->Incoming.push_back(link); // over budget: the link stays as it is
+        continue;
+      }
+      switch (decision)
       {
         case Refinement::Keep:
           receiver->Incoming.push_back(link);
@@ -370,7 +383,7 @@ void collectLeafTasks(HElement& element, const Inherited& inherited, std::vector
 // link from above is re-sampled at the leaf, so shadow boundaries are resolved by the
 // leaves even where no single link is worth refining.
 LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, bool reuseKernels,
-  const Visibility& rays, int samples)
+  const Visibility& rays, int samples, double extrapolation)
 {
   PolygonElement& polygon = *task.leaf;
   std::array<Spectrum, lightCategories> irradiance = task.inherited.irradiance;
@@ -420,6 +433,11 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, bool re
     const double total = irradiance[0][band] + irradiance[1][band] + irradiance[2][band];
     incident = std::max(incident, total);
     result.radiosity[band] = polygon.emission()[band] + polygon.reflectance()[band] * total;
+    if (extrapolation > 0.0)
+    {
+      result.radiosity[band] = std::max(polygon.emission()[band],
+        result.radiosity[band] + extrapolation * (result.radiosity[band] - polygon.Radiosity[band]));
+    }
     result.change = std::max(result.change, std::abs(result.radiosity[band] - polygon.Radiosity[band]));
     result.largestRadiosity = std::max(result.largestRadiosity, result.radiosity[band]);
   }
@@ -450,7 +468,7 @@ Spectrum pullRadiosity(HElement& element)
 }
 } // namespace
 
-double HierarchicalRadiosity::pushPull()
+double HierarchicalRadiosity::pushPull(double extrapolation)
 {
   std::vector<DeferredLink> deferred, flat;
   std::vector<LeafTask> tasks;
@@ -461,7 +479,7 @@ double HierarchicalRadiosity::pushPull()
   std::vector<LeafResult> results(tasks.size());
   tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t k) {
     results[k] = solveLeaf(tasks[k], flat.data() + tasks[k].first, reuseKernels, *this->Rays,
-      this->Options.visibilitySamples);
+      this->Options.visibilitySamples, extrapolation);
   });
   double change = 0.0, radiosity = 0.0, incident = 0.0;
   for (std::size_t k = 0; k < tasks.size(); ++k) // in leaf order: the same for any thread count
@@ -522,12 +540,13 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
 Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal) const
 {
   Spectrum result{};
-  if (!this->Sun)
-    return result;
-  const double transport = transportToPoint(point, normal, *this->Sun, *this->Rays, 1, 0);
-  const Spectrum flux = this->Sun->emittance();
-  for (int band = 0; band < maxBands; ++band)
-    result[band] = transport * flux[band];
+  for (HElement* sun : this->Suns)
+  {
+    const double transport = transportToPoint(point, normal, *sun, *this->Rays, 1, 0);
+    const Spectrum flux = sun->emittance();
+    for (int band = 0; band < maxBands; ++band)
+      result[band] += transport * flux[band];
+  }
   return result;
 }
 
@@ -541,6 +560,8 @@ void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*
 
 std::size_t HierarchicalRadiosity::splitLeaves(const std::vector<PolygonElement*>& leaves)
 {
+  if (leaves.empty() || !this->mayGrow())
+    return 0;
   // The leaves' links move to their children, evaluated and refined there.
   std::vector<std::pair<HElement*, Link>> pending;
   for (PolygonElement* polygon : leaves)
@@ -604,9 +625,10 @@ std::size_t HierarchicalRadiosity::restrictTerrainMeshes()
           leaves.push_back(leaf);
       }
     }
-    if (leaves.empty())
-      return splits;
-    splits += this->splitLeaves(leaves);
+    const std::size_t split = leaves.empty() ? 0 : this->splitLeaves(leaves);
+    if (split == 0)
+      return splits; // done, or over the element budget
+    splits += split;
   }
 }
 
@@ -623,7 +645,8 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     }
   };
   addInitial(this->RootCluster); // the self-link (paper Fig. 3)
-  addInitial(this->Sun);
+  for (HElement* sun : this->Suns)
+    addInitial(sun);
   addInitial(this->SkyRoot);
 
   // Clusters start with the area-weighted emission of their surfaces, so the oracle
@@ -634,25 +657,40 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
   this->refine(pending, false);
   this->Stats.secondsRefine += secondsSince(start);
 
+  // Gathering is a Jacobi iteration: its change shrinks by about the scene's
+  // reflectance each time. The remaining change is estimated from that ratio, and where
+  // it is high (bright closed scenes) and steady, B jumps ahead by the geometric sum.
+  double previousChange = 0.0, previousRatio = -1.0, knownRatio = 0.0;
+  int steadyIterations = 0; // iterations since the structure or an extrapolation changed
+  double extrapolation = 0.0;
   for (int iteration = 0; iteration < this->Options.maximumIterations; ++iteration)
   {
     start = std::chrono::steady_clock::now();
     this->gather();
     this->Stats.secondsGather += secondsSince(start);
     start = std::chrono::steady_clock::now();
-    const double change = this->pushPull();
+    const double change = this->pushPull(extrapolation);
     this->Stats.secondsPushPull += secondsSince(start);
     this->Stats.iterations = iteration + 1;
     if (progress && !progress->report(static_cast<double>(iteration + 1) / this->Options.maximumIterations))
     {
       return false;
     }
+    const bool extrapolated = extrapolation > 0.0;
+    extrapolation = 0.0;
+    const double ratio = steadyIterations > 0 && previousChange > 0.0 ? change / previousChange : -1.0;
+    if (ratio >= 0.0)
+      knownRatio = ratio; // else (just after a change of structure) the last one measured
+    this->Stats.residual =
+      knownRatio < 1.0 ? change / (1.0 - knownRatio) : std::numeric_limits<double>::infinity();
+    const bool converged = change == 0.0 || (!extrapolated && this->Stats.residual < this->Options.convergenceTolerance);
     // Leaves split now get their irradiance in the next iteration, so the last one
     // splits nothing.
     const bool last = iteration + 1 == this->Options.maximumIterations;
     const std::size_t splits = last ? 0 : this->splitShadowedLeaves() + this->restrictTerrainMeshes();
-    if ((change < this->Options.convergenceTolerance && splits == 0) || last)
+    if ((converged && splits == 0) || last)
     {
+      this->Stats.converged = converged;
       break;
     }
     // Radiosity changed: links that now carry too much power are refined further;
@@ -677,6 +715,17 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
       this->StructureChanged = true;
     }
     this->Stats.secondsRefine += secondsSince(start);
+
+    const bool structureChanged = splits > 0 || !pending.empty();
+    steadyIterations = structureChanged || extrapolated ? 0 : steadyIterations + 1;
+    // Two equal ratios in a row, and a slow one: extrapolate in the next push.
+    if (steadyIterations >= 2 && ratio > 0.5 && ratio < 1.0 && std::abs(ratio - previousRatio) < 0.01 * ratio)
+    {
+      extrapolation = std::min(1e6, ratio / (1.0 - ratio));
+      steadyIterations = 0;
+    }
+    previousRatio = ratio;
+    previousChange = change;
   }
 
   this->Stats.elements = this->Store->size();

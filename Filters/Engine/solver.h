@@ -25,8 +25,11 @@ struct RadiosityOptions
   double minimumElementArea = 0.0;  ///< m^2; 0: 1e-6 of the scene's area
   int visibilitySamples = 4;
   int maximumIterations = 30;
-  double convergenceTolerance = 1e-3; ///< max change of B / max B
+  double convergenceTolerance = 1e-3; ///< estimated remaining change of B / max B
   int maximumSkyLevel = 9;
+  /// Refinement stops creating elements at this count (the solution is then coarser
+  /// than errorTolerance asks, and statistics().elementBudgetReached says so).
+  std::size_t maximumElements = 4000000;
 };
 
 struct RadiosityStatistics
@@ -35,6 +38,11 @@ struct RadiosityStatistics
   std::size_t links = 0;
   std::uint64_t rays = 0;
   int iterations = 0;
+  /// Estimated remaining relative change of B after the last iteration: the last change
+  /// over (1 - its ratio to the one before), since gathering converges geometrically.
+  double residual = 0.0;
+  bool converged = false;          ///< residual below convergenceTolerance
+  bool elementBudgetReached = false; ///< refinement was cut at maximumElements
   double referencePowerW = 0.0;
   double secondsVisibilityBuild = 0.0;
   double secondsRefine = 0.0;
@@ -67,8 +75,9 @@ public:
   HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options);
   ~HierarchicalRadiosity();
 
-  /// External sources. Sky: the hierarchy must outlive the solver.
-  void setSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance);
+  /// External sources: any number of suns (their light adds up) and one sky (the
+  /// hierarchy must outlive the solver; several skies are summed into one map first).
+  void addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance);
   void setSky(const SkyHierarchy* sky);
 
   /// Solves; returns false when aborted through `progress`.
@@ -96,7 +105,7 @@ public:
   /// the cells around it), still through the links that reach `leaf`.
   PointIrradiance irradianceAt(const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const;
   /// Direct sunlight at a point with a unit normal: normal irradiance x cosine, 0 where
-  /// the point is shadowed (one ray); zero without a sun.
+  /// the point is shadowed (one ray per sun); zero without a sun.
   Spectrum directSunAt(const Vec3& point, const Vec3& normal) const;
   /// Many points at once, in parallel.
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
@@ -109,7 +118,12 @@ private:
   std::size_t restrictTerrainMeshes();
   std::size_t splitLeaves(const std::vector<PolygonElement*>& leaves);
   void gather();
-  double pushPull();
+  /// Gathered radiosity down and up the hierarchy; returns the largest change of B over
+  /// the largest B. With `extrapolation` > 0 each leaf moves that many times its change
+  /// further (geometric extrapolation of a slowly converging, highly reflective scene).
+  double pushPull(double extrapolation = 0.0);
+  /// Whether refinement may still create elements.
+  bool mayGrow();
   double referencePower() const;
   OracleSettings oracleSettings() const;
 
@@ -120,7 +134,7 @@ private:
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on
   Cluster* RootCluster = nullptr;
-  HElement* Sun = nullptr;
+  std::vector<HElement*> Suns;
   HElement* SkyRoot = nullptr;
   const SkyHierarchy* Sky = nullptr;
   double SceneArea = 0.0;

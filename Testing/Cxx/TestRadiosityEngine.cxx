@@ -163,7 +163,7 @@ TEST(Radiosity, PlanesUnderTheSun)
   for (const Vec3& normal : { Vec3(0, 0, 1), Vec3(0.5, -0.2, 0.7), Vec3(-0.3, 0.5, -0.8) })
   {
     HierarchicalRadiosity solver(unitSquare(normal), fine());
-    solver.setSun(sun, uniformSpectrum(900.0));
+    solver.addSun(sun, uniformSpectrum(900.0));
     ASSERT_TRUE(solver.solve());
     const double expected = 900.0 * std::max(0.0, glm::dot(glm::normalize(normal), sun));
     const double got = leafAverage(solver, [](const PolygonElement&) { return true; },
@@ -269,7 +269,7 @@ TEST(Radiosity, WallCastsItsShadowWhereGeometryPutsIt)
   RadiosityOptions options = fine();
   options.minimumElementArea = 0.005;
   HierarchicalRadiosity solver(scene, options);
-  solver.setSun(sun, uniformSpectrum(800.0));
+  solver.addSun(sun, uniformSpectrum(800.0));
   ASSERT_TRUE(solver.solve());
   const double shadowLength = 3.0 * std::tan(zenith);
   int inside = 0, outside = 0;
@@ -310,7 +310,7 @@ TEST(Radiosity, SameResultForOneAndTwoThreads)
     RadiosityOptions options = fine();
     options.errorTolerance = 5e-4;
     HierarchicalRadiosity solver(scene, options);
-    solver.setSun(Vec3(sunDir[0], sunDir[1], sunDir[2]), uniformSpectrum(700.0));
+    solver.addSun(Vec3(sunDir[0], sunDir[1], sunDir[2]), uniformSpectrum(700.0));
     solver.setSky(&sky);
     EXPECT_TRUE(solver.solve());
     std::vector<double> values;

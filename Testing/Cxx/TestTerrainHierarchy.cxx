@@ -311,14 +311,14 @@ TEST(TerrainRadiosity, FlatAndTiltedPlanesAgainstClosedForms)
     RadiosityScene scene;
     scene.terrains.push_back(grid.get());
     HierarchicalRadiosity solver(scene, terrainOptions(2e-4));
-    solver.setSun(sun, uniformSpectrum(sunFlux));
+    solver.addSun(sun, uniformSpectrum(sunFlux));
     solver.setSky(&sky);
     ASSERT_TRUE(solver.solve());
     // Lazy: at a coarse tolerance a plane's patches stay far larger than its cells; all
     // elements (sky patches and clusters too) are fewer than a quarter of the 2048
     // triangles the plain path starts from.
     HierarchicalRadiosity coarse(scene, terrainOptions(1e-2));
-    coarse.setSun(sun, uniformSpectrum(sunFlux));
+    coarse.addSun(sun, uniformSpectrum(sunFlux));
     ASSERT_TRUE(coarse.solve());
     EXPECT_LT(coarse.statistics().elements, 2048u / 4u);
     const Vec3 normal = glm::normalize(Vec3(0.0, -t, 1.0));
@@ -354,7 +354,7 @@ TEST(TerrainRadiosity, GaussianHillAgainstClosedFormsOnItsConvexTop)
   // The foot's view of the slopes carries little of the scene's power: a fine tolerance
   // keeps those links.
   HierarchicalRadiosity solver(scene, terrainOptions(1e-4));
-  solver.setSun(sun, uniformSpectrum(sunFlux));
+  solver.addSun(sun, uniformSpectrum(sunFlux));
   solver.setSky(&sky);
   ASSERT_TRUE(solver.solve());
   int top = 0;
@@ -390,7 +390,7 @@ TEST(TerrainRadiosity, VerticalStepCastsItsShadowAndNoLightLeaks)
   scene.terrains.push_back(grid.get());
   const Vec3 sun = glm::normalize(Vec3(std::cos(60 * degree), 0.0, std::sin(60 * degree)));
   HierarchicalRadiosity solver(scene, terrainOptions(1e-3));
-  solver.setSun(sun, uniformSpectrum(1000.0));
+  solver.addSun(sun, uniformSpectrum(1000.0));
   ASSERT_TRUE(solver.solve());
   const double lit = 1000.0 * std::sin(60 * degree);
   for (int j = 1; j < 8; ++j) // away from the open ends of the wall
@@ -435,7 +435,7 @@ TEST(TerrainRadiosity, LightPassesThroughAHoleOnlyWhereItIs)
   scene.terrains.push_back(grid.get());
   addPolygon(scene, { { 0, 0, 0 }, { 160, 0, 0 }, { 160, 160, 0 }, { 0, 160, 0 } }, 0.0);
   HierarchicalRadiosity solver(scene, terrainOptions(1e-3));
-  solver.setSun(Vec3(0.0, 0.0, 1.0), uniformSpectrum(1000.0));
+  solver.addSun(Vec3(0.0, 0.0, 1.0), uniformSpectrum(1000.0));
   ASSERT_TRUE(solver.solve());
   for (double x = 5.0; x < 160.0; x += 10.0)
     for (double y = 5.0; y < 160.0; y += 10.0)
