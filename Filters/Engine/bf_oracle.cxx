@@ -52,6 +52,98 @@ double approximatedSizeOverDistance(const HElement& receiver, const HElement& se
   return distance > 0.0 ? size / distance : std::numeric_limits<double>::infinity();
 }
 
+namespace
+{
+void elementBounds(const HElement& e, Vec3& low, Vec3& high)
+{
+  if (e.isCluster())
+  {
+    low = static_cast<const Cluster&>(e).low();
+    high = static_cast<const Cluster&>(e).high();
+  }
+  else
+  {
+    static_cast<const PolygonElement&>(e).bounds(low, high);
+  }
+}
+
+// The one direction all of an element's surfaces face, if they do (planar polygons,
+// flat clusters); false for rough terrain patches and clusters of several orientations.
+bool facingDirection(const HElement& e, Vec3& n)
+{
+  if (e.isCluster())
+  {
+    const auto& cluster = static_cast<const Cluster&>(e);
+    const double length = glm::length(cluster.weightedNormal());
+    n = length > 0.0 ? cluster.weightedNormal() / length : Vec3(0.0);
+    return length >= (1.0 - 1e-9) * cluster.area();
+  }
+  const auto& surface = static_cast<const PolygonElement&>(e);
+  n = surface.normal();
+  return surface.unalignedArea() <= 1e-9 * surface.area();
+}
+
+// Largest and smallest n . x over a box.
+double boxSupport(const Vec3& low, const Vec3& high, const Vec3& n, bool largest)
+{
+  double value = 0.0;
+  for (int k = 0; k < 3; ++k)
+    value += n[k] * ((n[k] > 0.0) == largest ? high[k] : low[k]);
+  return value;
+}
+
+// Upper bound of the form factor from a cluster at one end of a link to the other
+// end: the sender's whole area A seen from the closest distance d between their
+// boxes, A / (pi d^2), at most 1; 0 when a side whose surfaces all face one way has
+// the other wholly behind or in its plane (coplanar parts of a flat ground).
+double clusterKernelBound(const HElement& receiver, const HElement& sender)
+{
+  Vec3 rLow, rHigh, sLow, sHigh;
+  elementBounds(receiver, rLow, rHigh);
+  elementBounds(sender, sLow, sHigh);
+  const double slack = 1e-9 * glm::length(glm::max(rHigh, sHigh) - glm::min(rLow, sLow));
+  Vec3 n;
+  if (facingDirection(sender, n) && boxSupport(rLow, rHigh, n, true) <= boxSupport(sLow, sHigh, n, false) + slack)
+    return 0.0;
+  if (facingDirection(receiver, n) && boxSupport(sLow, sHigh, n, true) <= boxSupport(rLow, rHigh, n, false) + slack)
+    return 0.0;
+  const Vec3 gap = glm::max(Vec3(0.0), glm::max(sLow - rHigh, rLow - sHigh));
+  const double d2 = glm::dot(gap, gap);
+  constexpr double pi = 3.14159265358979323846;
+  return d2 > 0.0 ? std::min(1.0, sender.area() / (pi * d2)) : 1.0;
+}
+} // namespace
+
+bool clusterMayCarryMore(const HElement& receiver, const Link& link, const OracleSettings& settings)
+{
+  const HElement& sender = *link.sender;
+  // Only where the receiver (or a surface in it) is small beside the sender: between
+  // elements of like size the
+  // near-field rule of decideRefinement refines, and the bound, loose where boxes touch,
+  // would refine every pair of neighbouring clusters on a curved surface.
+  if (sender.isExternal() || !(receiver.isCluster() || sender.isCluster()) || !(settings.irradianceThreshold > 0.0) ||
+    (receiver.isCluster() ? static_cast<const Cluster&>(receiver).smallestSurfaceArea() : receiver.area()) >
+      0.01 * sender.area())
+    return false;
+  // What the sender sends now, or could once lit at the scene's mean irradiance.
+  double emittance = 0.0;
+  for (double b : sender.emittance())
+    emittance = std::max(emittance, b);
+  if (sender.isCluster())
+  {
+    const auto& cluster = static_cast<const Cluster&>(sender);
+    emittance = std::max(emittance, cluster.largestEmission() + cluster.largestReflectance() * settings.meanIrradiance);
+  }
+  else
+  {
+    const auto& surface = static_cast<const PolygonElement&>(sender);
+    for (int band = 0; band < maxBands; ++band)
+      emittance = std::max(emittance, surface.emission()[band] + surface.reflectance()[band] * settings.meanIrradiance);
+  }
+  const double estimate = link.kernel * link.visibility * (link.directional ? receiver.scaleFactor() : 1.0);
+  return emittance * (clusterKernelBound(receiver, sender) - estimate) > settings.irradianceThreshold;
+}
+
 double linkPower(const HElement& receiver, const Link& link)
 {
   const Spectrum e = link.sender->emittance();
@@ -89,7 +181,8 @@ Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSe
   // element they are refined while they carry any noticeable power.
   const bool nearApproximation = !link.sender->isExternal() && (approximated(receiver) || approximated(*link.sender)) &&
     approximatedSizeOverDistance(receiver, *link.sender) > 0.25 && power > 0.01 * settings.powerThreshold;
-  const bool refine = nearApproximation || power > settings.powerThreshold ||
+  const bool refine = nearApproximation || clusterMayCarryMore(receiver, link, settings) ||
+    power > settings.powerThreshold ||
     variation > settings.powerThreshold * settings.partialVisibilityFactor ||
     (partial && power > settings.partialVisibilityFactor * settings.powerThreshold);
   if (!refine)

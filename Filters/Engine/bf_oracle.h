@@ -22,10 +22,23 @@ struct OracleSettings
   double partialVisibilityFactor = 0.1; ///< partially visible links refine down to this fraction of it
   double sceneArea = 1.0;             ///< total surface area, to compare areas with solid angles
   double meanIrradiance = 0.0;        ///< W/m^2: reference power / scene area
+  /// Irradiance (W/m^2) a link with a far-field estimate (a cluster at either end) may
+  /// leave out at its receiver: the receiver-relative bound that the scene-relative
+  /// powerThreshold cannot give (a 1 m^2 wall beside a 100 km^2 ground carries no
+  /// power on the scene's scale, yet a tenth of its light).
+  double irradianceThreshold = 0.0;
 };
 
 /// Power carried by the link (largest band), W.
 double linkPower(const HElement& receiver, const Link& link);
+
+/// Whether a link with a cluster at either end and a receiver (or a surface in it) under a
+/// hundredth of the sender's area may leave out more irradiance at its receiver than
+/// settings.irradianceThreshold: the cluster's kernel bound (its area seen from the
+/// closest distance between the two boxes; 0 where a side facing one way has the other
+/// behind its plane) against the link's estimate, for what the sender sends or could
+/// send once lit at the scene's mean irradiance.
+bool clusterMayCarryMore(const HElement& receiver, const Link& link, const OracleSettings& settings);
 
 Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSettings& settings);
 

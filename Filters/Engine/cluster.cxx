@@ -21,6 +21,13 @@ Cluster::Cluster(
     this->Area += surface->area();
     this->WeightedNormal += surface->area() * surface->normal();
     this->CumulativeArea.push_back(this->Area);
+    this->SmallestSurfaceArea = this->SmallestSurfaceArea > 0.0 ? std::min(this->SmallestSurfaceArea, surface->area())
+                                                                : surface->area();
+    for (int band = 0; band < maxBands; ++band)
+    {
+      this->LargestReflectance = std::max(this->LargestReflectance, surface->reflectance()[band]);
+      this->LargestEmission = std::max(this->LargestEmission, surface->emission()[band]);
+    }
     Vec3 low, high;
     surface->bounds(low, high);
     this->Low = glm::min(this->Low, low);

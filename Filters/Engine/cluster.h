@@ -21,6 +21,13 @@ public:
   Vec3 centre() const override { return 0.5 * (this->Low + this->High); }
   const Vec3& low() const { return this->Low; }
   const Vec3& high() const { return this->High; }
+  /// Largest reflectance and emission (any band) among its surfaces: what it could send.
+  double largestReflectance() const { return this->LargestReflectance; }
+  double largestEmission() const { return this->LargestEmission; }
+  /// Area of its smallest surface.
+  double smallestSurfaceArea() const { return this->SmallestSurfaceArea; }
+  /// Sum of A_i n_i over its surfaces (length A when they all face one way).
+  const Vec3& weightedNormal() const { return this->WeightedNormal; }
   /// Every input polygon inside, for sampling.
   const std::vector<PolygonElement*>& surfaces() const { return this->Surfaces; }
 
@@ -46,6 +53,9 @@ private:
   std::vector<PolygonElement*> Surfaces;
   std::vector<double> CumulativeArea;
   double Area = 0.0;
+  double SmallestSurfaceArea = 0.0;
+  double LargestReflectance = 0.0;
+  double LargestEmission = 0.0;
   Vec3 WeightedNormal{ 0.0 };
   Vec3 Low{ 0.0 }, High{ 0.0 };
 };

@@ -120,6 +120,7 @@ OracleSettings HierarchicalRadiosity::oracleSettings() const
   oracle.powerThreshold = this->Options.errorTolerance * this->Stats.referencePowerW;
   oracle.sceneArea = this->SceneArea;
   oracle.meanIrradiance = this->SceneArea > 0.0 ? this->Stats.referencePowerW / this->SceneArea : 0.0;
+  oracle.irradianceThreshold = 5.0 * this->Options.errorTolerance * oracle.meanIrradiance;
   return oracle;
 }
 
@@ -202,6 +203,18 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
           ++splits;
           for (HElement* part : receiver->children())
             addChildLinks(receiver, part, true);
+        }
+        continue;
+      }
+      if (!(link.kernel > 0.0 && link.visibility > 0.0) && clusterMayCarryMore(*receiver, link, oracle))
+      {
+        // A cluster's centre direction or its few samples saw nothing, but its members
+        // may: split (the side decideRefinement picks) rather than drop.
+        const Refinement decision = this->mayGrow() ? decideRefinement(*receiver, link, oracle) : Refinement::Keep;
+        if (decision != Refinement::Keep)
+        {
+          ++splits;
+          addChildLinks(receiver, sender, decision == Refinement::SplitReceiver);
         }
         continue;
       }
@@ -494,7 +507,8 @@ double HierarchicalRadiosity::pushPull(double extrapolation)
   // The oracle's tolerance is relative to the power the scene receives, which
   // interreflection raises above the direct estimate.
   this->Stats.referencePowerW = std::max(this->Stats.referencePowerW, incident);
-  return radiosity > 0.0 ? change / radiosity : 0.0;
+  this->LargestRadiosity = radiosity;
+  return change;
 }
 
 PointIrradiance HierarchicalRadiosity::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
@@ -516,13 +530,17 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   // Seeded by the point itself: points sharing a leaf (posts inside a terrain patch)
   // must not share their jitter, or the noise would be the same pattern at each.
   std::uint64_t salt = hashPosition(point) ^ (leaf.id() * 31);
+  // A point on the leaf's border is the limit from inside the leaf: at a concave
+  // junction (a wall's foot, a box's corner) the point itself lies in the plane of the
+  // other surface, which it would see edge-on with a form factor of 0.
+  const Vec3 inside = point + 1e-5 * (leaf.centre() - point);
   for (const HElement* element = &leaf; element; element = element->Parent)
   {
     for (const Link& link : element->Incoming)
     {
       const std::uint64_t seed = linkSeed(salt++, link.sender->id());
       const double transport = transportToPoint(
-        point, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
+        inside, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
       const Spectrum e = link.sender->emittance();
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)
@@ -669,7 +687,8 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     this->gather();
     this->Stats.secondsGather += secondsSince(start);
     start = std::chrono::steady_clock::now();
-    const double change = this->pushPull(extrapolation);
+    const double absoluteChange = this->pushPull(extrapolation);
+    const double change = this->LargestRadiosity > 0.0 ? absoluteChange / this->LargestRadiosity : 0.0;
     this->Stats.secondsPushPull += secondsSince(start);
     this->Stats.iterations = iteration + 1;
     if (progress && !progress->report(static_cast<double>(iteration + 1) / this->Options.maximumIterations))
@@ -678,7 +697,8 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     }
     const bool extrapolated = extrapolation > 0.0;
     extrapolation = 0.0;
-    const double ratio = steadyIterations > 0 && previousChange > 0.0 ? change / previousChange : -1.0;
+    // The ratio of absolute changes (relative ones shrink also because B grows).
+    const double ratio = steadyIterations > 0 && previousChange > 0.0 ? absoluteChange / previousChange : -1.0;
     if (ratio >= 0.0)
       knownRatio = ratio; // else (just after a change of structure) the last one measured
     this->Stats.residual =
@@ -725,7 +745,7 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
       steadyIterations = 0;
     }
     previousRatio = ratio;
-    previousChange = change;
+    previousChange = absoluteChange;
   }
 
   this->Stats.elements = this->Store->size();

@@ -118,8 +118,8 @@ private:
   std::size_t restrictTerrainMeshes();
   std::size_t splitLeaves(const std::vector<PolygonElement*>& leaves);
   void gather();
-  /// Gathered radiosity down and up the hierarchy; returns the largest change of B over
-  /// the largest B. With `extrapolation` > 0 each leaf moves that many times its change
+  /// Gathered radiosity down and up the hierarchy; returns the largest change of B
+  /// (W/m^2) and keeps the largest B in LargestRadiosity. With `extrapolation` > 0 each leaf moves that many times its change
   /// further (geometric extrapolation of a slowly converging, highly reflective scene).
   double pushPull(double extrapolation = 0.0);
   /// Whether refinement may still create elements.
@@ -138,6 +138,7 @@ private:
   HElement* SkyRoot = nullptr;
   const SkyHierarchy* Sky = nullptr;
   double SceneArea = 0.0;
+  double LargestRadiosity = 0.0; // over the leaves, after the last push-pull
   std::size_t Degenerate = 0;
   bool StructureChanged = true; // links changed since the leaf kernels were cached
   RadiosityStatistics Stats;

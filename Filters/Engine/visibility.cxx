@@ -242,13 +242,15 @@ bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, con
   {
     return false;
   }
-  return castOcclusion(this->Scene, from - this->Centre, d / length, 0.0, length - this->Offset);
+  // The ray also starts one offset along itself: a point where two surfaces meet (the
+  // foot of a wall) lifted off one of them may still lie on the other.
+  return castOcclusion(this->Scene, from - this->Centre, d / length, this->Offset, length - this->Offset);
 }
 
 bool Visibility::occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const
 {
   ++this->Rays->perThread.local();
-  return castOcclusion(this->Scene, a + this->Offset * aNormal - this->Centre, d, 0.0,
+  return castOcclusion(this->Scene, a + this->Offset * aNormal - this->Centre, d, this->Offset,
     std::numeric_limits<float>::infinity());
 }
 } // namespace terralux
