@@ -15,6 +15,7 @@
 #include "raster_writer.h"
 
 #include <cmath>
+#include <limits>
 #include <cstring>
 
 vtkStandardNewMacro(vtkTerrainRasterWriter);
@@ -72,7 +73,9 @@ void vtkTerrainRasterWriter::RemoveAllArrayNames()
 //------------------------------------------------------------------------------
 int vtkTerrainRasterWriter::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkStructuredGrid");
+  // Any data set is accepted so that a wrong one gets WriteData's message (and
+  // Write() returns 0) instead of a pipeline error that Write() does not report.
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   return 1;
 }
 
@@ -167,11 +170,12 @@ void vtkTerrainRasterWriter::WriteData()
         for (int row = 0; row < dims[1]; ++row)
           for (int col = 0; col < dims[0]; ++col)
           {
-            // Raster row 0 is the grid's last j (vtkTerrainSource flips rows).
-            const vtkIdType point = col + static_cast<vtkIdType>(dims[1] - 1 - row) * dims[0];
+            // Raster row -> grid j as vtkTerrainSource laid it (reversed for north-up).
+            const vtkIdType point = col + static_cast<vtkIdType>(raster.geoTransform.gridRow(row, dims[1])) * dims[0];
             double value = array->GetComponent(point, c);
             const bool hidden = ghosts && (ghosts->GetValue(point) & vtkDataSetAttributes::HIDDENPOINT);
-            if (hidden || !std::isfinite(value))
+            // Float32 holds magnitudes up to about 3.4e38; beyond is no data, not inf.
+            if (hidden || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
             {
               value = raster.noData;
               raster.hasNoData = true;

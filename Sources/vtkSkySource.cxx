@@ -20,6 +20,7 @@
 #include "error.h"
 #include "perez_sky.h"
 #include "sky_hierarchy.h"
+#include "finite_parameters.h"
 #include "vtkTerraLuxFieldData.h"
 
 #include <cmath>
@@ -170,6 +171,18 @@ int vtkSkySource::RequestData(
   map->Initialize();
   dome->Initialize();
 
+  try
+  {
+    terralux::requireFiniteParameters({ { "SunZenith", this->SunZenith }, { "SunAzimuth", this->SunAzimuth },
+      { "DiffuseHorizontalIrradiance", this->DiffuseHorizontalIrradiance },
+      { "DirectNormalIrradiance", this->DirectNormalIrradiance },
+      { "ExtraterrestrialIrradiance", this->ExtraterrestrialIrradiance }, { "DomeRadius", this->DomeRadius } });
+  }
+  catch (const terralux::Error& error)
+  {
+    vtkErrorMacro(<< error.what());
+    return 0;
+  }
   double sunZenith = this->SunZenith, sunAzimuth = this->SunAzimuth;
   double diffuse = this->DiffuseHorizontalIrradiance, direct = this->DirectNormalIrradiance;
   double extraterrestrial = this->ExtraterrestrialIrradiance;

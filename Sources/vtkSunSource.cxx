@@ -17,6 +17,7 @@
 #include "error.h"
 #include "sky_model.h"
 #include "solar_position.h"
+#include "finite_parameters.h"
 #include "vtkTerraLuxFieldData.h"
 
 #include <cmath>
@@ -97,6 +98,12 @@ int vtkSunSource::RequestData(
   terralux::DateTime instant;
   try
   {
+    terralux::requireFiniteParameters({ { "Latitude", place[0] }, { "Longitude", place[1] },
+      { "Height", place[2] }, { "Pressure", this->Pressure }, { "Temperature", this->Temperature },
+      { "DeltaT", this->DeltaT }, { "LinkeTurbidity", this->LinkeTurbidity },
+      { "SolarConstant", this->SolarConstant }, { "UserNormalIrradiance", this->UserNormalIrradiance },
+      { "UserDiffuseHorizontalIrradiance", this->UserDiffuseHorizontalIrradiance },
+      { "DisplayDistance", this->DisplayDistance } });
     instant = terralux::DateTime::parse(this->DateTime ? this->DateTime : "");
     terralux::SolarPositionInput in;
     in.julianDayUT = instant.julianDay();

@@ -55,6 +55,24 @@ vtkSmartPointer<vtkDataArray> newValues(const char* name, int components, vtkIdT
   return array;
 }
 
+// Heights no DEM on Earth holds (the Mariana Trench is at -11 km, Everest at 8.8 km).
+constexpr double lowestPlausibleHeightM = -12000.0;
+constexpr double highestPlausibleHeightM = 10000.0;
+
+// Makes heights beyond the plausible range no data (NaN); returns how many there were.
+template <typename HeightT>
+vtkIdType dropImplausibleHeights(HeightT* heights, vtkIdType count)
+{
+  vtkIdType dropped = 0;
+  for (vtkIdType k = 0; k < count; ++k)
+    if (std::isfinite(heights[k]) && !(heights[k] >= lowestPlausibleHeightM && heights[k] <= highestPlausibleHeightM))
+    {
+      heights[k] = std::numeric_limits<HeightT>::quiet_NaN();
+      ++dropped;
+    }
+  return dropped;
+}
+
 // Marks no-data posts (NaN heights) hidden; returns the lowest valid height.
 template <typename HeightT>
 double blankNoDataPosts(const HeightT* heights, vtkIdType count, vtkUnsignedCharArray* ghosts)
@@ -72,7 +90,7 @@ double blankNoDataPosts(const HeightT* heights, vtkIdType count, vtkUnsignedChar
   return lowest;
 }
 
-// Raster order (row 0 first) -> VTK order (j = ny - 1 - row), in place.
+// Reverses the row order in place (raster row 0 first -> grid j = ny - 1 - row).
 template <typename T>
 void flipRows(T* values, int nx, int ny)
 {
@@ -140,7 +158,9 @@ void vtkTerrainSource::ResolveRasterRequest(RasterRequest& request)
   request.raster = std::make_unique<terralux::DemRaster>(this->FileName ? this->FileName : "", this->Band);
   const terralux::RasterInfo& info = request.raster->info();
   const bool useWindow = this->PixelWindow[2] > 0 && this->PixelWindow[3] > 0;
-  const bool useBounds = this->GeoBounds[0] < this->GeoBounds[1];
+  // GeoBounds is unset while all four values are 0; anything else must be a valid box.
+  const bool useBounds = !(this->GeoBounds[0] == 0.0 && this->GeoBounds[1] == 0.0 && this->GeoBounds[2] == 0.0 &&
+    this->GeoBounds[3] == 0.0);
   std::ostringstream message;
 
   if (useWindow && useBounds)
@@ -151,7 +171,7 @@ void vtkTerrainSource::ResolveRasterRequest(RasterRequest& request)
   if (useBounds)
   {
     const double* b = this->GeoBounds;
-    if (!(b[0] >= -90.0 && b[1] <= 90.0 && b[2] < b[3] && b[2] >= -180.0 && b[3] <= 360.0))
+    if (!(b[0] >= -90.0 && b[1] <= 90.0 && b[0] < b[1] && b[2] < b[3] && b[2] >= -180.0 && b[3] <= 360.0))
     {
       message << "GeoBounds (" << b[0] << ", " << b[1] << ", " << b[2] << ", " << b[3]
               << ") is not a geographic box: give south < north within [-90, 90] and "
@@ -261,8 +281,17 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
     }
     return work(vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
   };
-  const std::size_t valid = withHeights(
+  std::size_t valid = withHeights(
     [&](auto* heights) { return request.raster->read(request.window, this->Stride, heights); });
+  const vtkIdType implausible = withHeights([&](auto* heights) { return dropImplausibleHeights(heights, count); });
+  valid -= static_cast<std::size_t>(implausible);
+  if (implausible > 0)
+  {
+    vtkWarningMacro(<< implausible << " post(s) of '" << this->FileName << "' hold heights beyond ["
+                    << lowestPlausibleHeightM << ", " << highestPlausibleHeightM
+                    << "] m, which no DEM holds: they are taken as no data. Set the band's no-data value "
+                       "(gdal_edit.py -a_nodata) if they mark missing posts.");
+  }
   if (valid == 0)
   {
     vtkErrorMacro("Every post of '" << this->FileName
@@ -321,6 +350,8 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
     vtkTerraLuxFieldData::AddVector(fieldData, "GeoOrigin", originValues, 3);
   }
 
+  // Raster order -> grid order (GeoTransform::gridRow): reversed for north-up rasters.
+  const bool rowsReversed = grid.geoTransform.gridRow(0, ny) != 0;
   vtkNew<vtkPoints> points;
   points->SetDataType(this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
   points->SetNumberOfPoints(count);
@@ -334,9 +365,11 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
     {
       placement->place(heights, lowest, static_cast<float*>(xyz));
     }
-    flipRows(heights, nx, ny);
+    if (rowsReversed)
+      flipRows(heights, nx, ny);
   });
-  flipRows(ghosts->GetPointer(0), nx, ny);
+  if (rowsReversed)
+    flipRows(ghosts->GetPointer(0), nx, ny);
   this->UpdateProgress(0.9);
 
   output->SetDimensions(nx, ny, 1);
@@ -394,7 +427,22 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
   ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
   ghosts->SetNumberOfTuples(count);
 
-  vtkIdType valid = 0;
+  double spacing[3], origin[3];
+  input->GetSpacing(spacing);
+  input->GetOrigin(origin);
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(spacing[k]) || !std::isfinite(origin[k]))
+    {
+      vtkErrorMacro("The input image's spacing or origin holds NaN or infinity: give it finite values "
+                    "(SetSpacing(), SetOrigin(), in metres).");
+      return false;
+    }
+  if (!(spacing[0] != 0.0 && spacing[1] != 0.0))
+  {
+    vtkErrorMacro("The input image's x or y spacing is 0: give it the post spacing in metres (SetSpacing()).");
+    return false;
+  }
+  vtkIdType valid = 0, implausible = 0;
   double lowest = std::numeric_limits<double>::infinity();
   for (vtkIdType k = 0; k < count; ++k)
   {
@@ -402,6 +450,11 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
     if (inputGhosts && (inputGhosts->GetValue(k) & vtkDataSetAttributes::HIDDENPOINT))
     {
       h = std::numeric_limits<double>::quiet_NaN();
+    }
+    if (std::isfinite(h) && !(h >= lowestPlausibleHeightM && h <= highestPlausibleHeightM))
+    {
+      h = std::numeric_limits<double>::quiet_NaN();
+      ++implausible;
     }
     const bool isValid = std::isfinite(h);
     elevation->SetComponent(k, 0, isValid ? h : std::numeric_limits<double>::quiet_NaN());
@@ -412,9 +465,14 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
       lowest = std::min(lowest, h);
     }
   }
+  if (implausible > 0)
+  {
+    vtkWarningMacro(<< implausible << " height(s) of the input image lie beyond [" << lowestPlausibleHeightM << ", "
+                    << highestPlausibleHeightM << "] m, which no DEM holds: they are taken as no data.");
+  }
   if (valid == 0)
   {
-    vtkErrorMacro("Every height of the input image is NaN or blanked: nothing to build.");
+    vtkErrorMacro("Every height of the input image is NaN, blanked or implausible: nothing to build.");
     return false;
   }
 

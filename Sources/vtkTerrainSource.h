@@ -18,7 +18,17 @@
  *
  * The output is a vtkStructuredGrid of dimensions (nx, ny, 1). Grid point (i, j)
  * is raster post (i, ny - 1 - j): i runs along raster columns and j against raster
- * rows, so for a north-up raster j grows northward and cell normals point up.
+ * rows, so for a north-up raster j grows northward and cell normals point up. A raster
+ * whose geotransform keeps orientation (negative pixel width, south-up rows) keeps its
+ * row order instead (grid point (i, j) is post (i, j)), so its cells face up too:
+ * any valid geotransform, rotated ones included, gives an upward-facing terrain.
+ *
+ * Heights beyond [-12000, 10000] m, which no DEM holds, are taken as no data with a
+ * warning that counts them. Refused with an error naming the fix, output empty:
+ * missing or unreadable files, a band out of range, all posts no data, an empty
+ * window, a GeoBounds box that is not one (south >= north, west >= east, NaN, beyond
+ * the poles), both a window and a box, a CRS GDAL cannot bring to WGS84, posts that
+ * map beyond latitude 90, a NaN origin, a height-field image with NaN or zero spacing.
  * Point data:
  * - `Elevation`: the raster's values (float, or double for Float64/Int32 rasters),
  *   NaN at no-data posts.
@@ -31,8 +41,8 @@
  *   ellipsoid) of the ENU frame (absent for rasters without a CRS);
  * - `CRS` (WKT of the raster's CRS, empty if none);
  * - `GeoTransform` (6 values, GDAL convention, raster row order) of the output grid:
- *   its pixel (i, row) is centred on grid point (i, ny - 1 - row), window and stride
- *   included;
+ *   its pixel (i, row) is centred on grid point (i, ny - 1 - row) (or (i, row) for a
+ *   transform that keeps orientation, see above), window and stride included;
  * - `RasterSize` (nx, ny);
  * - `NoDataValue` (the band's no-data value, when it has one);
  * - `LocalOrigin` (map x, y and height of the frame origin, rasters without a CRS).
@@ -97,8 +107,9 @@ public:
   ///@{
   /**
    * Set/Get a geographic box (south, north, west, east) in WGS84 degrees; the output
-   * covers the raster's pixels that overlap it. Used when south < north; cannot be
-   * combined with a PixelWindow. Default is (0, 0, 0, 0): unused.
+   * covers the raster's pixels that overlap it. Any value other than (0, 0, 0, 0) must
+   * be a box (south < north in [-90, 90], west < east), else RequestData fails; cannot
+   * be combined with a PixelWindow. Default is (0, 0, 0, 0): unused.
    */
   vtkSetVector4Macro(GeoBounds, double);
   vtkGetVector4Macro(GeoBounds, double);

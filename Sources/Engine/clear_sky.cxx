@@ -81,8 +81,10 @@ ClearSkyIrradiance ineichenPerezClearSky(
   const double beam = b * std::exp(-0.09 * airMass * (tl - 1.0)) * extraterrestrialWm2;
   const double beamBound =
     global * std::clamp((1.0 - (0.1 - 0.2 * std::exp(-tl)) / (0.1 + 0.882 / fh1)) / cosZenith, 0.0, 1e20);
-  result.globalHorizontalWm2 = std::max(0.0, global);
-  result.directNormalWm2 = std::max(0.0, std::min(beam, beamBound));
+  // At high sites (b > 1 above about 3.5 km, c_g1 > 1) the fits exceed what reaches the
+  // top of the atmosphere: no clear sky gives more than the extraterrestrial irradiance.
+  result.globalHorizontalWm2 = std::clamp(global, 0.0, extraterrestrialWm2 * cosZenith);
+  result.directNormalWm2 = std::clamp(std::min(beam, beamBound), 0.0, extraterrestrialWm2);
   result.diffuseHorizontalWm2 =
     std::max(0.0, result.globalHorizontalWm2 - result.directNormalWm2 * cosZenith);
   return result;

@@ -18,6 +18,17 @@ struct GeoTransform
   /// True when the 2x2 linear part is invertible and every coefficient finite.
   bool isValid() const;
 
+  /// Grid index j of raster row `row` in a grid of `rows` rows whose cells face up in a
+  /// right-handed map CRS (x east, y north): rows reversed when the transform is
+  /// orientation-reversing, as a north-up raster's is (columns east, rows south), kept
+  /// in order when it is not (negative pixel width, south-up rasters), so that any
+  /// valid transform, rotated ones included, gives an upward-facing terrain.
+  int gridRow(int row, int rows) const
+  {
+    const auto& c = this->coefficients;
+    return c[1] * c[5] - c[2] * c[4] < 0.0 ? rows - 1 - row : row;
+  }
+
   /// Geotransform of a subsampled window: its pixel (i, j) is centred where this
   /// transform's pixel (col0 + i*stride, row0 + j*stride) is centred, with pixels
   /// stride times larger, so a raster written with it lands on the same posts.

@@ -6,6 +6,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -93,6 +94,7 @@ void TerrainPlacement::place(const HeightT* heights, double holeHeightM, PointT*
     return this->Projection ? this->Projection->clone() : std::unique_ptr<MapProjection>();
   });
 
+  std::atomic<bool> pastPole{ false };
   tbb::parallel_for(tbb::blocked_range<int>(0, ny, 16), [&](const tbb::blocked_range<int>& rows) {
     std::vector<double> x(nx), y(nx);
     MapProjection* projection = projections.local().get();
@@ -107,13 +109,18 @@ void TerrainPlacement::place(const HeightT* heights, double holeHeightM, PointT*
         projection->toGeographic(static_cast<std::size_t>(nx), x.data(), y.data());
       }
       const HeightT* rowHeights = heights + static_cast<std::size_t>(row) * nx;
-      PointT* out = xyz + 3 * static_cast<std::size_t>(ny - 1 - row) * nx;
+      PointT* out = xyz + 3 * static_cast<std::size_t>(this->Grid.geoTransform.gridRow(row, ny)) * nx;
       for (int i = 0; i < nx; ++i)
       {
         const double h = std::isfinite(rowHeights[i]) ? static_cast<double>(rowHeights[i]) : holeHeightM;
         LocalPoint local;
         if (projection)
         {
+          if (!(std::abs(y[i]) <= 90.0))
+          {
+            pastPole = true;
+            y[i] = 0.0;
+          }
           local = this->Frame->toLocal({ y[i], x[i], h });
         }
         else
@@ -126,6 +133,12 @@ void TerrainPlacement::place(const HeightT* heights, double holeHeightM, PointT*
       }
     }
   });
+  if (pastPole)
+  {
+    throw Error("the raster's geotransform puts posts beyond latitude 90 degrees (or where no "
+                "latitude exists): check its geotransform and CRS (gdalinfo), or read a window "
+                "inside the valid range (SetGeoBounds, SetPixelWindow)");
+  }
 }
 
 template void TerrainPlacement::place<float, float>(const float*, double, float*) const;

@@ -4,9 +4,11 @@
 // (GeographicLib), keeping Earth curvature; rasters without a CRS are taken
 // as local metres relative to a map origin.
 //
-// Post order: raster rows run north to south, VTK's j index south to north,
-// so grid point (i, j) is raster post (i, ny - 1 - j). For a north-up raster
-// this makes the grid right-handed and its cell normals point up.
+// Post order: grid point (i, j) is raster post (i, row) with j = gridRow(row)
+// (GeoTransform::gridRow): for a north-up raster, whose rows run north to south,
+// j = ny - 1 - row grows northward; a raster whose transform keeps orientation
+// (south-up, or negative pixel width) keeps its row order. Either way the grid is
+// right-handed in ENU and its cell normals point up.
 
 #include "geo_transform.h"
 #include "local_frame.h"
@@ -55,7 +57,9 @@ public:
 
   /// Writes 3 * nx * ny coordinates in VTK order (see above). No-data posts (NaN)
   /// are put at holeHeightM so that no spike or NaN reaches the geometry; callers
-  /// blank them. Runs in parallel; results do not depend on the thread count.
+  /// blank them. Throws Error when a post maps beyond latitude +-90 (a geotransform
+  /// that reaches past a pole). Runs in parallel; results do not depend on the
+  /// thread count.
   template <typename HeightT, typename PointT>
   void place(const HeightT* heights, double holeHeightM, PointT* xyz) const;
 
