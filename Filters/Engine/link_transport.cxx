@@ -194,10 +194,18 @@ double kernelAtSurface(const PolygonElement& receiver, HElement& sender)
     case HElement::Kind::Sun:
       return receiver.receiverFactor(static_cast<SunElement&>(sender).direction());
     case HElement::Kind::SkyPatch:
-      return static_cast<SkyPatchElement&>(sender).projectedSolidAngle(receiver.normal());
+      return static_cast<SkyPatchElement&>(sender).kernel(receiver.normal());
     default:
       return surfaceKernel(receiver, sender);
   }
+}
+
+double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
+{
+  if (sender.kind() != HElement::Kind::SkyPatch)
+    return 0.0;
+  constexpr double pi = 3.14159265358979323846;
+  return transport * static_cast<const SkyPatchElement&>(sender).geometricShare(normal) / pi;
 }
 
 int lightCategoryOf(const HElement& sender)
@@ -264,7 +272,7 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
     case HElement::Kind::SkyPatch:
     {
       const SkyPatch& range = static_cast<SkyPatchElement&>(sender).patch();
-      const double kernel = static_cast<SkyPatchElement&>(sender).projectedSolidAngle(n);
+      const double kernel = static_cast<SkyPatchElement&>(sender).kernel(n);
       if (!(kernel > 0.0))
         return 0.0;
       return kernel * seen([&](int) { return sampleSkyDirection(range, random); });
@@ -355,7 +363,7 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
     // R S Omega: for a surface, the patch's projected solid angle integrated over the
     // patch (a patch straddling the surface's horizon counts only its visible part).
     link.kernel = link.directional ? patch.solidAngle()
-                                   : patch.projectedSolidAngle(static_cast<PolygonElement&>(receiver).normal());
+                                   : patch.kernel(static_cast<PolygonElement&>(receiver).normal());
     link.kernelSpread = cosineSpread(receiver) * patch.solidAngle();
     if (link.kernel > 0.0)
     {

@@ -13,6 +13,10 @@ class Visibility;
 /// Category of light a sender contributes.
 int lightCategoryOf(const HElement& sender);
 
+/// What transport (kernel x visibility) from a sky patch to a surface of unit normal n
+/// adds to its sky view factor: the geometric share of it, over pi; 0 for other senders.
+double skyViewOf(const HElement& sender, const Vec3& normal, double transport);
+
 class PolygonElement;
 
 /// Kernel of a surface or cluster sender at a surface receiver: the form factor

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace terralux
 {
@@ -23,12 +24,9 @@ SkyPatchElement::SkyPatchElement(
   const terralux::Direction d = patch.direction();
   this->Direction = Vec3(d[0], d[1], d[2]);
 
-  // Vector solid angle: integral of (-sin v cos u, -cos v cos u, sin u) cos u du dv.
+  const terralux::Direction vector = patch.vectorSolidAngle();
+  this->VectorSolidAngle = Vec3(vector[0], vector[1], vector[2]);
   const double u0 = patch.u0(), u1 = patch.u1(), v0 = patch.v0(), v1 = patch.v1();
-  const double cosSquared = 0.5 * (u1 - u0) + 0.25 * (std::sin(2 * u1) - std::sin(2 * u0));
-  const double sinCos = 0.5 * (std::sin(u1) * std::sin(u1) - std::sin(u0) * std::sin(u0));
-  this->VectorSolidAngle = Vec3((std::cos(v1) - std::cos(v0)) * cosSquared,
-    -(std::sin(v1) - std::sin(v0)) * cosSquared, (v1 - v0) * sinCos);
   const double us[2] = { u0, u1 }, vs[2] = { v0, v1 };
   for (int k = 0; k < 4; ++k)
   {
@@ -53,21 +51,76 @@ SkyPatchElement::SkyPatchElement(
     // A one-band sky lights every band alike.
     this->Radiance[band] = sky->radiance(patch, sky->bands() == 1 ? 0 : std::min(band, sky->bands() - 1));
   }
+  // The radiance-weighted direction, over the sky's bands (exact for one band, and for
+  // bands in proportion).
+  Vec3 weighted(0.0);
+  double radiance = 0.0;
+  for (int band = 0; band < sky->bands(); ++band)
+  {
+    const terralux::Direction w = sky->irradianceVector(patch, band);
+    weighted += Vec3(w[0], w[1], w[2]);
+    radiance += sky->radiance(patch, band);
+  }
+  this->RadianceVector = radiance > 0.0 ? weighted / radiance : this->VectorSolidAngle;
+}
+
+int SkyPatchElement::sideOf(const Vec3& n) const
+{
+  // n . d = n_z sin u - cos u g(v), g(v) = n_x sin v + n_y cos v = h cos(v - phi).
+  const double v0 = this->Patch.v0(), v1 = this->Patch.v1(), u0 = this->Patch.u0(), u1 = this->Patch.u1();
+  auto g = [&](double v) { return n.x * std::sin(v) + n.y * std::cos(v); };
+  double gLow = std::min(g(v0), g(v1)), gHigh = std::max(g(v0), g(v1));
+  const double phi = std::atan2(n.x, n.y);
+  constexpr double pi = 3.14159265358979323846;
+  for (int k = -2; k <= 3; ++k) // the extremes of g at phi + k pi inside [v0, v1]
+  {
+    const double v = phi + k * pi;
+    if (v > v0 && v < v1)
+    {
+      gLow = std::min(gLow, g(v));
+      gHigh = std::max(gHigh, g(v));
+    }
+  }
+  // For a fixed g, f(u) = n_z sin u - g cos u has its extremes at u0, u1 or where
+  // f'(u) = n_z cos u + g sin u = 0; f is linear in g, so g's extremes suffice.
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (double gv : { gLow, gHigh })
+  {
+    auto f = [&](double u) { return n.z * std::sin(u) - gv * std::cos(u); };
+    const double stationary = std::atan2(-n.z, gv); // tan u = -n_z / g
+    for (double u : { u0, u1, stationary, stationary + pi, stationary - pi })
+      if (u >= u0 && u <= u1)
+      {
+        low = std::min(low, f(u));
+        high = std::max(high, f(u));
+      }
+  }
+  constexpr double grazing = 1e-12;
+  return low >= -grazing ? 1 : (high <= grazing ? -1 : 0);
+}
+
+double SkyPatchElement::kernel(const Vec3& normal) const
+{
+  if (this->sideOf(normal) > 0)
+    return std::max(0.0, glm::dot(normal, this->RadianceVector));
+  return this->projectedSolidAngle(normal);
+}
+
+double SkyPatchElement::geometricShare(const Vec3& normal) const
+{
+  if (this->sideOf(normal) <= 0)
+    return 1.0;
+  const double weighted = glm::dot(normal, this->RadianceVector);
+  return weighted > 0.0 ? std::max(0.0, glm::dot(normal, this->VectorSolidAngle)) / weighted : 1.0;
 }
 
 double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
 {
-  // Small patches (level >= 3, at most 45 x 11 degrees) wholly in front of the surface.
-  if (this->Patch.level >= 3 && glm::dot(normal, this->Direction) > 0.0)
-  {
-    bool inFront = true;
-    for (const Vec3& corner : this->CornerDirections)
-      inFront = inFront && glm::dot(normal, corner) > 0.0;
-    if (inFront)
-    {
-      return glm::dot(normal, this->VectorSolidAngle);
-    }
-  }
+  const int side = this->sideOf(normal);
+  if (side > 0)
+    return std::max(0.0, glm::dot(normal, this->VectorSolidAngle));
+  if (side < 0)
+    return 0.0;
   double sum = 0.0;
   bool straddles = false;
   for (int k = 0; k < 9; ++k)

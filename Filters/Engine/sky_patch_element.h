@@ -27,9 +27,19 @@ public:
   const SkyPatch& patch() const { return this->Patch; }
 
   /// Integral of max(0, n . d) dOmega over the patch for a unit normal n: in closed form
-  /// (n . the patch's vector solid angle) when the whole patch is in front of n, else by
-  /// 3 x 3 Gauss quadrature over (sin u, v).
+  /// (n . the patch's vector solid angle) when the whole patch is in front of n, 0 when
+  /// it is wholly behind, else by Gauss quadrature over (sin u, v). Geometric: what the
+  /// sky view factor counts.
   double projectedSolidAngle(const Vec3& normal) const;
+  /// The transport kernel toward a surface of unit normal n, per unit of the patch's
+  /// mean radiance: exact (n . the patch's irradiance vector / mean radiance) when the
+  /// whole patch is in front of n, whatever its level, so an open plane receives exactly
+  /// what the radiance map gives it; projectedSolidAngle(n) where the surface's horizon
+  /// crosses the patch (the refinement splits such links while they matter).
+  double kernel(const Vec3& normal) const;
+  /// projectedSolidAngle(n) / kernel(n) (1 where they agree or kernel is 0): turns
+  /// transport into the geometric share the sky view factor counts.
+  double geometricShare(const Vec3& normal) const;
 
 private:
   ElementStore* Store;
@@ -38,7 +48,13 @@ private:
   Spectrum Radiance{};
   double SolidAngle;
   Vec3 Direction;
+  /// Whether the patch lies wholly in front of (+1), wholly behind (-1) a plane of unit
+  /// normal n through the receiver, or straddles its horizon (0): the exact extremes of
+  /// n . d over the patch.
+  int sideOf(const Vec3& normal) const;
+
   Vec3 VectorSolidAngle{ 0.0 };       // integral of d dOmega over the patch
+  Vec3 RadianceVector{ 0.0 };         // integral of L d dOmega / mean L (bands summed)
   std::array<Vec3, 4> CornerDirections{};
   std::array<Vec3, 9> QuadratureDirections{};
   std::array<double, 9> QuadratureWeights{};

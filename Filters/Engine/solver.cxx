@@ -303,10 +303,8 @@ void HierarchicalRadiosity::gather()
         element.GatheredPartial +=
           link.kernel * link.visibility * std::max({ emittance[0], emittance[1], emittance[2] });
       }
-      if (category == SkyLight)
-      {
-        element.GatheredSkyView += link.kernel * link.visibility / pi;
-      }
+      element.GatheredSkyView +=
+        skyViewOf(*link.sender, static_cast<PolygonElement&>(element).normal(), link.kernel * link.visibility);
     }
   });
 }
@@ -433,8 +431,7 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, bool re
     const int category = lightCategoryOf(*link.sender);
     for (int band = 0; band < maxBands; ++band)
       irradiance[category][band] += transport * e[band];
-    if (category == SkyLight)
-      skyView += transport / pi;
+    skyView += skyViewOf(*link.sender, polygon.normal(), transport);
   }
   polygon.Irradiance = irradiance;
   polygon.SkyViewFactor = skyView;
@@ -545,11 +542,8 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)
         irradiance[category][band] += transport * e[band];
-      if (category == SkyLight)
-      {
-        // Sky links cover the whole sky once: their projected solid angles, seen, over pi.
-        result.skyViewFactor += transport / pi;
-      }
+      // Sky links cover the whole sky once: their projected solid angles, seen, over pi.
+      result.skyViewFactor += skyViewOf(*link.sender, normal, transport);
     }
   }
   return result;

@@ -47,6 +47,16 @@ double SkyPatch::solidAngle() const
   return (this->v1() - this->v0()) * (std::sin(this->u1()) - std::sin(this->u0()));
 }
 
+Direction SkyPatch::vectorSolidAngle() const
+{
+  // Integral of (-sin v cos u, -cos v cos u, sin u) cos u du dv.
+  const double u0 = this->u0(), u1 = this->u1(), v0 = this->v0(), v1 = this->v1();
+  const double cosSquared = 0.5 * (u1 - u0) + 0.25 * (std::sin(2 * u1) - std::sin(2 * u0));
+  const double sinCos = 0.5 * (std::sin(u1) * std::sin(u1) - std::sin(u0) * std::sin(u0));
+  return { (std::cos(v1) - std::cos(v0)) * cosSquared, -(std::sin(v1) - std::sin(v0)) * cosSquared,
+    (v1 - v0) * sinCos };
+}
+
 Direction SkyPatch::direction() const
 {
   return directionFromSkyParameters(0.5 * (this->u0() + this->u1()), 0.5 * (this->v0() + this->v1()));
@@ -197,6 +207,42 @@ SkyHierarchy SkyHierarchy::fromCellAverages(int finestLevel, int bands, const st
 void SkyHierarchy::buildPyramid()
 {
   const int finestLevel = this->FinestLevel;
+  // Irradiance vectors: radiance x vector solid angle at the finest cells, sums above.
+  this->VectorPyramid.assign(finestLevel + 1, {});
+  {
+    const int side = cellsPerSide(finestLevel);
+    auto& finest = this->VectorPyramid[finestLevel];
+    finest.resize(static_cast<std::size_t>(side) * side * this->Bands * 3);
+    for (int iu = 0; iu < side; ++iu)
+      for (int iv = 0; iv < side; ++iv)
+      {
+        const Direction vector = SkyPatch{ finestLevel, iu, iv }.vectorSolidAngle();
+        for (int band = 0; band < this->Bands; ++band)
+        {
+          const std::size_t k = (static_cast<std::size_t>(iu) * side + iv) * this->Bands + band;
+          for (int axis = 0; axis < 3; ++axis)
+            finest[3 * k + axis] = this->Pyramid[finestLevel][k] * vector[axis];
+        }
+      }
+    for (int level = finestLevel - 1; level >= 0; --level)
+    {
+      const int n = cellsPerSide(level);
+      auto& cells = this->VectorPyramid[level];
+      const auto& fine = this->VectorPyramid[level + 1];
+      cells.assign(static_cast<std::size_t>(n) * n * this->Bands * 3, 0.0);
+      for (int iu = 0; iu < n; ++iu)
+        for (int iv = 0; iv < n; ++iv)
+        {
+          SkyPatch kids[4];
+          SkyPatch{ level, iu, iv }.children(kids);
+          for (const SkyPatch& kid : kids)
+            for (int band = 0; band < this->Bands; ++band)
+              for (int axis = 0; axis < 3; ++axis)
+                cells[((static_cast<std::size_t>(iu) * n + iv) * this->Bands + band) * 3 + axis] +=
+                  fine[((static_cast<std::size_t>(kid.iu) * 2 * n + kid.iv) * this->Bands + band) * 3 + axis];
+        }
+    }
+  }
   for (int level = finestLevel - 1; level >= 0; --level)
   {
     const int n = cellsPerSide(level);
@@ -243,6 +289,20 @@ double SkyHierarchy::radiance(const SkyPatch& patch, int band) const
   const double fx = std::clamp(x - i0, 0.0, 1.0), fy = y - j0;
   return (1 - fx) * ((1 - fy) * this->finestAverage(i0, j0, band) + fy * this->finestAverage(i0, j0 + 1, band)) +
     fx * ((1 - fy) * this->finestAverage(i0 + 1, j0, band) + fy * this->finestAverage(i0 + 1, j0 + 1, band));
+}
+
+Direction SkyHierarchy::irradianceVector(const SkyPatch& patch, int band) const
+{
+  if (patch.level <= this->FinestLevel)
+  {
+    const int n = cellsPerSide(patch.level);
+    const double* v =
+      &this->VectorPyramid[patch.level][((static_cast<std::size_t>(patch.iu) * n + patch.iv) * this->Bands + band) * 3];
+    return { v[0], v[1], v[2] };
+  }
+  const double l = this->radiance(patch, band);
+  const Direction vector = patch.vectorSolidAngle();
+  return { l * vector[0], l * vector[1], l * vector[2] };
 }
 
 double SkyHierarchy::planeIrradiance(const Direction& normal, int level, int band) const

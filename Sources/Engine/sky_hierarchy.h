@@ -41,6 +41,10 @@ struct SkyPatch
   double v1() const;
   /// Omega = (v1 - v0)(sin u1 - sin u0), steradians.
   double solidAngle() const;
+  /// Vector solid angle: the integral of the unit direction d dOmega over the patch, in
+  /// closed form; n . it is the patch's projected solid angle for a plane of normal n
+  /// that sees all of the patch.
+  Direction vectorSolidAngle() const;
   /// Unit ENU vector toward the patch centre (mid altitude, mid azimuth).
   Direction direction() const;
   /// The four children at level + 1.
@@ -81,6 +85,12 @@ public:
 
   /// Cell-averaged radiance (W/m^2/sr) of a patch; below the finest level, subsampled.
   double radiance(const SkyPatch& patch, int band) const;
+  /// Irradiance vector of a patch: the integral of L d dOmega (W/m^2), summed up the
+  /// pyramid from the finest cells (radiance constant in each), so n . it is the exact
+  /// irradiance the patch gives a plane of normal n that sees all of it, at every level
+  /// (mean radiance x projected solid angle is not, where radiance varies with
+  /// altitude). Below the finest level: the subsampled radiance x vectorSolidAngle().
+  Direction irradianceVector(const SkyPatch& patch, int band) const;
   /// Radiance scale: W/m^2/sr per unit of the model's relative radiance.
   double radianceScale() const { return this->Scale; }
   /// Irradiance on a horizontal plane from the whole sky (W/m^2), per band.
@@ -100,5 +110,6 @@ private:
   double Scale = 0.0;
   std::vector<double> Horizontal;
   std::vector<std::vector<double>> Pyramid; // [level][(iu * side + iv) * bands + band]
+  std::vector<std::vector<double>> VectorPyramid; // [level][((iu * side + iv) * bands + band) * 3 + axis]
 };
 } // namespace terralux
