@@ -403,7 +403,8 @@ void vtkRadiosityOutputs::BuildLeafMesh(
     [](const terralux::PolygonElement* a, const terralux::PolygonElement* b) { return a->area() > b->area(); });
   std::function<void(vtkIdType, vtkIdType)> anchor = [&](vtkIdType a, vtkIdType b) {
     const auto it = index.find(0.5 * (positions[a] + positions[b]));
-    if (it == index.end())
+    // In floating point the midpoint of two (nearly) equal corners is one of them.
+    if (it == index.end() || it->second == a || it->second == b)
       return;
     Values mid{};
     accumulate(mid, values[a], 0.5);

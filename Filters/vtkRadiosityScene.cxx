@@ -70,6 +70,15 @@ private:
   double Fallback;
 };
 
+// Coordinates the engine can work with: finite and within 1e12 m of the origin (ray
+// casting is in single precision relative to the scene's centre, and products of
+// coordinates must not overflow).
+bool usableCoordinate(const terralux::Vec3& p)
+{
+  constexpr double reach = 1e12;
+  return std::abs(p.x) <= reach && std::abs(p.y) <= reach && std::abs(p.z) <= reach;
+}
+
 // Every point id of a cell must name a point of the data set (a corrupt cell array
 // would otherwise read past the points).
 void checkPointIds(vtkIdType cell, vtkIdType count, const vtkIdType* ids, vtkIdType pointCount, int owner)
@@ -165,7 +174,7 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
       for (int i = 0; i < dims[0]; ++i)
       {
         grid->GetPoint(i + static_cast<vtkIdType>(j) * dims[0], p);
-        const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        const bool finite = usableCoordinate(terralux::Vec3(p[0], p[1], p[2]));
         terrain->setPost(i, j, finite ? terralux::Vec3(p[0], p[1], p[2]) : terrain->origin());
         if (!finite)
           anyNonFinite = true;
@@ -189,7 +198,7 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
         {
           const vtkIdType id = (i + c % 2) + static_cast<vtkIdType>(j + c / 2) * dims[0];
           grid->GetPoint(id, p);
-          if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+          if (!usableCoordinate(terralux::Vec3(p[0], p[1], p[2])))
             badPoint = id;
         }
       }
@@ -197,7 +206,7 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
   if (badPoint >= 0)
   {
     throw terralux::Error("point " + std::to_string(badPoint.load()) + " of input " + std::to_string(owner) +
-      " has a NaN or infinite coordinate: blank the cells around it or repair it");
+      " has a NaN, infinite or huge coordinate (beyond 1e12 m): blank the cells around it or repair it");
   }
   terrain->setUniformMaterial(reflectance.at(0), emission.at(0));
   if (reflectance.present() || emission.present())
@@ -260,10 +269,11 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
     for (vtkIdType c = 0; c < count; ++c)
     {
       const terralux::Vec3& p = this->Scene.points[first + ids[c]];
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      if (!usableCoordinate(p))
       {
         throw terralux::Error("point " + std::to_string(ids[c]) + " of input " + std::to_string(owner) +
-          " has a NaN or infinite coordinate: remove or repair it");
+          " has a NaN, infinite or huge coordinate (beyond 1e12 m): remove or repair it, and give the "
+          "scene in local metres");
       }
     }
   };

@@ -104,6 +104,16 @@ int vtkSunSource::RequestData(
       { "SolarConstant", this->SolarConstant }, { "UserNormalIrradiance", this->UserNormalIrradiance },
       { "UserDiffuseHorizontalIrradiance", this->UserDiffuseHorizontalIrradiance },
       { "DisplayDistance", this->DisplayDistance } });
+    if (!(std::abs(place[1]) <= 360.0))
+    {
+      throw terralux::Error("Longitude " + std::to_string(place[1]) +
+        " is out of range: give degrees east in [-180, 180] (or [0, 360])");
+    }
+    if (!(place[2] >= -12000.0 && place[2] <= 100000.0))
+    {
+      throw terralux::Error("Height " + std::to_string(place[2]) +
+        " m is out of range: give metres above the ellipsoid in [-12000, 100000]");
+    }
     instant = terralux::DateTime::parse(this->DateTime ? this->DateTime : "");
     terralux::SolarPositionInput in;
     in.julianDayUT = instant.julianDay();

@@ -437,6 +437,15 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
                     "(SetSpacing(), SetOrigin(), in metres).");
       return false;
     }
+  const double largest = this->OutputPointsPrecision == DOUBLE_PRECISION ? std::numeric_limits<double>::max()
+                                                                        : std::numeric_limits<float>::max();
+  for (int k = 0; k < 2; ++k)
+    if (!(std::abs(origin[k]) <= largest && std::abs(origin[k] + spacing[k] * (dims[k] - 1)) <= largest))
+    {
+      vtkErrorMacro("The input image's points reach infinite coordinates (origin + spacing x dimension "
+                    "overflows): give a spacing and origin in metres.");
+      return false;
+    }
   if (!(spacing[0] != 0.0 && spacing[1] != 0.0))
   {
     vtkErrorMacro("The input image's x or y spacing is 0: give it the post spacing in metres (SetSpacing()).");

@@ -94,7 +94,7 @@ void TerrainPlacement::place(const HeightT* heights, double holeHeightM, PointT*
     return this->Projection ? this->Projection->clone() : std::unique_ptr<MapProjection>();
   });
 
-  std::atomic<bool> pastPole{ false };
+  std::atomic<bool> pastPole{ false }, nonFinite{ false };
   tbb::parallel_for(tbb::blocked_range<int>(0, ny, 16), [&](const tbb::blocked_range<int>& rows) {
     std::vector<double> x(nx), y(nx);
     MapProjection* projection = projections.local().get();
@@ -127,12 +127,21 @@ void TerrainPlacement::place(const HeightT* heights, double holeHeightM, PointT*
         {
           local = { x[i] - this->MapOrigin[0], y[i] - this->MapOrigin[1], h - this->MapOrigin[2] };
         }
+        // Checked as stored: a finite double may still overflow a float.
+        for (int c = 0; c < 3; ++c)
+          if (!std::isfinite(static_cast<PointT>(local[c])))
+            nonFinite = true;
         out[3 * i + 0] = static_cast<PointT>(local[0]);
         out[3 * i + 1] = static_cast<PointT>(local[1]);
         out[3 * i + 2] = static_cast<PointT>(local[2]);
       }
     }
   });
+  if (nonFinite && !pastPole)
+  {
+    throw Error("the raster's geotransform puts posts at infinite or NaN coordinates (a pixel size or "
+                "origin out of range): check its geotransform (gdalinfo)");
+  }
   if (pastPole)
   {
     throw Error("the raster's geotransform puts posts beyond latitude 90 degrees (or where no "

@@ -441,3 +441,50 @@ TEST(HostileRadiosity, SmallBoxOnHugeGroundGetsTheSameLightOnEveryWall)
     EXPECT_LT(high - low, 0.15 * high);
   }
 }
+
+// Regression tests of the fuzzers' findings (Testing/Fuzz/corpus/*/finding-*).
+TEST(HostileRadiosity, FuzzFindingsStayFixed)
+{
+  auto sky = uniformSky(100.0);
+  // A point at 1e199 m: refused, not NaN.
+  {
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0, 0, 0);
+    points->InsertNextPoint(10, 0, 0);
+    points->InsertNextPoint(0, 1.2e199, 0);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType ids[3] = { 0, 1, 2 };
+    cells->InsertNextCell(3, ids);
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetPolys(cells);
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputData(data);
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    expectRefused(radiosity, "huge coordinate");
+  }
+  // Corners a denormal apart: the leaf mesh's T-vertex walk ends (it recursed forever).
+  {
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0, 0, 0);
+    points->InsertNextPoint(4, 0, 0);
+    points->InsertNextPoint(0, 4, 0);
+    points->InsertNextPoint(0, 1e-322, 0);
+    points->InsertNextPoint(4, 4, 0);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType a[3] = { 0, 1, 2 }, b[3] = { 3, 1, 4 }, c[3] = { 1, 4, 2 };
+    cells->InsertNextCell(3, a);
+    cells->InsertNextCell(3, b);
+    cells->InsertNextCell(3, c);
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetPolys(cells);
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputData(data);
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    radiosity->SetErrorTolerance(1e-4);
+    vtkNew<MessageCatcher> messages;
+    ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+    EXPECT_GT(radiosity->GetLeafMeshOutput()->GetNumberOfCells(), 0);
+  }
+}

@@ -313,3 +313,45 @@ TEST(HostileSources, WriterRefusesWhatItCannotWrite)
   ASSERT_EQ(hugeWriter->Write(), 1);
   EXPECT_EQ(rasterValue(hugeOut, 3, 3), -9999.0);
 }
+
+// Regression tests of the fuzzers' findings (Testing/Fuzz/corpus/*/finding-*).
+TEST(HostileSources, FuzzFindingsStayFixed)
+{
+  // A geotransform whose posts overflow to infinite coordinates (no CRS).
+  RasterSpec overflow;
+  overflow.width = 4;
+  overflow.height = 3;
+  overflow.geoTransform = { -1e308, -1e308, 0, 0, 0, -1 };
+  overflow.elevation = [](int, int) { return 15.0; };
+  vtkNew<vtkTerrainSource> terrain;
+  terrain->SetFileName(writeRaster("overflow-transform.tif", overflow).c_str());
+  vtkNew<MessageCatcher> messages;
+  EXPECT_EQ(runPipeline(terrain, messages), 0);
+  EXPECT_NE(messages->Errors.find("infinite or NaN coordinates"), std::string::npos) << messages->Errors;
+
+  // A height field whose spacing carries points beyond float range.
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(5, 3, 1);
+  image->SetSpacing(1e38, 10, 1); // 4e38 m: beyond single precision
+  vtkNew<vtkFloatArray> heights;
+  heights->SetNumberOfTuples(15);
+  heights->Fill(5.0f);
+  image->GetPointData()->SetScalars(heights);
+  vtkNew<vtkTerrainSource> field;
+  field->SetInputData(image);
+  vtkNew<MessageCatcher> fieldMessages;
+  EXPECT_EQ(runPipeline(field, fieldMessages), 0);
+  EXPECT_NE(fieldMessages->Errors.find("infinite coordinates"), std::string::npos) << fieldMessages->Errors;
+
+  // A sun at an absurd longitude or height.
+  for (auto [longitude, height] : { std::pair<double, double>{ -2.2e256, 0.0 }, { 8.0, -1.9e44 } })
+  {
+    vtkNew<vtkSunSource> sun;
+    sun->SetDateTime("2024-12-21T09:00:00-03:00");
+    sun->SetLongitude(longitude);
+    sun->SetHeight(height);
+    vtkNew<MessageCatcher> sunMessages;
+    EXPECT_EQ(runPipeline(sun, sunMessages), 0);
+    EXPECT_NE(sunMessages->Errors.find("out of range"), std::string::npos) << sunMessages->Errors;
+  }
+}

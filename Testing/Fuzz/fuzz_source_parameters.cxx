@@ -3,6 +3,7 @@
 // would. Each must fail with an error or give finite, physical values.
 #include "fuzz_support.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -13,6 +14,7 @@
 #include "vtkSunSource.h"
 #include "vtkTerrainSource.h"
 
+#include <iostream>
 #include <string>
 
 namespace
@@ -64,7 +66,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double normal = sun->GetNormalIrradiance();
     if (!(std::isfinite(normal) && normal >= 0.0 && std::isfinite(sun->GetDiffuseHorizontalIrradiance()) &&
           std::isfinite(sun->GetZenith()) && std::isfinite(sun->GetAzimuth())))
+    {
+      std::fprintf(stderr, "normal %g diffuse %g zenith %g azimuth %g (date '%s', model %d)\n", normal,
+        sun->GetDiffuseHorizontalIrradiance(), sun->GetZenith(), sun->GetAzimuth(), date.c_str(),
+        sun->GetIrradianceModel());
+      sun->Print(std::cerr);
       terralux_fuzz::finding("vtkSunSource gave a non-finite or negative value");
+    }
     if (sun->GetIrradianceModel() != vtkSunSource::USER && normal > 1.0001 * sun->GetExtraterrestrialIrradiance())
       terralux_fuzz::finding("a clear-sky beam above the extraterrestrial irradiance");
   }

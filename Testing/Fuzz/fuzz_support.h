@@ -12,6 +12,7 @@
 #include <cstring>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 namespace terralux_fuzz
 {
@@ -69,17 +70,23 @@ inline void silenceVtk()
   std::abort();
 }
 
-/// Every point coordinate and every value of every point array is finite.
-inline void requireFiniteOutput(vtkDataSet* data, const char* what)
+/// Every point coordinate and every value of every point array is finite (at the
+/// points `checked` says, or all).
+inline void requireFiniteOutput(vtkDataSet* data, const char* what, const std::vector<bool>* checked = nullptr)
 {
   if (!data)
     return;
   for (vtkIdType k = 0; k < data->GetNumberOfPoints(); ++k)
   {
+    if (checked && !(*checked)[k])
+      continue;
     double p[3];
     data->GetPoint(k, p);
     if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+    {
+      std::fprintf(stderr, "point %lld: %g %g %g\n", static_cast<long long>(k), p[0], p[1], p[2]);
       finding(what);
+    }
   }
   vtkPointData* pointData = data->GetPointData();
   for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
@@ -90,8 +97,16 @@ inline void requireFiniteOutput(vtkDataSet* data, const char* what)
       std::strcmp(array->GetName(), "SkyViewFactor") == 0)
       continue;
     for (vtkIdType k = 0; k < array->GetNumberOfValues(); ++k)
-      if (!std::isfinite(array->GetComponent(k / array->GetNumberOfComponents(), k % array->GetNumberOfComponents())))
+    {
+      if (checked && !(*checked)[k / array->GetNumberOfComponents()])
+        continue;
+      const double v = array->GetComponent(k / array->GetNumberOfComponents(), k % array->GetNumberOfComponents());
+      if (!std::isfinite(v))
+      {
+        std::fprintf(stderr, "array %s value %lld: %g\n", array->GetName(), static_cast<long long>(k), v);
         finding(what);
+      }
+    }
   }
 }
 } // namespace terralux_fuzz
