@@ -21,6 +21,7 @@ packages=(
   googletest libgtest-dev           # C++ unit tests
   xvfb xauth                        # off-screen X for rendering
   time                              # /usr/bin/time -v for the benchmarks
+  clang libclang-rt-14-dev          # the sanitizer build and its libFuzzer targets
 )
 
 sudo_cmd=()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Command (2) of the README: install what is needed, build, and run every test:
-# C++ (GoogleTest), Python and install tests, then the C++ tests again built with
-# AddressSanitizer and UndefinedBehaviorSanitizer.
+# C++ (GoogleTest), Python and install tests, then the C++ tests again built with clang,
+# AddressSanitizer and UndefinedBehaviorSanitizer, and the libFuzzer targets for
+# TERRALUX_FUZZ_SECONDS each (default 60) under the same sanitizers.
 #   TERRALUX_BUILD_DIR   build folder (default: <repo>/build); the sanitizer build
 #                        goes to <that>-asan
 set -euo pipefail
@@ -18,11 +19,12 @@ cmake --build "${build_dir}" -j "${jobs}"
 echo "== tests: C++, Python, install"
 ctest --test-dir "${build_dir}" --output-on-failure -j "${jobs}"
 
-echo "== build (AddressSanitizer + UndefinedBehaviorSanitizer) in ${build_dir}-asan"
-cmake -S "${repo_dir}" -B "${build_dir}-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DTERRALUX_SANITIZE=ON -DTERRALUX_WRAP_PYTHON=OFF >/dev/null
+echo "== build (clang, AddressSanitizer + UndefinedBehaviorSanitizer, libFuzzer) in ${build_dir}-asan"
+CC=clang CXX=clang++ cmake -S "${repo_dir}" -B "${build_dir}-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DTERRALUX_SANITIZE=ON -DTERRALUX_FUZZ=ON -DTERRALUX_WRAP_PYTHON=OFF \
+  -DTERRALUX_FUZZ_SECONDS="${TERRALUX_FUZZ_SECONDS:-60}" >/dev/null
 cmake --build "${build_dir}-asan" -j "${jobs}"
-echo "== tests: C++ under sanitizers"
+echo "== tests: C++ and fuzz targets under sanitizers"
 ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1" \
 UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-  ctest --test-dir "${build_dir}-asan" -L cxx --output-on-failure -j "${jobs}"
+  ctest --test-dir "${build_dir}-asan" -L "cxx|fuzz" --output-on-failure -j "${jobs}"
