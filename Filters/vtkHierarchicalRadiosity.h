@@ -105,7 +105,7 @@ public:
    * Set/Get the most elements refinement may create. A solve that reaches it stops
    * refining, warns, and returns the solution at that size (coarser than
    * ErrorTolerance asks): a guard against tolerances that would outgrow memory (an
-   * element with its links takes about 0.5-1 KiB). Default is 4,000,000.
+   * element with its links took about 1.3 KiB in a runaway solve). Default is 2,000,000.
    */
   vtkSetClampMacro(MaximumNumberOfElements, vtkIdType, 1000, VTK_ID_MAX);
   vtkGetMacro(MaximumNumberOfElements, vtkIdType);

@@ -26,7 +26,7 @@ constexpr std::size_t exactClusterSurfaces = 8;
 template <typename DirectionOf>
 bool directionAbove(const Vec3& n, DirectionOf& directionOf, int k, Vec3& d)
 {
-  for (int attempt = 0; attempt < 8; ++attempt)
+  for (int attempt = 0; attempt < 32; ++attempt)
   {
     d = directionOf(k);
     if (glm::dot(n, d) > 0.0)
@@ -259,7 +259,9 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
       ++counted;
       visible += !visibility.occludedToward(point, n, d);
     }
-    return counted ? static_cast<double>(visible) / counted : 0.0;
+    // No draw fell above the surface: the patch shows it only a sliver, which its kernel
+    // already counts alone; with no ray to say otherwise it is taken as seen.
+    return counted ? static_cast<double>(visible) / counted : 1.0;
   };
   switch (sender.kind())
   {

@@ -8,9 +8,28 @@ namespace terralux
 {
 namespace
 {
-// 3-point Gauss-Legendre on [-1, 1].
-const double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
-const double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+// 8-point Gauss-Legendre on [-1, 1].
+const double gauss8Nodes[8] = { -0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+  -0.1834346424956498, 0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363 };
+const double gauss8Weights[8] = { 0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+  0.3626837833783620, 0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763 };
+constexpr double twoPi = 6.28318530717958647692;
+
+// Integral of max(0, a - b cos w) over w in [w0, w1], b >= 0: a - b cos w > 0 where
+// cos w < a / b, i.e. on [alpha, 2 pi - alpha] + 2 pi k with alpha = acos(a / b).
+double positiveCosineIntegral(double a, double b, double w0, double w1)
+{
+  auto piece = [&](double lo, double hi) { return hi > lo ? a * (hi - lo) - b * (std::sin(hi) - std::sin(lo)) : 0.0; };
+  if (b <= 1e-15 * std::abs(a) || a >= b)
+    return b <= 1e-15 * std::abs(a) ? std::max(0.0, a) * (w1 - w0) : piece(w0, w1);
+  if (a <= -b)
+    return 0.0;
+  const double alpha = std::acos(a / b);
+  double sum = 0.0;
+  for (double k = std::floor((w0 - twoPi) / twoPi); k <= std::ceil(w1 / twoPi); k += 1.0)
+    sum += piece(std::max(w0, alpha + twoPi * k), std::min(w1, twoPi - alpha + twoPi * k));
+  return sum;
+}
 } // namespace
 
 SkyPatchElement::SkyPatchElement(
@@ -26,26 +45,6 @@ SkyPatchElement::SkyPatchElement(
 
   const terralux::Direction vector = patch.vectorSolidAngle();
   this->VectorSolidAngle = Vec3(vector[0], vector[1], vector[2]);
-  const double u0 = patch.u0(), u1 = patch.u1(), v0 = patch.v0(), v1 = patch.v1();
-  const double us[2] = { u0, u1 }, vs[2] = { v0, v1 };
-  for (int k = 0; k < 4; ++k)
-  {
-    const terralux::Direction c = directionFromSkyParameters(us[k / 2], vs[k % 2]);
-    this->CornerDirections[k] = Vec3(c[0], c[1], c[2]);
-  }
-  const double s0 = std::sin(u0), s1 = std::sin(u1);
-  for (int a = 0; a < 3; ++a)
-  {
-    const double sinU = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * nodes[a];
-    const double u = std::asin(std::min(1.0, std::max(0.0, sinU)));
-    for (int b = 0; b < 3; ++b)
-    {
-      const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * nodes[b];
-      const terralux::Direction q = directionFromSkyParameters(u, v);
-      this->QuadratureDirections[3 * a + b] = Vec3(q[0], q[1], q[2]);
-      this->QuadratureWeights[3 * a + b] = 0.25 * (s1 - s0) * (v1 - v0) * weights[a] * weights[b];
-    }
-  }
   for (int band = 0; band < maxBands; ++band)
   {
     // A one-band sky lights every band alike.
@@ -121,53 +120,30 @@ double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
     return std::max(0.0, glm::dot(normal, this->VectorSolidAngle));
   if (side < 0)
     return 0.0;
-  double sum = 0.0;
-  bool straddles = false;
-  for (int k = 0; k < 9; ++k)
-  {
-    const double cosine = glm::dot(normal, this->QuadratureDirections[k]);
-    straddles = straddles || cosine <= 0.0;
-    sum += this->QuadratureWeights[k] * std::max(0.0, cosine);
-  }
-  for (const Vec3& corner : this->CornerDirections)
-    straddles = straddles || glm::dot(normal, corner) <= 0.0;
-  if (!straddles || sum == 0.0)
-  {
-    return sum;
-  }
-  // The surface's horizon crosses the patch: the kink of max(0, cos) needs finer
-  // quadrature, 3 x 3 Gauss points in each of 8 x 8 sub-ranges; the 24 altitudes and 24
-  // azimuths are shared, so this costs 48 sines and cosines, not one per point.
-  constexpr int parts = 8, points = 3 * parts;
+  // The surface's horizon crosses the patch. With s = sin u (dOmega = ds dv) and
+  // n . d = n_z s - sqrt(1 - s^2) h cos(v - phi), each row of constant s integrates
+  // max(0, n . d) over v in closed form; the rows are summed by Gauss-Legendre over s,
+  // split where a row turns wholly lit or wholly dark (the kinks in s).
+  const double h = std::hypot(normal.x, normal.y), phi = std::atan2(normal.x, normal.y);
+  const double w0 = this->Patch.v0() - phi, w1 = this->Patch.v1() - phi;
+  auto row = [&](double sinU) {
+    const double a = normal.z * sinU, b = std::sqrt(std::max(0.0, 1.0 - sinU * sinU)) * h;
+    return positiveCosineIntegral(a, b, w0, w1);
+  };
   const double s0 = std::sin(this->Patch.u0()), s1 = std::sin(this->Patch.u1());
-  const double v0 = this->Patch.v0(), v1 = this->Patch.v1();
-  const double ds = (s1 - s0) / parts, dv = (v1 - v0) / parts;
-  double sinU[points], cosU[points], sinV[points], cosV[points], weight[points];
-  for (int i = 0; i < parts; ++i)
-    for (int a = 0; a < 3; ++a)
-    {
-      const int k = 3 * i + a;
-      sinU[k] = s0 + ds * (i + 0.5 + 0.5 * nodes[a]);
-      cosU[k] = std::sqrt(std::max(0.0, 1.0 - sinU[k] * sinU[k]));
-      const double v = v0 + dv * (i + 0.5 + 0.5 * nodes[a]);
-      sinV[k] = std::sin(v);
-      cosV[k] = std::cos(v);
-      weight[k] = weights[a];
-    }
-  sum = 0.0;
-  for (int i = 0; i < points; ++i)
+  // a = +-b where n_z s = +-h sqrt(1 - s^2): s = h / sqrt(n_z^2 + h^2) = h (unit normal).
+  std::vector<double> breaks{ s0, s1 };
+  if (h > s0 && h < s1)
+    breaks.push_back(h);
+  std::sort(breaks.begin(), breaks.end());
+  double sum = 0.0;
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
   {
-    // directionFromSkyParameters: (-sin v cos u, -cos v cos u, sin u)
-    const double up = normal.z * sinU[i];
-    double row = 0.0;
-    for (int j = 0; j < points; ++j)
-    {
-      const double cosine = up - cosU[i] * (normal.x * sinV[j] + normal.y * cosV[j]);
-      row += weight[j] * std::max(0.0, cosine);
-    }
-    sum += weight[i] * row;
+    const double lo = breaks[k], hi = breaks[k + 1];
+    for (int g = 0; g < 8; ++g)
+      sum += 0.5 * (hi - lo) * gauss8Weights[g] * row(0.5 * (lo + hi) + 0.5 * (hi - lo) * gauss8Nodes[g]);
   }
-  return 0.25 * ds * dv * sum;
+  return sum;
 }
 
 const std::vector<HElement*>& SkyPatchElement::children()

@@ -28,7 +28,7 @@ public:
 
   /// Integral of max(0, n . d) dOmega over the patch for a unit normal n: in closed form
   /// (n . the patch's vector solid angle) when the whole patch is in front of n, 0 when
-  /// it is wholly behind, else by Gauss quadrature over (sin u, v). Geometric: what the
+  /// it is wholly behind, else exactly along azimuth and by Gauss-Legendre over sin u. Geometric: what the
   /// sky view factor counts.
   double projectedSolidAngle(const Vec3& normal) const;
   /// The transport kernel toward a surface of unit normal n, per unit of the patch's
@@ -55,9 +55,6 @@ private:
 
   Vec3 VectorSolidAngle{ 0.0 };       // integral of d dOmega over the patch
   Vec3 RadianceVector{ 0.0 };         // integral of L d dOmega / mean L (bands summed)
-  std::array<Vec3, 4> CornerDirections{};
-  std::array<Vec3, 9> QuadratureDirections{};
-  std::array<double, 9> QuadratureWeights{};
   std::vector<HElement*> Children;
 };
 

@@ -29,7 +29,7 @@ struct RadiosityOptions
   int maximumSkyLevel = 9;
   /// Refinement stops creating elements at this count (the solution is then coarser
   /// than errorTolerance asks, and statistics().elementBudgetReached says so).
-  std::size_t maximumElements = 4000000;
+  std::size_t maximumElements = 2000000;
 };
 
 struct RadiosityStatistics
