@@ -75,7 +75,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , VisibilitySamples(4)
   , MaximumIterations(30)
   , ConvergenceTolerance(1e-3)
-  , MaximumNumberOfElements(2000000)
+  , MaximumNumberOfElements(1000000)
   , DefaultReflectance(0.2)
   , ReflectanceArrayName(nullptr)
   , EmissionArrayName(nullptr)
@@ -284,7 +284,8 @@ int vtkHierarchicalRadiosity::Solve(
   if (stats.elementBudgetReached)
   {
     vtkWarningMacro("Refinement stopped at MaximumNumberOfElements ("
-      << this->MaximumNumberOfElements << " elements): the solution is coarser than ErrorTolerance "
+      << this->MaximumNumberOfElements << " elements, or four times as many links): the solution is coarser "
+      << "than ErrorTolerance "
       << this->ErrorTolerance << " asks. Raise ErrorTolerance or MaximumNumberOfElements.");
   }
   if (!stats.converged)

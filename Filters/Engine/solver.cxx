@@ -152,7 +152,10 @@ double HierarchicalRadiosity::referencePower() const
 
 bool HierarchicalRadiosity::mayGrow()
 {
-  if (this->Store->size() < this->Options.maximumElements)
+  // Links count too: at tight tolerances every pair of small elements wants a link, so
+  // links can grow as the square of the elements while hardly any element is added.
+  if (this->Store->size() < this->Options.maximumElements &&
+    this->StoredLinks + this->PendingLinks < 4 * this->Options.maximumElements)
     return true;
   this->Stats.elementBudgetReached = true;
   return false;
@@ -188,6 +191,7 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
     next.clear();
     for (auto& [receiver, link] : pending)
     {
+      this->PendingLinks = pending.size() + next.size();
       HElement* sender = link.sender;
       if (receiver == sender)
       {
@@ -251,12 +255,14 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
       if (decision != Refinement::Keep && !this->mayGrow())
       {
         receiver->Incoming.push_back(link); // over budget: the link stays as it is
+        ++this->StoredLinks;
         continue;
       }
       switch (decision)
       {
         case Refinement::Keep:
           receiver->Incoming.push_back(link);
+          ++this->StoredLinks;
           break;
         case Refinement::SplitReceiver:
           ++splits;
@@ -271,6 +277,7 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
     pending.swap(next);
     evaluated = false;
   }
+  this->PendingLinks = 0;
   return splits;
 }
 
@@ -585,6 +592,7 @@ std::size_t HierarchicalRadiosity::splitLeaves(const std::vector<PolygonElement*
         sub.sender = link.sender;
         pending.emplace_back(child, sub);
       }
+    this->StoredLinks -= polygon->Incoming.size();
     polygon->Incoming.clear();
   }
   if (!pending.empty())
@@ -721,6 +729,7 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
         [&](const Link& link) { return decideRefinement(*element, link, oracle) == Refinement::Keep; });
       for (auto it = keep; it != links.end(); ++it)
         pending.emplace_back(element, *it);
+      this->StoredLinks -= static_cast<std::size_t>(links.end() - keep);
       links.erase(keep, links.end());
     }
     if (!pending.empty())

@@ -27,9 +27,10 @@ struct RadiosityOptions
   int maximumIterations = 30;
   double convergenceTolerance = 1e-3; ///< estimated remaining change of B / max B
   int maximumSkyLevel = 9;
-  /// Refinement stops creating elements at this count (the solution is then coarser
-  /// than errorTolerance asks, and statistics().elementBudgetReached says so).
-  std::size_t maximumElements = 2000000;
+  /// Refinement stops creating elements at this count, or links at four times it (the
+  /// solution is then coarser than errorTolerance asks, and
+  /// statistics().elementBudgetReached says so).
+  std::size_t maximumElements = 1000000;
 };
 
 struct RadiosityStatistics
@@ -139,6 +140,8 @@ private:
   const SkyHierarchy* Sky = nullptr;
   double SceneArea = 0.0;
   double LargestRadiosity = 0.0; // over the leaves, after the last push-pull
+  std::size_t StoredLinks = 0;   // links held by elements
+  std::size_t PendingLinks = 0;  // links refine() holds while it runs
   std::size_t Degenerate = 0;
   bool StructureChanged = true; // links changed since the leaf kernels were cached
   RadiosityStatistics Stats;

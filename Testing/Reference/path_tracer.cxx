@@ -1,0 +1,165 @@
+#include "path_tracer.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace terralux_reference
+{
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+
+// An orthonormal frame with `n` as its third axis.
+void frameOf(const Vec3& n, Vec3& t, Vec3& b)
+{
+  const Vec3 a = std::abs(n.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
+  t = glm::normalize(glm::cross(a, n));
+  b = glm::cross(n, t);
+}
+
+// Cosine-weighted direction about n from (x, y) in [0, 1)^2 (Malley: a uniform point
+// on the disc lifted to the hemisphere).
+Vec3 cosineDirection(const Vec3& n, double x, double y)
+{
+  Vec3 t, b;
+  frameOf(n, t, b);
+  const double r = std::sqrt(x), phi = 2.0 * pi * y;
+  return glm::normalize(r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1.0 - x)) * n);
+}
+} // namespace
+
+class PathTracer::Random
+{
+public:
+  explicit Random(std::uint64_t seed)
+    : State(seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull)
+  {
+  }
+  double uniform()
+  {
+    std::uint64_t z = (this->State += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return ((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
+  }
+
+private:
+  std::uint64_t State;
+};
+
+PathTracer::PathTracer(const ReferenceScene& scene, const terralux::SkyHierarchy* sky, std::vector<ReferenceSun> suns)
+  : Scene(scene)
+  , Sky(sky)
+  , Suns(std::move(suns))
+{
+}
+
+double PathTracer::skyRadiance(const Vec3& d) const
+{
+  if (!this->Sky || !(d.z > 0.0))
+    return 0.0;
+  // Altitude u and azimuth v (west from south) of d = (-sin v cos u, -cos v cos u, sin u).
+  const double u = std::asin(std::min(1.0, d.z));
+  double v = std::atan2(-d.x, -d.y);
+  if (v < 0.0)
+    v += 2.0 * pi;
+  const int level = this->Sky->finestLevel(), side = terralux::SkyHierarchy::cellsPerSide(level);
+  const int iu = std::min(side - 1, static_cast<int>(u / (0.5 * pi) * side));
+  const int iv = std::min(side - 1, static_cast<int>(v / (2.0 * pi) * side));
+  return this->Sky->radiance(terralux::SkyPatch{ level, iu, iv }, 0);
+}
+
+double PathTracer::directSun(const Vec3& point, const Vec3& normal) const
+{
+  double sum = 0.0;
+  const double offset = this->Scene.offsetAt(point);
+  for (const ReferenceSun& sun : this->Suns)
+  {
+    const double cosine = glm::dot(normal, sun.direction);
+    if (cosine > 0.0 && sun.normalIrradiance > 0.0 &&
+      !this->Scene.occluded(point + offset * normal, sun.direction, 0.0, std::numeric_limits<float>::infinity()))
+      sum += sun.normalIrradiance * cosine;
+  }
+  return sum;
+}
+
+double PathTracer::radiosityAt(const Hit& hit, int depth, Random& random) const
+{
+  const double rho = hit.reflectance[0];
+  double b = hit.emission[0];
+  if (!(rho > 0.0))
+    return b;
+  // Russian roulette after the second bounce, survival in proportion to reflectance.
+  double weight = 1.0;
+  if (depth >= 2)
+  {
+    if (random.uniform() >= rho)
+      return b;
+    weight = 1.0 / rho;
+  }
+  return b + weight * rho * this->incidentAt(hit.position, hit.normal, depth + 1, random);
+}
+
+double PathTracer::incidentAt(const Vec3& point, const Vec3& normal, int depth, Random& random) const
+{
+  double e = this->directSun(point, normal);
+  const Vec3 d = cosineDirection(normal, random.uniform(), random.uniform());
+  const double offset = this->Scene.offsetAt(point);
+  Hit hit;
+  if (!this->Scene.intersect(point + offset * normal, d, 0.0, hit))
+    return e + pi * this->skyRadiance(d);
+  if (glm::dot(hit.normal, d) >= 0.0)
+    return e; // the back of a one-sided surface sends nothing
+  return e + this->radiosityAt(hit, depth, random);
+}
+
+ReferenceIrradiance PathTracer::irradianceAt(const Vec3& point, const Vec3& normal, int samples, std::uint64_t seed) const
+{
+  Random random(seed);
+  const int strata = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples)))));
+  const int n = strata * strata;
+  const double offset = this->Scene.offsetAt(point);
+  double sky = 0.0, sky2 = 0.0, reflected = 0.0, reflected2 = 0.0, sum = 0.0, sum2 = 0.0;
+  for (int a = 0; a < strata; ++a)
+    for (int c = 0; c < strata; ++c)
+    {
+      const Vec3 d = cosineDirection(normal, (a + random.uniform()) / strata, (c + random.uniform()) / strata);
+      double skyValue = 0.0, reflectedValue = 0.0;
+      Hit hit;
+      if (!this->Scene.intersect(point + offset * normal, d, 0.0, hit))
+        skyValue = pi * this->skyRadiance(d);
+      else if (glm::dot(hit.normal, d) < 0.0)
+        reflectedValue = this->radiosityAt(hit, 1, random);
+      sky += skyValue;
+      sky2 += skyValue * skyValue;
+      reflected += reflectedValue;
+      reflected2 += reflectedValue * reflectedValue;
+      sum += skyValue + reflectedValue;
+      sum2 += (skyValue + reflectedValue) * (skyValue + reflectedValue);
+    }
+  // Standard errors as for independent samples: stratification only lowers them.
+  auto estimate = [n](double s, double s2) {
+    const double mean = s / n;
+    const double variance = std::max(0.0, s2 / n - mean * mean);
+    return Estimate{ mean, std::sqrt(variance / std::max(1, n - 1)) };
+  };
+  ReferenceIrradiance result;
+  result.sun = { this->directSun(point, normal), 0.0 };
+  result.sky = estimate(sky, sky2);
+  result.reflected = estimate(reflected, reflected2);
+  result.global = estimate(sum, sum2);
+  result.global.mean += result.sun.mean;
+  return result;
+}
+
+std::vector<ReferenceIrradiance> PathTracer::irradianceAt(
+  const std::vector<Vec3>& points, const std::vector<Vec3>& normals, int samples) const
+{
+  std::vector<ReferenceIrradiance> results(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(),
+    [&](std::size_t k) { results[k] = this->irradianceAt(points[k], normals[k], samples, k + 1); });
+  return results;
+}
+} // namespace terralux_reference

@@ -1,0 +1,65 @@
+#pragma once
+// An independent Monte Carlo reference for TerraLux's per-point irradiance (not part of
+// its API): Lambertian scenes under suns and a sky, estimated by path tracing. Direct
+// sun is one shadow ray from just above the point; sky and reflected light come from
+// stratified cosine-weighted directions: a direction that escapes brings pi L_sky, one
+// that hits a surface's front brings that surface's radiosity, estimated recursively
+// (its own sun ray, one cosine-weighted continuation, Russian roulette after the second
+// bounce). Each component comes with its standard error.
+
+#include "reference_scene.h"
+
+#include "sky_hierarchy.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace terralux_reference
+{
+struct ReferenceSun
+{
+  Vec3 direction; ///< unit, toward the sun
+  double normalIrradiance = 0.0;
+};
+
+/// Mean and standard error of one component, W/m^2.
+struct Estimate
+{
+  double mean = 0.0;
+  double standardError = 0.0;
+};
+
+struct ReferenceIrradiance
+{
+  Estimate sun, sky, reflected, global;
+};
+
+class PathTracer
+{
+public:
+  /// The sky may be null; it and the scene must outlive the tracer. Band 0 is traced.
+  PathTracer(const ReferenceScene& scene, const terralux::SkyHierarchy* sky, std::vector<ReferenceSun> suns);
+
+  /// Irradiance on a surface point with unit normal n, from `samples` directions
+  /// (rounded up to a square for stratification); deterministic for a seed.
+  ReferenceIrradiance irradianceAt(const Vec3& point, const Vec3& normal, int samples, std::uint64_t seed) const;
+
+  /// Many points in parallel, seeded by their index.
+  std::vector<ReferenceIrradiance> irradianceAt(
+    const std::vector<Vec3>& points, const std::vector<Vec3>& normals, int samples) const;
+
+  /// Sky radiance toward a unit direction above the horizon (0 below, or without sky).
+  double skyRadiance(const Vec3& direction) const;
+  /// Direct sun on a point with normal n: shadow rays from just above it.
+  double directSun(const Vec3& point, const Vec3& normal) const;
+
+private:
+  class Random;
+  double radiosityAt(const Hit& hit, int depth, Random& random) const;
+  double incidentAt(const Vec3& point, const Vec3& normal, int depth, Random& random) const;
+
+  const ReferenceScene& Scene;
+  const terralux::SkyHierarchy* Sky;
+  std::vector<ReferenceSun> Suns;
+};
+} // namespace terralux_reference
