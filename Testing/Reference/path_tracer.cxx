@@ -54,6 +54,52 @@ PathTracer::PathTracer(const ReferenceScene& scene, const terralux::SkyHierarchy
   , Sky(sky)
   , Suns(std::move(suns))
 {
+  if (!sky)
+    return;
+  const int level = sky->finestLevel(), side = terralux::SkyHierarchy::cellsPerSide(level);
+  for (int iu = 0; iu < side; ++iu)
+    for (int iv = 0; iv < side; ++iv)
+    {
+      const terralux::SkyPatch cell{ level, iu, iv };
+      const terralux::Direction w = cell.vectorSolidAngle();
+      this->Cells.push_back({ sky->radiance(cell, 0), Vec3(w[0], w[1], w[2]), cell.u0(), cell.u1(), cell.v0(), cell.v1() });
+    }
+}
+
+double PathTracer::unoccludedSky(const Vec3& n) const
+{
+  auto direction = [](double u, double v) {
+    return Vec3(-std::sin(v) * std::cos(u), -std::cos(v) * std::cos(u), std::sin(u));
+  };
+  double sum = 0.0;
+  for (const SkyCell& c : this->Cells)
+  {
+    double low = 1.0, high = -1.0;
+    for (double u : { c.u0, c.u1 })
+      for (double v : { c.v0, 0.5 * (c.v0 + c.v1), c.v1 })
+      {
+        const double cosine = glm::dot(n, direction(u, v));
+        low = std::min(low, cosine);
+        high = std::max(high, cosine);
+      }
+    if (high <= 0.0)
+      continue;
+    if (low >= 0.0)
+    {
+      sum += c.radiance * glm::dot(n, c.vectorSolidAngle);
+      continue;
+    }
+    constexpr int parts = 4;
+    const double s0 = std::sin(c.u0), s1 = std::sin(c.u1);
+    for (int a = 0; a < parts; ++a)
+      for (int b = 0; b < parts; ++b)
+      {
+        const double sinU = s0 + (a + 0.5) * (s1 - s0) / parts, v = c.v0 + (b + 0.5) * (c.v1 - c.v0) / parts;
+        const double omega = (s1 - s0) * (c.v1 - c.v0) / (parts * parts);
+        sum += c.radiance * omega * std::max(0.0, glm::dot(n, direction(std::asin(sinU), v)));
+      }
+  }
+  return sum;
 }
 
 double PathTracer::skyRadiance(const Vec3& d) const
@@ -121,23 +167,25 @@ ReferenceIrradiance PathTracer::irradianceAt(const Vec3& point, const Vec3& norm
   const int strata = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples)))));
   const int n = strata * strata;
   const double offset = this->Scene.offsetAt(point);
-  double sky = 0.0, sky2 = 0.0, reflected = 0.0, reflected2 = 0.0, sum = 0.0, sum2 = 0.0;
+  double hidden = 0.0, hidden2 = 0.0, reflected = 0.0, reflected2 = 0.0, sum = 0.0, sum2 = 0.0;
   for (int a = 0; a < strata; ++a)
     for (int c = 0; c < strata; ++c)
     {
       const Vec3 d = cosineDirection(normal, (a + random.uniform()) / strata, (c + random.uniform()) / strata);
-      double skyValue = 0.0, reflectedValue = 0.0;
+      double hiddenValue = 0.0, reflectedValue = 0.0;
       Hit hit;
-      if (!this->Scene.intersect(point + offset * normal, d, 0.0, hit))
-        skyValue = pi * this->skyRadiance(d);
-      else if (glm::dot(hit.normal, d) < 0.0)
-        reflectedValue = this->radiosityAt(hit, 1, random);
-      sky += skyValue;
-      sky2 += skyValue * skyValue;
+      if (this->Scene.intersect(point + offset * normal, d, 0.0, hit))
+      {
+        hiddenValue = pi * this->skyRadiance(d); // sky the scene hides in this direction
+        if (glm::dot(hit.normal, d) < 0.0)
+          reflectedValue = this->radiosityAt(hit, 1, random);
+      }
+      hidden += hiddenValue;
+      hidden2 += hiddenValue * hiddenValue;
       reflected += reflectedValue;
       reflected2 += reflectedValue * reflectedValue;
-      sum += skyValue + reflectedValue;
-      sum2 += (skyValue + reflectedValue) * (skyValue + reflectedValue);
+      sum += reflectedValue - hiddenValue;
+      sum2 += (reflectedValue - hiddenValue) * (reflectedValue - hiddenValue);
     }
   // Standard errors as for independent samples: stratification only lowers them.
   auto estimate = [n](double s, double s2) {
@@ -146,11 +194,13 @@ ReferenceIrradiance PathTracer::irradianceAt(const Vec3& point, const Vec3& norm
     return Estimate{ mean, std::sqrt(variance / std::max(1, n - 1)) };
   };
   ReferenceIrradiance result;
+  const double open = this->unoccludedSky(normal);
   result.sun = { this->directSun(point, normal), 0.0 };
-  result.sky = estimate(sky, sky2);
+  result.sky = estimate(hidden, hidden2);
+  result.sky.mean = std::max(0.0, open - result.sky.mean);
   result.reflected = estimate(reflected, reflected2);
   result.global = estimate(sum, sum2);
-  result.global.mean += result.sun.mean;
+  result.global.mean += result.sun.mean + open;
   return result;
 }
 

@@ -2,10 +2,12 @@
 // An independent Monte Carlo reference for TerraLux's per-point irradiance (not part of
 // its API): Lambertian scenes under suns and a sky, estimated by path tracing. Direct
 // sun is one shadow ray from just above the point; sky and reflected light come from
-// stratified cosine-weighted directions: a direction that escapes brings pi L_sky, one
-// that hits a surface's front brings that surface's radiosity, estimated recursively
-// (its own sun ray, one cosine-weighted continuation, Russian roulette after the second
-// bounce). Each component comes with its standard error.
+// stratified cosine-weighted directions: one that hits a surface's front brings that
+// surface's radiosity, estimated recursively (its own sun ray, one cosine-weighted
+// continuation, Russian roulette after the second bounce). The sky term uses the
+// unoccluded sky as a control variate: its irradiance on the point's plane is summed
+// over the sky map's cells, and the rays estimate only what the scene hides of it, so
+// an open point has no sky noise at all. Each component comes with its standard error.
 
 #include "reference_scene.h"
 
@@ -50,6 +52,10 @@ public:
 
   /// Sky radiance toward a unit direction above the horizon (0 below, or without sky).
   double skyRadiance(const Vec3& direction) const;
+  /// Irradiance the whole sky map gives a plane of unit normal n with nothing in the
+  /// way: cells in front by their vector solid angle, cells across the plane's horizon
+  /// by 4 x 4 sub-cells.
+  double unoccludedSky(const Vec3& normal) const;
   /// Direct sun on a point with normal n: shadow rays from just above it.
   double directSun(const Vec3& point, const Vec3& normal) const;
 
@@ -61,5 +67,12 @@ private:
   const ReferenceScene& Scene;
   const terralux::SkyHierarchy* Sky;
   std::vector<ReferenceSun> Suns;
+  struct SkyCell
+  {
+    double radiance;
+    Vec3 vectorSolidAngle;
+    double u0, u1, v0, v1;
+  };
+  std::vector<SkyCell> Cells;
 };
 } // namespace terralux_reference
