@@ -62,7 +62,12 @@ PathTracer::PathTracer(const ReferenceScene& scene, const terralux::SkyHierarchy
     {
       const terralux::SkyPatch cell{ level, iu, iv };
       const terralux::Direction w = cell.vectorSolidAngle();
-      this->Cells.push_back({ sky->radiance(cell, 0), Vec3(w[0], w[1], w[2]), cell.u0(), cell.u1(), cell.v0(), cell.v1() });
+      SkyCell c{ sky->radiance(cell, 0), Vec3(w[0], w[1], w[2]), cell.u0(), cell.u1(), cell.v0(), cell.v1(), {} };
+      int k = 0;
+      for (double u : { c.u0, c.u1 })
+        for (double v : { c.v0, 0.5 * (c.v0 + c.v1), c.v1 })
+          c.edges[k++] = Vec3(-std::sin(v) * std::cos(u), -std::cos(v) * std::cos(u), std::sin(u));
+      this->Cells.push_back(c);
     }
 }
 
@@ -75,13 +80,12 @@ double PathTracer::unoccludedSky(const Vec3& n) const
   for (const SkyCell& c : this->Cells)
   {
     double low = 1.0, high = -1.0;
-    for (double u : { c.u0, c.u1 })
-      for (double v : { c.v0, 0.5 * (c.v0 + c.v1), c.v1 })
-      {
-        const double cosine = glm::dot(n, direction(u, v));
-        low = std::min(low, cosine);
-        high = std::max(high, cosine);
-      }
+    for (const Vec3& d : c.edges)
+    {
+      const double cosine = glm::dot(n, d);
+      low = std::min(low, cosine);
+      high = std::max(high, cosine);
+    }
     if (high <= 0.0)
       continue;
     if (low >= 0.0)

@@ -13,6 +13,7 @@
 
 #include "sky_hierarchy.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -72,6 +73,7 @@ private:
     double radiance;
     Vec3 vectorSolidAngle;
     double u0, u1, v0, v1;
+    std::array<Vec3, 6> edges; ///< directions at (u0, u1) x (v0, mid v, v1): extremes of n . d
   };
   std::vector<SkyCell> Cells;
 };

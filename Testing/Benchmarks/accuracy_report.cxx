@@ -1,0 +1,323 @@
+// The accuracy report's worker: one scene, against the independent reference.
+//   accuracy_report SCENE OUTDIR reference [SAMPLES]   compute OUTDIR/SCENE.reference
+//   accuracy_report SCENE OUTDIR solve METHOD TOLERANCE  one solve, one JSON line
+// METHOD: points (EvaluateAtPoints on), averaged (off), triangles (terrain as two
+// triangles per cell, at points). The JSON line holds wall time, peak memory, elements,
+// links, rays, the floor (one occlusion ray per point toward the sun) and, per component
+// (sun, sky, reflected, global), RMS, 95th percentile, maximum and bias of the error over
+// the reference's mean, with the reference's own standard error. run_accuracy_report.sh
+// sweeps them and Testing/Benchmarks/accuracy_report.py writes the tables and plots.
+#include "accuracy_scenes.h"
+#include "path_tracer.h"
+#include "reference_scene.h"
+#include "vtkRadiosityScene.h"
+
+#include "terrain_grid.h"
+
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkFieldData.h"
+#include "vtkHierarchicalRadiosity.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+
+#include <sys/resource.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using terralux::Vec3;
+
+namespace
+{
+// The leaf data sets of a scene's geometry, in the filter's order.
+std::vector<vtkDataSet*> leavesOf(vtkDataObject* data)
+{
+  std::vector<vtkDataSet*> result;
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      if (auto* d = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+        result.push_back(d);
+  }
+  else if (auto* d = vtkDataSet::SafeDownCast(data))
+    result.push_back(d);
+  return result;
+}
+
+struct ReferencePoint
+{
+  double used = 0, sunFacing = 0, sun = 0, sky = 0, skyError = 0, reflected = 0, reflectedError = 0, global = 0,
+         globalError = 0;
+};
+
+double seconds(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double peakMiB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+// The scene as the engine's description (shared with the reference) and every output
+// point with its normal: terrain posts with their area-weighted post normal, polygon
+// points with the area-weighted normal of the polygons around them.
+struct ScenePoints
+{
+  vtkRadiosityScene scene;
+  std::vector<Vec3> points, normals;
+  std::vector<bool> used;
+};
+
+void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
+{
+  for (vtkDataSet* data : leavesOf(input.geometry))
+    out.scene.AddDataSet(data, input.reflectance, nullptr, input.emissionArray, true);
+  for (const auto& light : input.lights)
+    out.scene.AddLight(light);
+  for (std::size_t k = 0; k < out.scene.Inputs.size(); ++k)
+  {
+    const vtkRadiosityScene::Input& in = out.scene.Inputs[k];
+    if (in.terrain >= 0)
+    {
+      const terralux::TerrainGrid& grid = *out.scene.Terrains[in.terrain];
+      for (int j = 0; j < grid.postsY(); ++j)
+        for (int i = 0; i < grid.postsX(); ++i)
+        {
+          out.points.push_back(grid.post(i, j));
+          out.normals.push_back(grid.postNormal(i, j));
+          out.used.push_back(grid.postUsed(i, j));
+        }
+      continue;
+    }
+    const vtkIdType count = in.data->GetNumberOfPoints();
+    std::vector<Vec3> normals(count, Vec3(0.0));
+    for (const terralux::ScenePolygon& polygon : out.scene.Scene.polygons)
+    {
+      if (polygon.owner != static_cast<int>(k))
+        continue;
+      Vec3 area(0.0);
+      for (int c = 0; c < polygon.vertexCount; ++c)
+        area += glm::cross(out.scene.Scene.points[polygon.vertices[c]],
+          out.scene.Scene.points[polygon.vertices[(c + 1) % polygon.vertexCount]]);
+      for (int c = 0; c < polygon.vertexCount; ++c)
+        normals[polygon.vertices[c] - in.firstPoint] += 0.5 * area;
+    }
+    for (vtkIdType p = 0; p < count; ++p)
+    {
+      const double length = glm::length(normals[p]);
+      out.points.push_back(out.scene.Scene.points[in.firstPoint + p]);
+      out.normals.push_back(length > 0.0 ? normals[p] / length : Vec3(0, 0, 1));
+      out.used.push_back(length > 0.0);
+    }
+  }
+}
+
+std::vector<terralux_reference::ReferenceSun> sunsOf(const vtkRadiosityScene& scene)
+{
+  std::vector<terralux_reference::ReferenceSun> suns;
+  for (const auto& sun : scene.Suns)
+    suns.push_back({ glm::normalize(sun.direction), sun.irradiance[0] });
+  return suns;
+}
+
+int computeReference(const terralux_bench::AccuracyScene& input, const std::string& path, int samples)
+{
+  ScenePoints s;
+  loadScene(input, s);
+  const auto start = std::chrono::steady_clock::now();
+  const terralux_reference::ReferenceScene reference(s.scene.Scene);
+  const terralux_reference::PathTracer tracer(reference, s.scene.Sky.get(), sunsOf(s.scene));
+  const auto estimates = tracer.irradianceAt(s.points, s.normals, samples);
+  std::vector<ReferencePoint> values(s.points.size());
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    const auto& e = estimates[k];
+    bool facing = false;
+    for (const auto& sun : sunsOf(s.scene))
+      facing = facing || glm::dot(s.normals[k], sun.direction) > 0.0;
+    values[k] = { s.used[k] ? 1.0 : 0.0, facing ? 1.0 : 0.0, e.sun.mean, e.sky.mean, e.sky.standardError,
+      e.reflected.mean, e.reflected.standardError, e.global.mean, e.global.standardError };
+  }
+  std::ofstream file(path, std::ios::binary);
+  const std::uint64_t n = values.size();
+  file.write(reinterpret_cast<const char*>(&n), sizeof n);
+  file.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(n * sizeof(ReferencePoint)));
+  std::printf("{\"scene\": \"%s\", \"reference_seconds\": %.3f, \"points\": %zu, \"samples\": %d}\n",
+    input.name.c_str(), seconds(start), values.size(), samples);
+  return 0;
+}
+
+// Error figures of one component over the points where `include` holds.
+std::string errorJson(const std::vector<double>& value, const std::vector<double>& reference,
+  const std::vector<double>& referenceError, const std::vector<bool>& include)
+{
+  double sumRef = 0.0, sumDiff = 0.0, sumSq = 0.0, sumSe = 0.0, worst = 0.0;
+  std::vector<double> absolute;
+  for (std::size_t k = 0; k < value.size(); ++k)
+  {
+    if (!include[k])
+      continue;
+    const double d = value[k] - reference[k];
+    sumRef += reference[k];
+    sumDiff += d;
+    sumSq += d * d;
+    sumSe += referenceError[k];
+    worst = std::max(worst, std::abs(d));
+    absolute.push_back(std::abs(d));
+  }
+  const double n = std::max<std::size_t>(1, absolute.size());
+  const double mean = sumRef / n;
+  std::sort(absolute.begin(), absolute.end());
+  const double p95 = absolute.empty() ? 0.0 : absolute[static_cast<std::size_t>(0.95 * (absolute.size() - 1))];
+  auto relative = [mean](double x) { return mean > 0.0 ? x / mean : 0.0; };
+  char text[400];
+  std::snprintf(text, sizeof text,
+    "{\"mean\": %.6g, \"rms\": %.6g, \"p95\": %.6g, \"max\": %.6g, \"bias\": %.6g, \"reference_error\": %.6g}", mean,
+    relative(std::sqrt(sumSq / n)), relative(p95), relative(worst), relative(sumDiff / n), relative(sumSe / n));
+  return text;
+}
+
+int solve(const terralux_bench::AccuracyScene& input, const std::string& referencePath, const std::string& method,
+  double tolerance)
+{
+  std::ifstream file(referencePath, std::ios::binary);
+  std::uint64_t n = 0;
+  file.read(reinterpret_cast<char*>(&n), sizeof n);
+  std::vector<ReferencePoint> reference(n);
+  file.read(reinterpret_cast<char*>(reference.data()), static_cast<std::streamsize>(n * sizeof(ReferencePoint)));
+  if (!file)
+  {
+    std::cerr << "no reference at " << referencePath << ": run the reference step first\n";
+    return 1;
+  }
+
+  vtkNew<vtkHierarchicalRadiosity> radiosity;
+  radiosity->SetInputData(input.geometry);
+  for (const auto& light : input.lights)
+    radiosity->AddInputDataObject(1, light);
+  radiosity->SetDefaultReflectance(input.reflectance);
+  if (input.emissionArray)
+    radiosity->SetEmissionArrayName(input.emissionArray);
+  radiosity->SetErrorTolerance(tolerance);
+  radiosity->SetEvaluateAtPoints(method != "averaged");
+  radiosity->SetUseTerrainHierarchy(method != "triangles");
+  const auto start = std::chrono::steady_clock::now();
+  radiosity->Update();
+  const double wall = seconds(start);
+
+  std::vector<double> value[4], ref[4], refError[4];
+  for (vtkDataSet* data : leavesOf(radiosity->GetOutput()))
+  {
+    const char* names[4] = { "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance", "Irradiance" };
+    for (int c = 0; c < 4; ++c)
+    {
+      vtkDataArray* array = data->GetPointData()->GetArray(names[c]);
+      for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
+        value[c].push_back(array ? array->GetComponent(p, 0) : 0.0);
+    }
+  }
+  if (value[0].size() != n)
+  {
+    std::cerr << "the output has " << value[0].size() << " points, the reference " << n << "\n";
+    return 1;
+  }
+  std::vector<bool> used(n), agree(n);
+  std::size_t facing = 0, disagree = 0;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const ReferencePoint& r = reference[k];
+    used[k] = r.used != 0.0 && std::isfinite(value[3][k]);
+    const bool shadowAgrees = (value[0][k] > 0.0) == (r.sun > 0.0);
+    agree[k] = used[k] && shadowAgrees;
+    if (used[k] && r.sunFacing != 0.0)
+    {
+      ++facing;
+      disagree += !shadowAgrees;
+    }
+    const double refs[4] = { r.sun, r.sky, r.reflected, r.global };
+    const double errors[4] = { 0.0, r.skyError, r.reflectedError, r.globalError };
+    for (int c = 0; c < 4; ++c)
+    {
+      ref[c].push_back(refs[c]);
+      refError[c].push_back(errors[c]);
+    }
+  }
+
+  // The floor: one Embree occlusion ray per point toward the sun.
+  ScenePoints s;
+  loadScene(input, s);
+  double floorSeconds = 0.0;
+  if (!s.scene.Suns.empty())
+  {
+    const terralux_reference::ReferenceScene rays(s.scene.Scene);
+    const Vec3 toward = glm::normalize(s.scene.Suns.front().direction);
+    std::atomic<int> lit{ 0 };
+    const auto floorStart = std::chrono::steady_clock::now();
+    tbb::parallel_for(std::size_t(0), s.points.size(), [&](std::size_t k) {
+      lit += !rays.occluded(s.points[k] + rays.offsetAt(s.points[k]) * s.normals[k], toward, 0.0, 1e30);
+    });
+    floorSeconds = seconds(floorStart);
+  }
+  vtkFieldData* fieldData = radiosity->GetOutput()->GetFieldData();
+  auto field = [&](const char* name) {
+    vtkDataArray* array = fieldData->GetArray(name);
+    return array ? array->GetComponent(0, 0) : 0.0;
+  };
+  std::printf("{\"scene\": \"%s\", \"method\": \"%s\", \"tolerance\": %g, \"seconds\": %.4f, \"peak_mib\": %.1f, "
+              "\"elements\": %.0f, \"links\": %.0f, \"rays\": %.0f, \"iterations\": %.0f, \"floor_seconds\": %.5f, "
+              "\"phase_seconds\": {\"visibility\": %.4f, \"refine\": %.4f, \"gather\": %.4f, \"push_pull\": %.4f}, "
+              "\"shadow_disagreement\": %.6f, \"sun\": %s, \"sky\": %s, \"reflected\": %s, \"global\": %s}\n",
+    input.name.c_str(), method.c_str(), tolerance, wall, peakMiB(), field("Elements"), field("Links"), field("Rays"),
+    field("Iterations"), floorSeconds, field("SecondsVisibilityBuild"), field("SecondsRefine"),
+    field("SecondsGather"), field("SecondsPushPull"), facing ? static_cast<double>(disagree) / facing : 0.0,
+    errorJson(value[0], ref[0], refError[0], used).c_str(), errorJson(value[1], ref[1], refError[1], used).c_str(),
+    errorJson(value[2], ref[2], refError[2], used).c_str(), errorJson(value[3], ref[3], refError[3], agree).c_str());
+  return 0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc < 4)
+  {
+    std::cerr << "usage: accuracy_report SCENE OUTDIR reference [SAMPLES]\n"
+                 "       accuracy_report SCENE OUTDIR solve points|averaged|triangles TOLERANCE\n";
+    return 2;
+  }
+  try
+  {
+    const char* dataDir = std::getenv("TERRALUX_DATA_DIR");
+    const auto scene = terralux_bench::makeAccuracyScene(argv[1], dataDir ? dataDir : "Testing/Data/External");
+    const std::string referencePath = std::string(argv[2]) + "/" + argv[1] + ".reference";
+    if (std::string(argv[3]) == "reference")
+      return computeReference(scene, referencePath, argc > 4 ? std::atoi(argv[4]) : 1024);
+    if (std::string(argv[3]) == "solve" && argc > 5)
+      return solve(scene, referencePath, argv[4], std::atof(argv[5]));
+  }
+  catch (const std::exception& error)
+  {
+    std::cerr << "accuracy_report: " << error.what() << "\n";
+    return 1;
+  }
+  std::cerr << "accuracy_report: unknown command\n";
+  return 2;
+}

@@ -1,0 +1,115 @@
+#!/usr/bin/python3
+"""Tables and plots of the speed-against-error report.
+
+Reads the JSON lines run_accuracy_report.sh collected (one per reference and per solve)
+and writes, in OUT_DIR: report.json (every run), report.md (a table per scene) and
+<scene>.png (error against time, log-log: one panel per component, one curve per
+method). Errors are relative to the reference's mean of that component; the
+reference's own standard error is shown, and marked where it is not at least five
+times below the error it measures.
+
+Usage: /usr/bin/python3 accuracy_report.py RUNS.jsonl OUT_DIR
+"""
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+COMPONENTS = ("sun", "sky", "reflected", "global")
+METHODS = {"points": "patches, at points", "averaged": "patches, averaged", "triangles": "triangles, at points"}
+
+
+def percent(x):
+    return "%.2f" % (100.0 * x)
+
+
+def load(path):
+    references, solves = {}, []
+    with open(path) as f:
+        for line in f:
+            line = line.strip()
+            if not line.startswith("{"):
+                continue
+            run = json.loads(line)
+            if "reference_seconds" in run:
+                references[run["scene"]] = run
+            else:
+                solves.append(run)
+    return references, solves
+
+
+def table(scene, reference, runs):
+    lines = ["### %s" % scene, ""]
+    if reference:
+        lines.append("Reference: %d points, %d directions each, %.1f s." % (
+            reference["points"], reference["samples"], reference["reference_seconds"]))
+        lines.append("")
+    lines.append("| method | tolerance | time s | x floor | peak MiB | elements | links | rays | "
+                 "global RMS % | p95 % | max % | bias % | sky RMS % | reflected bias % | "
+                 "shadow disagree % | reference SE % |")
+    lines.append("|" + "---|" * 16)
+    for run in runs:
+        g, sky, refl = run["global"], run["sky"], run["reflected"]
+        floor = run["floor_seconds"]
+        times = "%.0f" % (run["seconds"] / floor) if floor > 0 else "-"
+        noisy = g["reference_error"] * 5 > g["rms"] and g["rms"] > 0
+        lines.append("| %s | %g | %.3f | %s | %.0f | %d | %d | %d | %s | %s | %s | %s | %s | %s | %s | %s%s |" % (
+            METHODS.get(run["method"], run["method"]), run["tolerance"], run["seconds"], times, run["peak_mib"],
+            run["elements"], run["links"], run["rays"], percent(g["rms"]), percent(g["p95"]), percent(g["max"]),
+            percent(g["bias"]), percent(sky["rms"]), percent(refl["bias"]) if refl["mean"] > 0 else "-",
+            percent(run["shadow_disagreement"]), percent(g["reference_error"]), " (noisy)" if noisy else ""))
+    lines.append("")
+    return lines
+
+
+def plot(scene, runs, out_dir):
+    figure, axes = plt.subplots(1, 4, figsize=(16, 4), sharex=True)
+    for axis, component in zip(axes, COMPONENTS):
+        for method, label in METHODS.items():
+            points = [(r["seconds"], r[component]["rms"]) for r in runs
+                      if r["method"] == method and r[component]["mean"] > 0 and r[component]["rms"] > 0]
+            if points:
+                points.sort()
+                axis.loglog([p[0] for p in points], [100 * p[1] for p in points], "o-", label=label)
+        errors = [r[component]["reference_error"] for r in runs if r[component]["mean"] > 0]
+        if errors and max(errors) > 0:
+            axis.axhline(100 * max(errors), color="grey", linestyle=":", label="reference SE")
+        axis.set_title("%s: %s" % (scene, component))
+        axis.set_xlabel("wall time (s)")
+        axis.grid(True, which="both", alpha=0.3)
+    axes[0].set_ylabel("relative RMS error (%)")
+    axes[-1].legend(fontsize=8)
+    figure.tight_layout()
+    path = os.path.join(out_dir, "%s.png" % scene)
+    figure.savefig(path, dpi=90)
+    plt.close(figure)
+    return path
+
+
+def main():
+    references, solves = load(sys.argv[1])
+    out_dir = sys.argv[2]
+    with open(os.path.join(out_dir, "report.json"), "w") as f:
+        json.dump({"references": references, "solves": solves}, f, indent=1)
+    lines = ["# Speed against error", "",
+             "Errors per component over the reference's mean (RMS, 95th percentile, maximum, bias); "
+             "global over the points where TerraLux and the reference agree on shadow. "
+             "x floor: the solve's time over one Embree occlusion ray per point toward the sun.", ""]
+    for scene in sorted({r["scene"] for r in solves}):
+        runs = [r for r in solves if r["scene"] == scene]
+        runs.sort(key=lambda r: (list(METHODS).index(r["method"]), -r["tolerance"]))
+        lines += table(scene, references.get(scene), runs)
+        lines.append("![%s](%s.png)" % (scene, scene))
+        lines.append("")
+        plot(scene, runs, out_dir)
+    with open(os.path.join(out_dir, "report.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote %s" % os.path.join(out_dir, "report.md"))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,210 @@
+#include "accuracy_scenes.h"
+
+#include "fractal_dem.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkReverseSense.h"
+#include "vtkSkySource.h"
+#include "vtkStructuredGrid.h"
+#include "vtkSunSource.h"
+#include "vtkTerrainSource.h"
+#include "vtkTessellatedBoxSource.h"
+#include "vtkTriangleFilter.h"
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+namespace terralux_bench
+{
+namespace
+{
+constexpr double degree = 3.14159265358979323846 / 180.0;
+
+// A sun as vtkHierarchicalRadiosity reads it: field data SunDirection and
+// SunNormalIrradiance (what vtkSunSource writes), for an exact altitude and azimuth.
+vtkSmartPointer<vtkDataObject> sunAt(double altitudeDeg, double compassAzimuthDeg, double normalIrradiance)
+{
+  auto sun = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkDoubleArray> direction, irradiance;
+  direction->SetName("SunDirection");
+  const double a = altitudeDeg * degree, z = compassAzimuthDeg * degree;
+  direction->InsertNextValue(std::sin(z) * std::cos(a));
+  direction->InsertNextValue(std::cos(z) * std::cos(a));
+  direction->InsertNextValue(std::sin(a));
+  irradiance->SetName("SunNormalIrradiance");
+  irradiance->InsertNextValue(normalIrradiance);
+  sun->GetFieldData()->AddArray(direction);
+  sun->GetFieldData()->AddArray(irradiance);
+  return sun;
+}
+
+vtkSmartPointer<vtkDataObject> skyMap(int model, int type, double sunZenithDeg, double sunAzimuthDeg, double diffuse)
+{
+  vtkNew<vtkSkySource> sky;
+  sky->UseSunSourceOff();
+  sky->SetSkyModel(model);
+  sky->SetSkyType(type);
+  sky->SetSunZenith(sunZenithDeg);
+  sky->SetSunAzimuth(sunAzimuthDeg);
+  sky->SetDiffuseHorizontalIrradiance(diffuse);
+  sky->Update();
+  vtkSmartPointer<vtkDataObject> map;
+  map.TakeReference(sky->GetRadianceOutput()->NewInstance());
+  map->DeepCopy(sky->GetRadianceOutput());
+  return map;
+}
+
+vtkSmartPointer<vtkDataObject> heightField(int n, double spacing, const std::function<double(int, int)>& height)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(n, n, 1);
+  image->SetSpacing(spacing, spacing, 1.0);
+  image->SetOrigin(-0.5 * spacing * (n - 1), -0.5 * spacing * (n - 1), 0.0);
+  vtkNew<vtkFloatArray> heights;
+  heights->SetNumberOfTuples(static_cast<vtkIdType>(n) * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      heights->SetValue(i + static_cast<vtkIdType>(j) * n, static_cast<float>(height(i, j)));
+  image->GetPointData()->SetScalars(heights);
+  vtkNew<vtkTerrainSource> terrain;
+  terrain->SetInputData(image);
+  terrain->Update();
+  auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+  grid->DeepCopy(terrain->GetOutput());
+  return grid;
+}
+
+vtkSmartPointer<vtkPolyData> box(double x0, double x1, double y0, double y1, double z0, double z1, int level)
+{
+  vtkNew<vtkTessellatedBoxSource> source;
+  source->SetBounds(x0, x1, y0, y1, z0, z1);
+  source->SetLevel(level);
+  source->QuadsOn();
+  source->Update();
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->DeepCopy(source->GetOutput());
+  return result;
+}
+} // namespace
+
+std::vector<std::string> accuracySceneNames()
+{
+  return { "olinda", "fractal", "crater", "canyon", "box" };
+}
+
+AccuracyScene makeAccuracyScene(const std::string& name, const std::string& dataDir)
+{
+  AccuracyScene scene;
+  scene.name = name;
+  if (name == "olinda")
+  {
+    // (a) The paper's Fig. 4: Olinda on an August morning, sun and CIE clear sky.
+    vtkNew<vtkTerrainSource> terrain;
+    terrain->SetFileName((dataDir + "/olinda_dem_utm25s.tif").c_str());
+    vtkNew<vtkSunSource> sun;
+    sun->SetInputConnection(terrain->GetOutputPort());
+    sun->SetDateTime("2024-08-15T08:30:00-03:00");
+    vtkNew<vtkSkySource> sky;
+    sky->SetSunConnection(sun->GetOutputPort());
+    sky->SetSkyType(12);
+    terrain->Update();
+    if (terrain->GetOutput()->GetNumberOfPoints() == 0)
+      throw std::runtime_error("Olinda's DEM is missing: run cmake/install-dependencies.sh");
+    sun->Update();
+    sky->Update();
+    auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+    grid->DeepCopy(terrain->GetOutput());
+    scene.geometry = grid;
+    auto sunData = vtkSmartPointer<vtkPolyData>::New();
+    sunData->DeepCopy(sun->GetOutput());
+    auto map = vtkSmartPointer<vtkImageData>::New();
+    map->DeepCopy(sky->GetRadianceOutput());
+    scene.lights = { sunData, map };
+    scene.reflectance = 0.2;
+    scene.terrain = true;
+    scene.description = "Olinda SRTM DEM 111 x 111, 2024-08-15 08:30 -03:00, ESRA sun + CIE 12 sky, reflectance 0.2";
+  }
+  else if (name == "fractal")
+  {
+    // (b) Steep fractal relief, winter sun 10.7 deg up: long shadows, strong interreflection.
+    const int n = 129;
+    const std::vector<float> heights = fractalHeights(n, 3, 0.55, 800.0);
+    scene.geometry = heightField(n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(j) * n + i]; });
+    scene.lights = { sunAt(10.7, 160.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 79.3, 160.0, 100.0) };
+    scene.reflectance = 0.5;
+    scene.terrain = true;
+    scene.description = "fractal DEM 129 x 129 at 30 m, 800 m relief, sun 10.7 deg up (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.5";
+  }
+  else if (name == "crater")
+  {
+    // (c) A snowy bowl: reflectance 0.8, sun 20 deg up; light bounces across the floor.
+    const int n = 65;
+    scene.geometry = heightField(n, 30.0, [&](int i, int j) {
+      const double x = (i - 32) * 30.0, y = (j - 32) * 30.0, r = std::sqrt(x * x + y * y) / 960.0;
+      return 1000.0 + 400.0 * std::min(r * r, 1.0 + 2.0 * (r - 1.0));
+    });
+    scene.lights = { sunAt(20.0, 180.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 70.0, 180.0, 100.0) };
+    scene.reflectance = 0.8;
+    scene.terrain = true;
+    scene.description = "bowl crater 65 x 65 at 30 m, 400 m deep, sun 20 deg up (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.8";
+  }
+  else if (name == "canyon")
+  {
+    // (e) An urban canyon: a street between two long blocks, a low sun across it.
+    vtkNew<vtkPlaneSource> street;
+    street->SetOrigin(-60, -20, 0);
+    street->SetPoint1(60, -20, 0);
+    street->SetPoint2(-60, 20, 0);
+    street->SetResolution(48, 16);
+    street->Update();
+    auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+    blocks->SetNumberOfBlocks(3);
+    blocks->SetBlock(0, street->GetOutput());
+    blocks->SetBlock(1, box(-50, 50, -16, -6, 0, 15, 3));
+    blocks->SetBlock(2, box(-50, 50, 6, 16, 0, 15, 3));
+    scene.geometry = blocks;
+    scene.lights = { sunAt(25.0, 200.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 65.0, 200.0, 100.0) };
+    scene.reflectance = 0.3;
+    scene.description = "street 12 m wide between 15 m blocks, sun 25 deg up across it (800 W/m^2) + CIE 12 sky, reflectance 0.3";
+  }
+  else if (name == "box")
+  {
+    // (f) The closed box of inward faces: radiosity 200 everywhere, exactly.
+    vtkNew<vtkTriangleFilter> triangles;
+    vtkNew<vtkTessellatedBoxSource> source;
+    source->SetLevel(4);
+    source->QuadsOn();
+    triangles->SetInputConnection(source->GetOutputPort());
+    vtkNew<vtkReverseSense> inward;
+    inward->SetInputConnection(triangles->GetOutputPort());
+    inward->ReverseCellsOn();
+    inward->Update();
+    auto closed = vtkSmartPointer<vtkPolyData>::New();
+    closed->DeepCopy(inward->GetOutput());
+    vtkNew<vtkDoubleArray> emission;
+    emission->SetName("Emission");
+    emission->SetNumberOfTuples(closed->GetNumberOfCells());
+    emission->Fill(100.0);
+    closed->GetCellData()->AddArray(emission);
+    scene.geometry = closed;
+    scene.reflectance = 0.5;
+    scene.emissionArray = "Emission";
+    scene.description = "closed box of inward faces (vtkTessellatedBoxSource level 4), emission 100, reflectance 0.5";
+  }
+  else
+  {
+    throw std::runtime_error("unknown scene '" + name + "'");
+  }
+  return scene;
+}
+} // namespace terralux_bench

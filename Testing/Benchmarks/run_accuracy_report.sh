@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The speed-against-error report: every scene of accuracy_scenes.cxx against the
+# independent reference (Testing/Reference), ErrorTolerance swept over six values for
+# terrain patches evaluated at points and averaged, and for the triangle path on
+# terrains; each solve in its own process so its peak memory is its own.
+# Writes OUT_DIR/report.json, report.md and the plots (accuracy_report.py).
+# Usage: Testing/Benchmarks/run_accuracy_report.sh [BUILD_DIR] [OUT_DIR] [SCENES...]
+#   TERRALUX_REFERENCE_SAMPLES  directions per point for the reference (default 1024)
+set -euo pipefail
+repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build_dir="${1:-${repo_dir}/build}"
+out_dir="${2:-${build_dir}/accuracy}"
+shift $(( $# > 2 ? 2 : $# ))
+scenes=("$@")
+[ "${#scenes[@]}" -gt 0 ] || scenes=(olinda fractal crater canyon box)
+samples="${TERRALUX_REFERENCE_SAMPLES:-1024}"
+cmake --build "${build_dir}" --target accuracy_report >/dev/null
+export TERRALUX_DATA_DIR="${repo_dir}/Testing/Data/External"
+mkdir -p "${out_dir}"
+runs="${out_dir}/runs.jsonl"
+: > "${runs}"
+for scene in "${scenes[@]}"; do
+  echo "== ${scene}: reference (${samples} directions per point)"
+  "${build_dir}/bin/accuracy_report" "${scene}" "${out_dir}" reference "${samples}" | tee -a "${runs}"
+  methods=(points averaged)
+  case "${scene}" in olinda|fractal|crater) methods+=(triangles) ;; esac
+  for method in "${methods[@]}"; do
+    for tolerance in 3e-2 1e-2 3e-3 1e-3 3e-4 1e-4; do
+      "${build_dir}/bin/accuracy_report" "${scene}" "${out_dir}" solve "${method}" "${tolerance}" 2>/dev/null \
+        | tee -a "${runs}" | cut -c1-160
+    done
+  done
+done
+/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/accuracy_report.py" "${runs}" "${out_dir}"
