@@ -542,6 +542,8 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   {
     for (const Link& link : element->Incoming)
     {
+      if (link.sender->kind() == HElement::Kind::Sun)
+        continue; // direct sun is taken below, by a ray from the point itself
       const std::uint64_t seed = linkSeed(salt++, link.sender->id());
       const double transport = transportToPoint(
         inside, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
@@ -553,6 +555,10 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
       result.skyViewFactor += skyViewOf(*link.sender, normal, transport);
     }
   }
+  // Direct sun is what a ray from just above the point sees, whatever leaf the point
+  // was assigned to and whether or not the links there still hold the sun (a shadowed
+  // element's sun link is dropped, yet its border posts may be lit).
+  irradiance[SunLight] = this->directSunAt(point, normal);
   return result;
 }
 

@@ -129,7 +129,7 @@ double PathTracer::directSun(const Vec3& point, const Vec3& normal) const
   {
     const double cosine = glm::dot(normal, sun.direction);
     if (cosine > 0.0 && sun.normalIrradiance > 0.0 &&
-      !this->Scene.occluded(point + offset * normal, sun.direction, 0.0, std::numeric_limits<float>::infinity()))
+      !this->Scene.occluded(point + offset * normal, sun.direction, offset, std::numeric_limits<float>::infinity()))
       sum += sun.normalIrradiance * cosine;
   }
   return sum;
@@ -158,7 +158,7 @@ double PathTracer::incidentAt(const Vec3& point, const Vec3& normal, int depth, 
   const Vec3 d = cosineDirection(normal, random.uniform(), random.uniform());
   const double offset = this->Scene.offsetAt(point);
   Hit hit;
-  if (!this->Scene.intersect(point + offset * normal, d, 0.0, hit))
+  if (!this->Scene.intersect(point + offset * normal, d, offset, hit))
     return e + pi * this->skyRadiance(d);
   if (glm::dot(hit.normal, d) >= 0.0)
     return e; // the back of a one-sided surface sends nothing
@@ -178,7 +178,7 @@ ReferenceIrradiance PathTracer::irradianceAt(const Vec3& point, const Vec3& norm
       const Vec3 d = cosineDirection(normal, (a + random.uniform()) / strata, (c + random.uniform()) / strata);
       double hiddenValue = 0.0, reflectedValue = 0.0;
       Hit hit;
-      if (this->Scene.intersect(point + offset * normal, d, 0.0, hit))
+      if (this->Scene.intersect(point + offset * normal, d, offset, hit))
       {
         hiddenValue = pi * this->skyRadiance(d); // sky the scene hides in this direction
         if (glm::dot(hit.normal, d) < 0.0)

@@ -36,8 +36,9 @@ public:
   bool intersect(const Vec3& origin, const Vec3& direction, double tnear, Hit& hit) const;
   /// Whether anything lies along the ray within (tnear, tfar).
   bool occluded(const Vec3& origin, const Vec3& direction, double tnear, double tfar) const;
-  /// Distance to start rays at from a point so that they clear its own surface: grows
-  /// with the point's distance from the scene's centre (single precision in Embree).
+  /// How far above a point its rays start, along its normal and again along the ray:
+  /// "just above" as TerraLux defines it (documented in its README), 1e-5 of the
+  /// scene's bounding diagonal, so that both judge shadows from the same place.
   double offsetAt(const Vec3& point) const;
 
 private:
@@ -50,6 +51,7 @@ private:
   RTCDevice Device = nullptr;
   RTCScene Scene = nullptr;
   Vec3 Centre{ 0.0 };
+  double Offset = 1e-4;
   std::vector<Triangle> Triangles;
 };
 } // namespace terralux_reference
