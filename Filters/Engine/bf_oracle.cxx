@@ -114,6 +114,26 @@ double clusterKernelBound(const HElement& receiver, const HElement& sender)
 }
 } // namespace
 
+namespace
+{
+// What a surface or cluster sends now, or could once lit at the scene's mean irradiance.
+double potentialEmittance(const HElement& sender, const OracleSettings& settings)
+{
+  double emittance = 0.0;
+  for (double b : sender.emittance())
+    emittance = std::max(emittance, b);
+  if (sender.isCluster())
+  {
+    const auto& cluster = static_cast<const Cluster&>(sender);
+    return std::max(emittance, cluster.largestEmission() + cluster.largestReflectance() * settings.meanIrradiance);
+  }
+  const auto& surface = static_cast<const PolygonElement&>(sender);
+  for (int band = 0; band < maxBands; ++band)
+    emittance = std::max(emittance, surface.emission()[band] + surface.reflectance()[band] * settings.meanIrradiance);
+  return emittance;
+}
+} // namespace
+
 bool clusterMayCarryMore(const HElement& receiver, const Link& link, const OracleSettings& settings)
 {
   const HElement& sender = *link.sender;
@@ -125,23 +145,16 @@ bool clusterMayCarryMore(const HElement& receiver, const Link& link, const Oracl
     (receiver.isCluster() ? static_cast<const Cluster&>(receiver).smallestSurfaceArea() : receiver.area()) >
       0.01 * sender.area())
     return false;
-  // What the sender sends now, or could once lit at the scene's mean irradiance.
-  double emittance = 0.0;
-  for (double b : sender.emittance())
-    emittance = std::max(emittance, b);
-  if (sender.isCluster())
-  {
-    const auto& cluster = static_cast<const Cluster&>(sender);
-    emittance = std::max(emittance, cluster.largestEmission() + cluster.largestReflectance() * settings.meanIrradiance);
-  }
-  else
-  {
-    const auto& surface = static_cast<const PolygonElement&>(sender);
-    for (int band = 0; band < maxBands; ++band)
-      emittance = std::max(emittance, surface.emission()[band] + surface.reflectance()[band] * settings.meanIrradiance);
-  }
+  const double emittance = potentialEmittance(sender, settings);
   const double estimate = link.kernel * link.visibility * (link.directional ? receiver.scaleFactor() : 1.0);
   return emittance * (clusterKernelBound(receiver, sender) - estimate) > settings.irradianceThreshold;
+}
+
+bool modelMissesExchange(const HElement&, const Link& link, const OracleSettings& settings)
+{
+  if (!(link.sampledKernel > link.kernel) || !(settings.irradianceThreshold > 0.0))
+    return false;
+  return potentialEmittance(*link.sender, settings) * (link.sampledKernel - link.kernel) > settings.irradianceThreshold;
 }
 
 double linkPower(const HElement& receiver, const Link& link)
@@ -166,7 +179,12 @@ bool lightsItself(const HElement& element, const OracleSettings& settings)
     radiosity = std::max({ radiosity, surface.Radiosity[band],
       surface.emission()[band] + surface.reflectance()[band] * settings.meanIrradiance });
   }
-  return radiosity * surface.unalignedArea() > settings.powerThreshold;
+  // Scene-relative power, or, for patches whose children follow finer terrain, the
+  // irradiance it can send onto itself (B (A - |N|) / A) against the receiver-relative
+  // bound: the many small exchanges of a rough terrain each fall below the first.
+  return radiosity * surface.unalignedArea() > settings.powerThreshold ||
+    (surface.refinesGeometry() && settings.irradianceThreshold > 0.0 &&
+      radiosity * surface.unalignedArea() > settings.irradianceThreshold * surface.area());
 }
 
 Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSettings& settings)
@@ -182,6 +200,7 @@ Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSe
   const bool nearApproximation = !link.sender->isExternal() && (approximated(receiver) || approximated(*link.sender)) &&
     approximatedSizeOverDistance(receiver, *link.sender) > 0.25 && power > 0.01 * settings.powerThreshold;
   const bool refine = nearApproximation || clusterMayCarryMore(receiver, link, settings) ||
+    modelMissesExchange(receiver, link, settings) ||
     power > settings.powerThreshold ||
     variation > settings.powerThreshold * settings.partialVisibilityFactor ||
     (partial && power > settings.partialVisibilityFactor * settings.powerThreshold);

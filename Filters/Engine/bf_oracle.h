@@ -40,12 +40,22 @@ double linkPower(const HElement& receiver, const Link& link);
 /// send once lit at the scene's mean irradiance.
 bool clusterMayCarryMore(const HElement& receiver, const Link& link, const OracleSettings& settings);
 
+/// Whether a link's far-field kernel misses more irradiance at its receiver than
+/// settings.irradianceThreshold: its sampled true-surface kernel (Link::sampledKernel)
+/// against it, for what the sender sends or could send at the scene's mean irradiance.
+/// This bounds the error each receiver sees in concave terrain, where each of the many
+/// local exchanges is far below the scene-relative power threshold.
+bool modelMissesExchange(const HElement& receiver, const Link& link, const OracleSettings& settings);
+
 Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSettings& settings);
 
 /// Whether a surface lights itself enough for its self-link to be split into links
 /// between its parts. A surface of area A whose area vector has length |N| sends at
 /// most B (A - |N|) onto itself (all of it in a cavity, nothing on a flat or convex
 /// surface: planar polygons never); B is its radiosity or, before the first gather,
-/// its reflectance times the scene's mean irradiance. False for non-surfaces.
+/// its reflectance times the scene's mean irradiance. True when that exceeds the power
+/// threshold, or, for surfaces whose children follow finer geometry (terrain patches of
+/// several cells), when B (A - |N|) / A exceeds the irradiance threshold. False for
+/// non-surfaces.
 bool lightsItself(const HElement& element, const OracleSettings& settings);
 } // namespace terralux

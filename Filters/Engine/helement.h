@@ -23,6 +23,11 @@ struct Link
   HElement* sender = nullptr;
   double kernel = 0.0;     ///< form factor, R S Omega, or R S, per unit sender emittance
   double kernelSpread = 0.0; ///< max - min of the kernel over the receiver's sample points
+  /// For a surface receiver whose link's kernel comes from a far-field model (a coarse
+  /// terrain quad or a cluster at either end): the unoccluded kernel estimated from
+  /// samples of both true surfaces with their own normals, which sees the exchange
+  /// inside concave terrain that the model misses. 0 elsewhere.
+  double sampledKernel = 0.0;
   double visibility = 1.0; ///< fraction in [0, 1]
   Vec3 direction{ 0.0 };   ///< unit vector toward the sender (receiver centre to sender)
   bool directional = false; ///< received by a cluster: evaluated for each contained surface

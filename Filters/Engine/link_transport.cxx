@@ -146,6 +146,39 @@ double sampledFormFactor(const Vec3& point, const Vec3& n, const HElement& sende
 }
 } // namespace
 
+namespace
+{
+// Elements whose kernels come from a far-field model: clusters (beyond a few surfaces)
+// and surfaces of approximate shape (large terrain patches).
+bool farFieldModel(const HElement& e)
+{
+  if (e.isCluster())
+    return static_cast<const Cluster&>(e).surfaces().size() > exactClusterSurfaces;
+  return e.isSurface() && static_cast<const PolygonElement&>(e).approximateShape();
+}
+
+// Receiver-averaged form factor from pairs of samples on both true surfaces, each with
+// its own normal, disc-regularised (Wallace et al. 1989): F = mean A_s cx cy / (pi r^2 +
+// A_s / N). Unoccluded: it bounds what the far-field model may leave out.
+double sampledSurfaceKernel(const HElement& receiver, const HElement& sender, int samples, std::uint64_t seed)
+{
+  SampleGenerator random(seed);
+  const double share = sender.area() / samples;
+  double sum = 0.0;
+  for (int k = 0; k < samples; ++k)
+  {
+    const SurfaceSample x = receiver.sample(k, samples, random);
+    const SurfaceSample y = sender.sample(k, samples, random);
+    const Vec3 d = y.position - x.position;
+    const double r2 = glm::dot(d, d);
+    const double cx = glm::dot(x.normal, d), cy = -glm::dot(y.normal, d);
+    if (cx > 0.0 && cy > 0.0 && r2 > 0.0)
+      sum += sender.area() * (cx * cy / r2) / (pi * r2 + share);
+  }
+  return sum / samples;
+}
+} // namespace
+
 double surfaceKernel(const PolygonElement& receiver, const HElement& sender, double* spread)
 {
   if (!sender.isSurface())
@@ -381,6 +414,8 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
   if (receiver.isSurface())
   {
     link.kernel = surfaceKernel(static_cast<PolygonElement&>(receiver), sender, &link.kernelSpread);
+    if (farFieldModel(receiver) || farFieldModel(sender))
+      link.sampledKernel = sampledSurfaceKernel(receiver, sender, 8, linkSeed(sender.id(), receiver.id()));
   }
   else if (sender.isSurface())
   {

@@ -40,6 +40,10 @@ public:
   /// terrain patch's coarse quad): near the element, links are refined and points
   /// sample its true surface instead.
   virtual bool approximateShape() const { return false; }
+  /// Whether its children follow finer geometry than itself (a terrain patch of more
+  /// than one cell), so that what it sends onto itself is worth refining at the scale
+  /// of the irradiance it receives, not only of the scene's power.
+  virtual bool refinesGeometry() const { return false; }
   /// Area not aligned with the mean normal, A - |sum A_i n_i|: 0 for a planar polygon.
   /// It bounds both how much the surface lights itself and how far its parts' cosines
   /// toward a source differ from the mean one.
@@ -54,9 +58,12 @@ public:
   /// Cosine-weighted fraction of the sky the leaf sees, once push-pull has run (0
   /// without a sky).
   double SkyViewFactor = 0.0;
-  /// Kernels of the links evaluated at this leaf during push, kept while the link
-  /// structure does not change.
+  /// Kernels of the links evaluated at this leaf during push, kept while the links
+  /// that reach it (their signature) do not change.
   std::vector<double> LeafKernels;
+  std::vector<std::uint64_t> LeafKernelKeys;   ///< the link each kernel belongs to
+  std::vector<std::uint8_t> LeafKernelPartial; ///< whether the leaf saw its sender in part
+  std::uint64_t LeafKernelSignature = 0;
   /// Irradiance (largest band) this leaf receives through partially visible links;
   /// where it is large the leaf is split so shadows are resolved in space.
   double PartialIrradiance = 0.0;

@@ -16,7 +16,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <unordered_map>
 
 namespace terralux
 {
@@ -210,7 +212,8 @@ std::size_t HierarchicalRadiosity::refine(std::vector<std::pair<HElement*, Link>
         }
         continue;
       }
-      if (!(link.kernel > 0.0 && link.visibility > 0.0) && clusterMayCarryMore(*receiver, link, oracle))
+      if (!(link.kernel > 0.0 && link.visibility > 0.0) &&
+        (clusterMayCarryMore(*receiver, link, oracle) || modelMissesExchange(*receiver, link, oracle)))
       {
         // A cluster's centre direction or its few samples saw nothing, but its members
         // may: split (the side decideRefinement picks) rather than drop.
@@ -400,35 +403,63 @@ void collectLeafTasks(HElement& element, const Inherited& inherited, std::vector
 // Push, second half, for one leaf: its irradiance and radiosity. A partially visible
 // link from above is re-sampled at the leaf, so shadow boundaries are resolved by the
 // leaves even where no single link is worth refining.
-LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, bool reuseKernels,
-  const Visibility& rays, int samples, double extrapolation)
+LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, const Visibility& rays, int samples,
+  double extrapolation)
 {
   PolygonElement& polygon = *task.leaf;
   std::array<Spectrum, lightCategories> irradiance = task.inherited.irradiance;
   double skyView = task.inherited.skyView;
-  if (!reuseKernels || polygon.LeafKernels.size() != task.count)
+  // A kernel depends only on the link that reaches the leaf (sender, owner, the link's
+  // own kernel and visibility): each is kept under that key and recomputed only for
+  // links that refinement changed, not for every link of a leaf whose set changed.
+  std::vector<std::uint64_t> keys(task.count);
+  std::uint64_t signature = 1469598103934665603ull;
+  for (std::size_t k = 0; k < task.count; ++k)
   {
+    std::uint64_t key = 1469598103934665603ull, kernelBits, visibilityBits;
+    std::memcpy(&kernelBits, &deferred[k].link->kernel, sizeof kernelBits);
+    std::memcpy(&visibilityBits, &deferred[k].link->visibility, sizeof visibilityBits);
+    for (std::uint64_t value : { deferred[k].link->sender->id(), deferred[k].owner->id(), kernelBits, visibilityBits })
+      key = (key ^ value) * 1099511628211ull;
+    keys[k] = key;
+    signature = (signature ^ key) * 1099511628211ull;
+  }
+  if (polygon.LeafKernels.size() != task.count || polygon.LeafKernelSignature != signature)
+  {
+    std::unordered_map<std::uint64_t, std::pair<double, bool>> previous;
+    for (std::size_t k = 0; k < polygon.LeafKernelKeys.size(); ++k)
+      previous.emplace(polygon.LeafKernelKeys[k], std::make_pair(polygon.LeafKernels[k], polygon.LeafKernelPartial[k] != 0));
+    polygon.LeafKernelSignature = signature;
     polygon.LeafKernels.resize(task.count);
+    polygon.LeafKernelPartial.assign(task.count, 0);
     polygon.DeferredPartial = 0.0;
     for (std::size_t k = 0; k < task.count; ++k)
     {
       const DeferredLink& item = deferred[k];
       const Link& link = *item.link;
-      double visibility = link.visibility;
-      if (item.owner == &polygon)
+      const auto known = previous.find(keys[k]);
+      bool partial;
+      if (known != previous.end())
+      {
+        polygon.LeafKernels[k] = known->second.first;
+        partial = known->second.second;
+      }
+      else if (item.owner == &polygon)
       {
         polygon.LeafKernels[k] = link.kernel * link.visibility;
+        partial = link.visibility > 0.0 && link.visibility < 1.0;
       }
       else
       {
-        visibility = link.visibility < 1.0 ? sampledVisibility(polygon, *link.sender, rays, samples) : 1.0;
+        const double visibility = link.visibility < 1.0 ? sampledVisibility(polygon, *link.sender, rays, samples) : 1.0;
         polygon.LeafKernels[k] = kernelAtSurface(polygon, *link.sender) * visibility;
+        partial = visibility > 0.0 && visibility < 1.0;
       }
-      if (visibility > 0.0 && visibility < 1.0)
-      {
+      polygon.LeafKernelPartial[k] = partial;
+      if (partial)
         polygon.DeferredPartial += polygon.LeafKernels[k] * largest(link.sender->emittance());
-      }
     }
+    polygon.LeafKernelKeys = std::move(keys);
   }
   for (std::size_t k = 0; k < task.count; ++k)
   {
@@ -491,11 +522,9 @@ double HierarchicalRadiosity::pushPull(double extrapolation)
   std::vector<LeafTask> tasks;
   collectLeafTasks(*this->RootCluster, Inherited{}, deferred, flat, tasks);
 
-  const bool reuseKernels = !this->StructureChanged;
-  this->StructureChanged = false;
   std::vector<LeafResult> results(tasks.size());
   tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t k) {
-    results[k] = solveLeaf(tasks[k], flat.data() + tasks[k].first, reuseKernels, *this->Rays,
+    results[k] = solveLeaf(tasks[k], flat.data() + tasks[k].first, *this->Rays,
       this->Options.visibilitySamples, extrapolation);
   });
   double change = 0.0, radiosity = 0.0, incident = 0.0;
@@ -605,10 +634,6 @@ std::size_t HierarchicalRadiosity::splitLeaves(const std::vector<PolygonElement*
   {
     this->refine(pending, false);
   }
-  if (!leaves.empty())
-  {
-    this->StructureChanged = true;
-  }
   return leaves.size();
 }
 
@@ -678,7 +703,6 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
   // Clusters start with the area-weighted emission of their surfaces, so the oracle
   // sees emitters before the first gather.
   this->pushPull();
-  this->StructureChanged = true;
   auto start = std::chrono::steady_clock::now();
   this->refine(pending, false);
   this->Stats.secondsRefine += secondsSince(start);
@@ -741,7 +765,6 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     if (!pending.empty())
     {
       this->refine(pending, true);
-      this->StructureChanged = true;
     }
     this->Stats.secondsRefine += secondsSince(start);
 

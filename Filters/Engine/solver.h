@@ -143,7 +143,6 @@ private:
   std::size_t StoredLinks = 0;   // links held by elements
   std::size_t PendingLinks = 0;  // links refine() holds while it runs
   std::size_t Degenerate = 0;
-  bool StructureChanged = true; // links changed since the leaf kernels were cached
   RadiosityStatistics Stats;
 };
 } // namespace terralux

@@ -203,6 +203,23 @@ double TerrainPatch::formFactorFrom(const Vec3& x, const Vec3& n) const
   {
     return PolygonElement::formFactorFrom(x, n);
   }
+  // Far from the patch (beyond 8 bounding radii, where the exact sum differs from this
+  // by about (r / d)^2 < 2 %): its area vector, plus a quarter of its unaligned area as
+  // clusters count it, seen like a disc. The exact sum over up to 32 triangles was most
+  // of the time of push on rough terrain.
+  const Vec3 toPatch = this->Centre - x;
+  const double d2 = glm::dot(toPatch, toPatch), radius = 0.5 * glm::length(this->High - this->Low);
+  if (d2 > 64.0 * radius * radius)
+  {
+    const double d = std::sqrt(d2);
+    const Vec3 dir = toPatch / d;
+    const double cosine = glm::dot(n, dir);
+    if (!(cosine > 0.0))
+      return 0.0;
+    const double aligned = this->Area - this->UnalignedArea;
+    const double projected = std::max(0.0, -aligned * glm::dot(this->Normal, dir)) + 0.25 * this->UnalignedArea;
+    return cosine * projected / (3.14159265358979323846 * d2 + projected);
+  }
   double sum = 0.0;
   for (int j = static_cast<int>(this->Range.v0); j < this->Range.v1; ++j)
     for (int i = static_cast<int>(this->Range.u0); i < this->Range.u1; ++i)

@@ -61,6 +61,8 @@ public:
   static constexpr int exactTriangles = 32;
   /// True unless form factors to this patch use its true triangles.
   bool approximateShape() const override;
+  /// More than one cell: its children use finer posts.
+  bool refinesGeometry() const override { return this->Range.width() * this->Range.height() > 1.0; }
 
 
   /// The child ranges of a range: halved at a post along each side longer than one cell;
