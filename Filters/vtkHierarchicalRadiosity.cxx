@@ -82,6 +82,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , UseTerrainHierarchy(1)
   , EvaluateAtPoints(1)
   , NumberOfBands(1)
+  , PostNormals(AREA_WEIGHTED_NORMALS)
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(3);
@@ -298,13 +299,16 @@ int vtkHierarchicalRadiosity::Solve(
 
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.
+  vtkRadiosityOutputs::PointOptions pointOptions;
+  pointOptions.bands = this->NumberOfBands;
+  pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;
+  pointOptions.hornNormals = this->PostNormals == HORN_NORMALS;
   int index = 0;
   auto withResults = [&](vtkDataSet* input) {
     vtkSmartPointer<vtkDataSet> copy;
     copy.TakeReference(input->NewInstance());
     copy->ShallowCopy(input);
-    vtkRadiosityOutputs::AddPointArrays(
-      *solver, scene, index++, this->NumberOfBands, this->EvaluateAtPoints != 0, copy);
+    vtkRadiosityOutputs::AddPointArrays(*solver, scene, index++, pointOptions, copy);
     return copy;
   };
   auto copyComposite = [&](vtkCompositeDataSet* input) {
@@ -340,8 +344,7 @@ int vtkHierarchicalRadiosity::Solve(
   {
     auto* dataSet = vtkDataSet::SafeDownCast(output);
     dataSet->ShallowCopy(scene.Inputs[0].data);
-    vtkRadiosityOutputs::AddPointArrays(
-      *solver, scene, 0, this->NumberOfBands, this->EvaluateAtPoints != 0, dataSet);
+    vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
   }
   vtkFieldData* fieldData = output->GetFieldData();
   auto addValue = [&](const char* name, double value) {
@@ -382,5 +385,6 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmissionArrayName: " << (this->EmissionArrayName ? this->EmissionArrayName : "(none)") << "\n";
   os << indent << "EvaluateAtPoints: " << (this->EvaluateAtPoints ? "On" : "Off") << "\n";
   os << indent << "NumberOfBands: " << this->NumberOfBands << "\n";
+  os << indent << "PostNormals: " << (this->PostNormals == HORN_NORMALS ? "Horn" : "AreaWeighted") << "\n";
   os << indent << "UseTerrainHierarchy: " << (this->UseTerrainHierarchy ? "On" : "Off") << "\n";
 }

@@ -69,7 +69,10 @@ public:
   ///@{
   /**
    * Set/Get the refinement tolerance: a link is refined when the power it carries
-   * exceeds this fraction of the power the scene receives. Default is 1e-3.
+   * exceeds this fraction of the power the scene receives, or when its far-field
+   * estimate (a cluster, a coarse terrain quad) may leave out more than 5 times this
+   * fraction of the scene's mean irradiance at its receiver (the bound each receiver
+   * sees). Default is 1e-3.
    */
   vtkSetClampMacro(ErrorTolerance, double, 1e-9, 1.0);
   vtkGetMacro(ErrorTolerance, double);
@@ -173,6 +176,27 @@ public:
   vtkBooleanMacro(UseTerrainHierarchy, vtkTypeBool);
   ///@}
 
+  enum PostNormalType
+  {
+    AREA_WEIGHTED_NORMALS = 0,
+    HORN_NORMALS = 1
+  };
+
+  ///@{
+  /**
+   * Set/Get the normal a terrain post is evaluated with: AREA_WEIGHTED_NORMALS (the
+   * area-weighted normal of the six triangles around it, as a mesh's vertex normal) or
+   * HORN_NORMALS (Horn's 3 x 3 normal, the convention of GRASS r.slope.aspect and
+   * gdaldem slope/aspect, so results line up with slope and aspect maps from GIS
+   * tools; posts on the border or next to no data keep the area-weighted one).
+   * Default is AREA_WEIGHTED_NORMALS.
+   */
+  vtkSetClampMacro(PostNormals, int, AREA_WEIGHTED_NORMALS, HORN_NORMALS);
+  vtkGetMacro(PostNormals, int);
+  void SetPostNormalsToAreaWeighted() { this->SetPostNormals(AREA_WEIGHTED_NORMALS); }
+  void SetPostNormalsToHorn() { this->SetPostNormals(HORN_NORMALS); }
+  ///@}
+
   ///@{
   /**
    * Set/Get the number of bands, 1 (broadband) or 3 (RGB). Default is 1.
@@ -232,6 +256,7 @@ protected:
   vtkTypeBool UseTerrainHierarchy;
   vtkTypeBool EvaluateAtPoints;
   int NumberOfBands;
+  int PostNormals;
 
 private:
   vtkHierarchicalRadiosity(const vtkHierarchicalRadiosity&) = delete;

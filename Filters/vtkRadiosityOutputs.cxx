@@ -160,8 +160,10 @@ std::vector<double> flatLeafValues(const terralux::TerrainLeafMesh& mesh)
 // Per-post arrays of a terrain input: evaluated at each post, or interpolated from the
 // continuous leaf mesh.
 void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const terralux::TerrainPatch* root,
-  int bands, bool evaluateAtPoints, bool withSky, vtkDataSet* output)
+  const vtkRadiosityOutputs::PointOptions& options, bool withSky, vtkDataSet* output)
 {
+  const int bands = options.bands;
+  const bool evaluateAtPoints = options.evaluateAtPoints;
   const vtkIdType count = output->GetNumberOfPoints();
   const double none = std::numeric_limits<double>::quiet_NaN();
   const auto arrays = makeArrays(bands, count, none);
@@ -178,6 +180,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
   {
     const terralux::TerrainGrid& grid = root->grid();
     const int nx = grid.postsX(), ny = grid.postsY();
+    auto normalAt = [&](int i, int j) { return options.hornNormals ? grid.hornNormal(i, j) : grid.postNormal(i, j); };
     if (evaluateAtPoints)
     {
       // Every post through the links that reach the leaf holding it, with the normal of
@@ -191,7 +194,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
             const terralux::TerrainPatch* leaf = root->leafHolding(i, j);
             if (!leaf)
               continue;
-            const terralux::PointIrradiance result = solver.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j));
+            const terralux::PointIrradiance result = solver.irradianceAt(*leaf, grid.post(i, j), normalAt(i, j));
             const vtkIdType post = i + static_cast<vtkIdType>(j) * nx;
             put(post, valuesAtPoint(result, leaf->reflectance(), leaf->emission()));
             if (skyViewFactor)
@@ -225,7 +228,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
               for (int q = 0; q < quantities; ++q)
                 for (int band = 0; band < terralux::maxBands; ++band)
                   v[q][band] = flat[q * terralux::maxBands + band];
-              v[1] = solver.directSunAt(grid.post(i, j), grid.postNormal(i, j));
+              v[1] = solver.directSunAt(grid.post(i, j), normalAt(i, j));
               if (skyViewFactor)
                 skyViewFactor->SetValue(i + static_cast<vtkIdType>(j) * nx, flat[skyViewComponent]);
               for (int band = 0; band < terralux::maxBands; ++band)
@@ -253,28 +256,39 @@ struct PositionHash
 } // namespace
 
 void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& solver,
-  const vtkRadiosityScene& scene, int index, int bands, bool evaluateAtPoints, vtkDataSet* output)
+  const vtkRadiosityScene& scene, int index, const PointOptions& options, vtkDataSet* output)
 {
-  // Each point is evaluated where it is, with the area-weighted normal of the polygons
-  // around it (as a GIS takes a post's slope and aspect from its neighbours), through
-  // the links that reach the leaf of one of them: every link is re-evaluated at the
-  // point (exact form factors, visibility from the point), so values are not smeared
-  // over elements.
+  const int bands = options.bands;
+  const bool evaluateAtPoints = options.evaluateAtPoints;
   const vtkRadiosityScene::Input& input = scene.Inputs[index];
   if (input.terrain >= 0)
   {
-    addTerrainPointArrays(solver, solver.terrainRoots()[input.terrain], bands, evaluateAtPoints,
-      scene.Sky != nullptr, output);
+    addTerrainPointArrays(solver, solver.terrainRoots()[input.terrain], options, scene.Sky != nullptr, output);
     return;
   }
+  // The polygons around a point, grouped by orientation: a point on a smooth or flat
+  // surface has one group (the area-weighted normal, as a GIS takes a post's slope from
+  // its neighbours), a point on a crease (a box's edge or corner) one per face, each
+  // evaluated on its own side and the results averaged by area. One normal averaged
+  // across a crease would point out of every face.
+  struct Side
+  {
+    Vec3 normalSum{ 0.0 };
+    double area = 0.0;
+    const terralux::PolygonElement* leaf = nullptr;
+    // Other leaves of this side with the point as a corner: where a surface runs under
+    // another (ground under a building), the point takes the value of its most open
+    // leaf, the limit a user sees from the visible side.
+    std::vector<const terralux::PolygonElement*> otherLeaves;
+    Values leafSum{};      // averaged mode: area-weighted leaf values
+    double leafWeight = 0.0;
+    double skyView = 0.0;
+  };
+  // A terrain grid's posts take one normal (the GIS convention, as terrain patches do).
+  const bool terrainGrid = vtkStructuredGrid::SafeDownCast(input.data) != nullptr;
+  const double sameSide = terrainGrid ? -2.0 : 0.94; // cos 20 deg
   const vtkIdType count = input.data->GetNumberOfPoints();
-  // One pass over the polygons' corners: for each point the area-weighted normal and
-  // the first leaf having it as a corner (point evaluation), or the area-weighted
-  // average of all such leaves (averaged values).
-  std::vector<const terralux::PolygonElement*> leafOfPoint(count, nullptr);
-  std::vector<Vec3> normalOfPoint(count, Vec3(0.0));
-  std::vector<Values> sums(evaluateAtPoints ? 0 : count, Values{});
-  std::vector<double> weights(evaluateAtPoints ? 0 : count, 0.0), skyViews(evaluateAtPoints ? 0 : count, 0.0);
+  std::vector<std::vector<Side>> sides(count);
   const auto& roots = solver.polygonRoots();
   for (std::size_t k = 0; k < roots.size(); ++k)
   {
@@ -285,14 +299,29 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     {
       const vtkIdType point = polygon.vertices[c] - input.firstPoint;
       const terralux::PolygonElement* leaf = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
-      normalOfPoint[point] += roots[k]->area() * roots[k]->normal();
-      if (!leafOfPoint[point])
-        leafOfPoint[point] = leaf;
+      const Vec3 n = roots[k]->normal();
+      Side* side = nullptr;
+      for (Side& candidate : sides[point])
+        if (glm::dot(glm::normalize(candidate.normalSum), n) > sameSide)
+          side = &candidate;
+      if (!side)
+      {
+        sides[point].emplace_back();
+        side = &sides[point].back();
+        side->leaf = leaf;
+      }
+      else if (!terrainGrid && leaf != side->leaf &&
+        std::find(side->otherLeaves.begin(), side->otherLeaves.end(), leaf) == side->otherLeaves.end())
+      {
+        side->otherLeaves.push_back(leaf);
+      }
+      side->normalSum += roots[k]->area() * n;
+      side->area += roots[k]->area();
       if (!evaluateAtPoints)
       {
-        accumulate(sums[point], valuesOf(*leaf), leaf->area());
-        skyViews[point] += leaf->SkyViewFactor * leaf->area();
-        weights[point] += leaf->area();
+        accumulate(side->leafSum, valuesOf(*leaf), leaf->area());
+        side->skyView += leaf->SkyViewFactor * leaf->area();
+        side->leafWeight += leaf->area();
       }
     }
   }
@@ -303,49 +332,97 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     scene.Sky && vtkStructuredGrid::SafeDownCast(input.data) ? skyViewFactorArray(count) : nullptr;
   if (skyViewFactor)
     output->GetPointData()->AddArray(skyViewFactor);
-  if (!evaluateAtPoints)
-  {
-    for (vtkIdType p = 0; p < count; ++p)
-    {
-      if (weights[p] > 0.0)
-      {
-        Values v{};
-        accumulate(v, sums[p], 1.0 / weights[p]);
-        store(arrays, p, v, bands);
-        if (skyViewFactor)
-          skyViewFactor->SetValue(p, skyViews[p] / weights[p]);
-      }
-    }
-    for (const auto& array : arrays)
-      output->GetPointData()->AddArray(array);
-    output->GetPointData()->SetActiveScalars("Irradiance");
-    return;
-  }
 
+  // One evaluation per side of each point, in parallel.
   std::vector<const terralux::PolygonElement*> leaves;
   std::vector<Vec3> points, normals;
-  std::vector<vtkIdType> pointIds;
+  std::vector<std::pair<vtkIdType, const Side*>> owners;
   for (vtkIdType p = 0; p < count; ++p)
-  {
-    if (leafOfPoint[p])
+    for (const Side& side : sides[p])
     {
-      const double length = glm::length(normalOfPoint[p]);
-      leaves.push_back(leafOfPoint[p]);
+      const double length = glm::length(side.normalSum);
+      leaves.push_back(side.leaf);
       points.push_back(scene.Scene.points[input.firstPoint + p]);
-      normals.push_back(length > 0.0 ? normalOfPoint[p] / length : leafOfPoint[p]->normal());
-      pointIds.push_back(p);
+      normals.push_back(length > 0.0 ? side.normalSum / length : side.leaf->normal());
+      owners.emplace_back(p, &side);
+    }
+  std::vector<Values> values(points.size());
+  std::vector<double> skyViews(points.size(), 0.0);
+  if (evaluateAtPoints)
+  {
+    // The first leaf of each side, then the side's other leaves; the most open wins.
+    std::vector<const terralux::PolygonElement*> allLeaves = leaves;
+    std::vector<Vec3> allPoints = points, allNormals = normals;
+    std::vector<std::size_t> evaluationOf;
+    for (std::size_t k = 0; k < owners.size(); ++k)
+      for (const terralux::PolygonElement* other : owners[k].second->otherLeaves)
+      {
+        allLeaves.push_back(other);
+        allPoints.push_back(points[k]);
+        allNormals.push_back(normals[k]);
+        evaluationOf.push_back(k);
+      }
+    std::vector<terralux::PointIrradiance> results;
+    solver.irradianceAt(allLeaves, allPoints, allNormals, results);
+    auto openness = [](const terralux::PointIrradiance& r) {
+      return r.irradiance[0][0] + r.irradiance[1][0] + r.irradiance[2][0];
+    };
+    std::vector<std::size_t> best(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k)
+      best[k] = k;
+    for (std::size_t m = 0; m < evaluationOf.size(); ++m)
+    {
+      const std::size_t k = evaluationOf[m], candidate = points.size() + m;
+      // Only a clearly more open leaf (a hidden one next to a visible one), not the
+      // larger of two noisy estimates of the same value.
+      if (openness(results[candidate]) > 1.1 * openness(results[best[k]]) + 1e-9)
+        best[k] = candidate;
+    }
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      const std::size_t b = best[k];
+      values[k] = valuesAtPoint(results[b], allLeaves[b]->reflectance(), allLeaves[b]->emission());
+      skyViews[k] = results[b].skyViewFactor;
     }
   }
-  std::vector<terralux::PointIrradiance> results;
-  solver.irradianceAt(leaves, points, normals, results);
-
-  for (std::size_t k = 0; k < pointIds.size(); ++k)
+  else
   {
-    if (skyViewFactor)
+    // Averaged over the leaves around the point, except direct sun: one ray from the
+    // point, so shadows stay sharp.
+    vtkSMPTools::For(0, static_cast<vtkIdType>(points.size()), [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType k = first; k < last; ++k)
+      {
+        const Side& side = *owners[k].second;
+        Values v{};
+        accumulate(v, side.leafSum, 1.0 / side.leafWeight);
+        v[1] = solver.directSunAt(points[k], normals[k]);
+        for (int band = 0; band < terralux::maxBands; ++band)
+        {
+          v[0][band] = v[1][band] + v[2][band] + v[3][band];
+          v[4][band] = leaves[k]->emission()[band] + leaves[k]->reflectance()[band] * v[0][band];
+        }
+        values[k] = v;
+        skyViews[k] = side.skyView / side.leafWeight;
+      }
+    });
+  }
+  // Sides of one point weighted by their area.
+  for (std::size_t k = 0; k < owners.size();)
+  {
+    const vtkIdType p = owners[k].first;
+    Values sum{};
+    double weight = 0.0, skyView = 0.0;
+    for (; k < owners.size() && owners[k].first == p; ++k)
     {
-      skyViewFactor->SetValue(pointIds[k], results[k].skyViewFactor);
+      accumulate(sum, values[k], owners[k].second->area);
+      skyView += skyViews[k] * owners[k].second->area;
+      weight += owners[k].second->area;
     }
-    store(arrays, pointIds[k], valuesAtPoint(results[k], leaves[k]->reflectance(), leaves[k]->emission()), bands);
+    Values mean{};
+    accumulate(mean, sum, 1.0 / weight);
+    store(arrays, p, mean, bands);
+    if (skyViewFactor)
+      skyViewFactor->SetValue(p, skyView / weight);
   }
   for (const auto& array : arrays)
     output->GetPointData()->AddArray(array);

@@ -15,6 +15,13 @@ class HierarchicalRadiosity;
 
 struct vtkRadiosityOutputs
 {
+  /// How output 0's point arrays are made.
+  struct PointOptions
+  {
+    int bands = 1;
+    bool evaluateAtPoints = true;
+    bool hornNormals = false; ///< terrain posts take Horn's 3 x 3 normal, else the area-weighted one
+  };
   /// Adds Irradiance, SunIrradiance, SkyIrradiance, ReflectedIrradiance and Radiosity
   /// (and SkyViewFactor for a terrain lit by a sky) to `output`, a shallow copy of
   /// input `index` of the scene.
@@ -22,7 +29,7 @@ struct vtkRadiosityOutputs
   /// leaves that have it as a corner instead (fast; values smeared over the elements
   /// around the point; no SkyViewFactor).
   static void AddPointArrays(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
-    int index, int bands, bool evaluateAtPoints, vtkDataSet* output);
+    int index, const PointOptions& options, vtkDataSet* output);
   /// withSky: add SkyViewFactor (the leaves' own, continuous like the other arrays).
   static void BuildLeafMesh(
     const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output);

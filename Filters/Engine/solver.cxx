@@ -562,11 +562,15 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   const int clearSamples = this->Options.visibilitySamples;
   // Seeded by the point itself: points sharing a leaf (posts inside a terrain patch)
   // must not share their jitter, or the noise would be the same pattern at each.
-  std::uint64_t salt = hashPosition(point) ^ (leaf.id() * 31);
+  std::uint64_t salt = this->Rays->seedOf(point) ^ (leaf.id() * 31);
   // A point on the leaf's border is the limit from inside the leaf: at a concave
   // junction (a wall's foot, a box's corner) the point itself lies in the plane of the
-  // other surface, which it would see edge-on with a form factor of 0.
-  const Vec3 inside = point + 1e-5 * (leaf.centre() - point);
+  // other surface, which it would see edge-on with a form factor of 0, and rays that
+  // skip their first offset would skip that surface too. So the point moves two ray
+  // offsets into its leaf (at most half way to the leaf's centre).
+  const Vec3 toCentre = leaf.centre() - point;
+  const double distance = glm::length(toCentre);
+  const Vec3 inside = distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays->offset() / distance) * toCentre : point;
   for (const HElement* element = &leaf; element; element = element->Parent)
   {
     for (const Link& link : element->Incoming)
@@ -574,8 +578,12 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
       if (link.sender->kind() == HElement::Kind::Sun)
         continue; // direct sun is taken below, by a ray from the point itself
       const std::uint64_t seed = linkSeed(salt++, link.sender->id());
+      // Sky visibility from the point itself: a ray that starts on a wall's plane skips
+      // it and then meets the building from inside, so the sky is judged right whatever
+      // leaf holds the point; form factors need the point inside its leaf.
+      const Vec3& from = link.sender->kind() == HElement::Kind::SkyPatch ? point : inside;
       const double transport = transportToPoint(
-        inside, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
+        from, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
       const Spectrum e = link.sender->emittance();
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)

@@ -199,6 +199,19 @@ Vec3 TerrainGrid::postNormal(int i, int j) const
   return length > 0.0 ? sum / length : Vec3(0.0, 0.0, 1.0);
 }
 
+Vec3 TerrainGrid::hornNormal(int i, int j) const
+{
+  if (i < 1 || j < 1 || i + 1 >= this->Nx || j + 1 >= this->Ny || !this->cellValid(i - 1, j - 1) ||
+    !this->cellValid(i, j - 1) || !this->cellValid(i - 1, j) || !this->cellValid(i, j))
+    return this->postNormal(i, j);
+  auto p = [this](int a, int b) { return this->post(a, b); };
+  const Vec3 alongI = (p(i + 1, j - 1) + 2.0 * p(i + 1, j) + p(i + 1, j + 1)) - (p(i - 1, j - 1) + 2.0 * p(i - 1, j) + p(i - 1, j + 1));
+  const Vec3 alongJ = (p(i - 1, j + 1) + 2.0 * p(i, j + 1) + p(i + 1, j + 1)) - (p(i - 1, j - 1) + 2.0 * p(i, j - 1) + p(i + 1, j - 1));
+  const Vec3 n = glm::cross(alongI, alongJ);
+  const double length = glm::length(n);
+  return length > 0.0 ? n / length : this->postNormal(i, j);
+}
+
 bool TerrainGrid::postUsed(int i, int j) const
 {
   for (int cj = std::max(0, j - 1); cj <= std::min(j, this->Ny - 2); ++cj)

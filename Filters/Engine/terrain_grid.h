@@ -75,6 +75,12 @@ public:
   double meanCosine(int i0, int j0, int i1, int j1, const Vec3& d) const;
   /// Area-weighted unit normal of the valid triangles around post (i, j) (+z if none).
   Vec3 postNormal(int i, int j) const;
+  /// Horn's (1981) 3 x 3 normal at post (i, j), the convention of r.slope.aspect and
+  /// gdaldem: tangents from the weighted (1, 2, 1) differences of the neighbouring rows
+  /// and columns of posts (in 3-D, so curved and rotated grids are handled), normal =
+  /// their cross product. Where a neighbour is missing (border, no data) the post's
+  /// area-weighted normal instead.
+  Vec3 hornNormal(int i, int j) const;
   /// True when post (i, j) is a corner of a valid cell.
   bool postUsed(int i, int j) const;
 

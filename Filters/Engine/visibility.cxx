@@ -247,6 +247,12 @@ bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, con
   return castOcclusion(this->Scene, from - this->Centre, d / length, this->Offset, length - this->Offset);
 }
 
+std::uint64_t Visibility::seedOf(const Vec3& p) const
+{
+  const Vec3 cells = glm::round((p - this->Centre) / (1e-3 * this->Offset));
+  return hashPosition(cells);
+}
+
 bool Visibility::occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const
 {
   ++this->Rays->perThread.local();

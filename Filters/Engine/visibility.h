@@ -36,6 +36,10 @@ public:
   bool occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const;
   /// Offset (metres) of ray ends: 1e-5 of the scene's bounding diagonal.
   double offset() const { return this->Offset; }
+  /// A seed for samples that belong to a point: its position relative to the scene,
+  /// quantised to a thousandth of offset(), so moving the whole scene (by 1e7 m, say)
+  /// draws the same samples.
+  std::uint64_t seedOf(const Vec3& p) const;
   /// Rays cast so far, over all threads.
   std::uint64_t raysCast() const;
 

@@ -79,12 +79,19 @@ double peakMiB()
 
 // The scene as the engine's description (shared with the reference) and every output
 // point with its normal: terrain posts with their area-weighted post normal, polygon
-// points with the area-weighted normal of the polygons around them.
+// points with the area-weighted normal of the polygons around them, or on a crease one
+// normal per side (polygons within 20 degrees of each other), the point's value being
+// the area-weighted mean over its sides (TerraLux's definition of a point's value).
 struct ScenePoints
 {
   vtkRadiosityScene scene;
   std::vector<Vec3> points, normals;
   std::vector<bool> used;
+  /// Extra sides of crease points: (point index, normal, weight); the first side's
+  /// normal is in `normals`, its weight in `firstWeight`.
+  std::vector<std::pair<std::size_t, std::pair<Vec3, double>>> moreSides;
+  std::vector<double> firstWeight;
+  std::vector<Vec3> moreSidePoints; ///< where each extra side is evaluated
 };
 
 void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
@@ -93,6 +100,16 @@ void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
     out.scene.AddDataSet(data, input.reflectance, nullptr, input.emissionArray, true);
   for (const auto& light : input.lights)
     out.scene.AddLight(light);
+  // The ray offset both TerraLux and the reference use: 1e-5 of the scene's diagonal.
+  const double offset = out.scene.Scene.polygons.empty() ? 0.0 : [&]() {
+    Vec3 low(1e300), high(-1e300);
+    for (const Vec3& p : out.scene.Scene.points)
+    {
+      low = glm::min(low, p);
+      high = glm::max(high, p);
+    }
+    return 1e-5 * glm::length(high - low);
+  }();
   for (std::size_t k = 0; k < out.scene.Inputs.size(); ++k)
   {
     const vtkRadiosityScene::Input& in = out.scene.Inputs[k];
@@ -109,7 +126,13 @@ void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
       continue;
     }
     const vtkIdType count = in.data->GetNumberOfPoints();
-    std::vector<Vec3> normals(count, Vec3(0.0));
+    struct Side
+    {
+      Vec3 normalSum;
+      double area;
+      Vec3 centroidSum; // area-weighted centroid of its polygons
+    };
+    std::vector<std::vector<Side>> sides(count);
     for (const terralux::ScenePolygon& polygon : out.scene.Scene.polygons)
     {
       if (polygon.owner != static_cast<int>(k))
@@ -118,17 +141,52 @@ void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
       for (int c = 0; c < polygon.vertexCount; ++c)
         area += glm::cross(out.scene.Scene.points[polygon.vertices[c]],
           out.scene.Scene.points[polygon.vertices[(c + 1) % polygon.vertexCount]]);
+      const double a = 0.5 * glm::length(area);
+      if (!(a > 0.0))
+        continue;
+      const Vec3 n = 0.5 * area / a;
+      Vec3 centroid(0.0);
       for (int c = 0; c < polygon.vertexCount; ++c)
-        normals[polygon.vertices[c] - in.firstPoint] += 0.5 * area;
+        centroid += out.scene.Scene.points[polygon.vertices[c]] / static_cast<double>(polygon.vertexCount);
+      for (int c = 0; c < polygon.vertexCount; ++c)
+      {
+        auto& list = sides[polygon.vertices[c] - in.firstPoint];
+        auto side = std::find_if(
+          list.begin(), list.end(), [&](const Side& s) { return glm::dot(glm::normalize(s.normalSum), n) > 0.94; });
+        if (side == list.end())
+          list.push_back({ a * n, a, a * centroid });
+        else
+        {
+          side->normalSum += a * n;
+          side->area += a;
+          side->centroidSum += a * centroid;
+        }
+      }
     }
     for (vtkIdType p = 0; p < count; ++p)
     {
-      const double length = glm::length(normals[p]);
-      out.points.push_back(out.scene.Scene.points[in.firstPoint + p]);
-      out.normals.push_back(length > 0.0 ? normals[p] / length : Vec3(0, 0, 1));
-      out.used.push_back(length > 0.0);
+      const std::size_t index = out.points.size();
+      const Vec3 point = out.scene.Scene.points[in.firstPoint + p];
+      // Each side is evaluated two ray offsets into its polygons, as TerraLux does: the
+      // limit of the value from inside the face (a junction point lies on the other face).
+      auto into = [&](const Side& side) {
+        const Vec3 toward = side.centroidSum / side.area - point;
+        const double distance = glm::length(toward);
+        return distance > 0.0 ? point + std::min(0.5, 2.0 * offset / distance) * toward : point;
+      };
+      out.points.push_back(sides[p].empty() ? point : into(sides[p][0]));
+      out.used.push_back(!sides[p].empty());
+      out.normals.push_back(sides[p].empty() ? Vec3(0, 0, 1) : glm::normalize(sides[p][0].normalSum));
+      out.firstWeight.resize(out.points.size(), 1.0);
+      if (!sides[p].empty())
+        out.firstWeight[index] = sides[p][0].area;
+      for (std::size_t s = 1; s < sides[p].size(); ++s)
+        out.moreSides.push_back({ index, { glm::normalize(sides[p][s].normalSum), sides[p][s].area } });
+      for (std::size_t s = 1; s < sides[p].size(); ++s)
+        out.moreSidePoints.push_back(into(sides[p][s]));
     }
   }
+  out.firstWeight.resize(out.points.size(), 1.0);
 }
 
 std::vector<terralux_reference::ReferenceSun> sunsOf(const vtkRadiosityScene& scene)
@@ -146,7 +204,52 @@ int computeReference(const terralux_bench::AccuracyScene& input, const std::stri
   const auto start = std::chrono::steady_clock::now();
   const terralux_reference::ReferenceScene reference(s.scene.Scene);
   const terralux_reference::PathTracer tracer(reference, s.scene.Sky.get(), sunsOf(s.scene));
-  const auto estimates = tracer.irradianceAt(s.points, s.normals, samples);
+  auto estimates = tracer.irradianceAt(s.points, s.normals, samples);
+  if (!s.moreSides.empty())
+  {
+    // Crease points: the area-weighted mean over their sides.
+    std::vector<Vec3> points, normals;
+    for (std::size_t m = 0; m < s.moreSides.size(); ++m)
+    {
+      points.push_back(s.moreSidePoints[m]);
+      normals.push_back(s.moreSides[m].second.first);
+    }
+    const auto extra = tracer.irradianceAt(points, normals, samples);
+    std::vector<double> weight(s.points.size());
+    for (std::size_t k = 0; k < s.points.size(); ++k)
+      weight[k] = s.firstWeight[k];
+    auto scale = [](terralux_reference::ReferenceIrradiance& e, double w) {
+      for (auto* c : { &e.sun, &e.sky, &e.reflected, &e.global })
+      {
+        c->mean *= w;
+        c->standardError *= w; // added as variances below
+        c->standardError *= c->standardError;
+      }
+    };
+    for (std::size_t k = 0; k < s.points.size(); ++k)
+      scale(estimates[k], weight[k]);
+    for (std::size_t m = 0; m < extra.size(); ++m)
+    {
+      auto e = extra[m];
+      const std::size_t k = s.moreSides[m].first;
+      scale(e, s.moreSides[m].second.second);
+      weight[k] += s.moreSides[m].second.second;
+      auto* to = &estimates[k];
+      const terralux_reference::Estimate* from[4] = { &e.sun, &e.sky, &e.reflected, &e.global };
+      terralux_reference::Estimate* into[4] = { &to->sun, &to->sky, &to->reflected, &to->global };
+      for (int c = 0; c < 4; ++c)
+      {
+        into[c]->mean += from[c]->mean;
+        into[c]->standardError += from[c]->standardError;
+      }
+    }
+    for (std::size_t k = 0; k < s.points.size(); ++k)
+      for (auto* c : { &estimates[k].sun, &estimates[k].sky, &estimates[k].reflected, &estimates[k].global })
+      {
+        c->mean /= weight[k];
+        c->standardError = std::sqrt(c->standardError) / weight[k];
+      }
+  }
   std::vector<ReferencePoint> values(s.points.size());
   for (std::size_t k = 0; k < values.size(); ++k)
   {

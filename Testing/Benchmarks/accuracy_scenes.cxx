@@ -162,10 +162,11 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
   {
     // (e) An urban canyon: a street between two long blocks, a low sun across it.
     vtkNew<vtkPlaneSource> street;
-    street->SetOrigin(-60, -20, 0);
-    street->SetPoint1(60, -20, 0);
-    street->SetPoint2(-60, 20, 0);
-    street->SetResolution(48, 16);
+    // The street runs between the blocks' walls (its edges are their feet), not under them.
+    street->SetOrigin(-60, -6, 0);
+    street->SetPoint1(60, -6, 0);
+    street->SetPoint2(-60, 6, 0);
+    street->SetResolution(48, 8);
     street->Update();
     auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
     blocks->SetNumberOfBlocks(3);

@@ -5,7 +5,7 @@
 # terrains; each solve in its own process so its peak memory is its own.
 # Writes OUT_DIR/report.json, report.md and the plots (accuracy_report.py).
 # Usage: Testing/Benchmarks/run_accuracy_report.sh [BUILD_DIR] [OUT_DIR] [SCENES...]
-#   TERRALUX_REFERENCE_SAMPLES  directions per point for the reference (default 1024)
+#   TERRALUX_REFERENCE_SAMPLES  directions per point for the reference (default 4096)
 set -euo pipefail
 repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="${1:-${repo_dir}/build}"
@@ -13,7 +13,7 @@ out_dir="${2:-${build_dir}/accuracy}"
 shift $(( $# > 2 ? 2 : $# ))
 scenes=("$@")
 [ "${#scenes[@]}" -gt 0 ] || scenes=(olinda fractal crater canyon box)
-samples="${TERRALUX_REFERENCE_SAMPLES:-1024}"
+samples="${TERRALUX_REFERENCE_SAMPLES:-4096}"
 cmake --build "${build_dir}" --target accuracy_report >/dev/null
 export TERRALUX_DATA_DIR="${repo_dir}/Testing/Data/External"
 mkdir -p "${out_dir}"

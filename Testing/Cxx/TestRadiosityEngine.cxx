@@ -254,9 +254,10 @@ TEST(Radiosity, SkyViewFactorAtTheBottomOfAPit)
     ASSERT_LT(glm::length(leaf->corners()[0] - centre), 1e-12);
     const PointIrradiance atCentre = solver.irradianceAt(*leaf, centre);
     const double expected = std::pow(std::sin(std::atan(1.0 / depth)), 2);
-    EXPECT_NEAR(atCentre.irradiance[SkyLight][0] / expected, 1.0, 0.01) << depth;
+    // Visibility sampled from one point (128 rays a partly seen patch): about 1 % noise.
+    EXPECT_NEAR(atCentre.irradiance[SkyLight][0] / expected, 1.0, 0.02) << depth;
     // The sky view factor is the same fraction, whatever the sky's radiance.
-    EXPECT_NEAR(atCentre.skyViewFactor / expected, 1.0, 0.01) << depth;
+    EXPECT_NEAR(atCentre.skyViewFactor / expected, 1.0, 0.02) << depth;
   }
 }
 
