@@ -2,6 +2,7 @@
 // runaway tolerances, several lights, concave polygons, bright closed scenes,
 // composite structure, NaN parameters, a small object on a huge polygon. Each gives
 // the right answer or an error naming the fix with empty outputs, never a crash.
+#include "test_lights.h"
 #include "vtk_test_support.h"
 
 #include "vtkCellArray.h"
@@ -28,6 +29,8 @@
 
 using terralux_test::MessageCatcher;
 using terralux_test::runPipeline;
+using terralux_test::triangle;
+using terralux_test::uniformSky;
 
 namespace
 {
@@ -52,16 +55,6 @@ vtkSmartPointer<vtkSunSource> userSun(double normalIrradiance, const char* dateT
   sun->SetUserNormalIrradiance(normalIrradiance);
   sun->SetUserDiffuseHorizontalIrradiance(0.0);
   return sun;
-}
-
-vtkSmartPointer<vtkSkySource> uniformSky(double diffuse)
-{
-  auto sky = vtkSmartPointer<vtkSkySource>::New();
-  sky->UseSunSourceOff();
-  sky->SetSkyModelToUniform();
-  sky->SetDiffuseHorizontalIrradiance(diffuse);
-  sky->SetLevels(5);
-  return sky;
 }
 
 // A closed cube of inward faces, triangulated, with cell array Emission.
@@ -117,18 +110,8 @@ TEST(HostileRadiosity, CellPointIdsOutOfRangeAreRefused)
   for (vtkIdType badId : { vtkIdType(7), vtkIdType(1000000000), vtkIdType(-1) })
   {
     SCOPED_TRACE(badId);
-    vtkNew<vtkPoints> points;
-    points->InsertNextPoint(0, 0, 0);
-    points->InsertNextPoint(1, 0, 0);
-    points->InsertNextPoint(0, 1, 0);
-    vtkNew<vtkCellArray> cells;
-    const vtkIdType ids[3] = { 0, 1, badId };
-    cells->InsertNextCell(3, ids);
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetPolys(cells);
     vtkNew<vtkHierarchicalRadiosity> radiosity;
-    radiosity->SetInputData(data);
+    radiosity->SetInputData(triangle({ { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } } }, { 0, 1, badId }));
     radiosity->AddLightConnection(sky->GetOutputPort(0));
     expectRefused(radiosity, "point id " + std::to_string(badId));
   }
@@ -448,18 +431,8 @@ TEST(HostileRadiosity, FuzzFindingsStayFixed)
   auto sky = uniformSky(100.0);
   // A point at 1e199 m: refused, not NaN.
   {
-    vtkNew<vtkPoints> points;
-    points->InsertNextPoint(0, 0, 0);
-    points->InsertNextPoint(10, 0, 0);
-    points->InsertNextPoint(0, 1.2e199, 0);
-    vtkNew<vtkCellArray> cells;
-    const vtkIdType ids[3] = { 0, 1, 2 };
-    cells->InsertNextCell(3, ids);
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetPolys(cells);
     vtkNew<vtkHierarchicalRadiosity> radiosity;
-    radiosity->SetInputData(data);
+    radiosity->SetInputData(triangle({ { { 0, 0, 0 }, { 10, 0, 0 }, { 0, 1.2e199, 0 } } }));
     radiosity->AddLightConnection(sky->GetOutputPort(0));
     expectRefused(radiosity, "huge coordinate");
   }

@@ -1,6 +1,7 @@
 // Sources and writer under hostile and unusual input: rasters of every orientation,
 // rows past the pole, implausible heights, bad boxes, NaN parameters, clear skies at
 // high sites, wrong writer inputs. Right answers or an error naming the fix.
+#include "test_lights.h"
 #include "test_rasters.h"
 #include "vtk_test_support.h"
 
@@ -25,6 +26,7 @@
 using terralux_test::MessageCatcher;
 using terralux_test::RasterSpec;
 using terralux_test::runPipeline;
+using terralux_test::uniformSky;
 using terralux_test::writeRaster;
 
 namespace
@@ -61,16 +63,6 @@ bool allCellsFaceUp(vtkStructuredGrid* grid)
         return false;
     }
   return true;
-}
-
-vtkSmartPointer<vtkSkySource> uniformSky(double diffuse)
-{
-  auto sky = vtkSmartPointer<vtkSkySource>::New();
-  sky->UseSunSourceOff();
-  sky->SetSkyModelToUniform();
-  sky->SetDiffuseHorizontalIrradiance(diffuse);
-  sky->SetLevels(5);
-  return sky;
 }
 
 double rasterValue(const std::string& path, int col, int row)
