@@ -56,18 +56,6 @@ double visibilityToward(HElement& receiver, const Visibility& visibility, int sa
   return counted ? static_cast<double>(visible) / counted : 0.0;
 }
 
-// A direction in a sky patch, distributed like the patch's irradiance on a horizontal
-// plane (density proportional to sin u over dOmega = d(sin u) dv), so sampled visibility
-// weighs directions as the projected solid angle does.
-Vec3 sampleSkyDirection(const SkyPatch& patch, SampleGenerator& random)
-{
-  const double s0 = std::sin(patch.u0()), s1 = std::sin(patch.u1());
-  const double s = std::min(1.0, std::sqrt(s0 * s0 + random.uniform() * (s1 * s1 - s0 * s0)));
-  const double v = patch.v0() + random.uniform() * (patch.v1() - patch.v0());
-  const double c = std::sqrt(1.0 - s * s); // cos u
-  return Vec3(-std::sin(v) * c, -std::cos(v) * c, s); // as directionFromSkyParameters
-}
-
 // The centre twice (it weighs most) and the points halfway to three corners, or the
 // centre and the points halfway to the four corners of a quad.
 std::array<Vec3, 5> receiverPoints(const PolygonElement& p)
@@ -266,9 +254,8 @@ double sampledVisibility(HElement& receiver, HElement& sender, const Visibility&
     }
     case HElement::Kind::SkyPatch:
     {
-      const SkyPatch& range = static_cast<SkyPatchElement&>(sender).patch();
-      return visibilityToward(
-        receiver, visibility, samples, random, [&](int) { return sampleSkyDirection(range, random); });
+      const auto& patch = static_cast<SkyPatchElement&>(sender);
+      return visibilityToward(receiver, visibility, samples, random, [&](int) { return patch.sampleDirection(random); });
     }
     default:
       return visibilityBetween(receiver, sender, visibility, samples, random);
@@ -306,11 +293,11 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
     }
     case HElement::Kind::SkyPatch:
     {
-      const SkyPatch& range = static_cast<SkyPatchElement&>(sender).patch();
-      const double kernel = static_cast<SkyPatchElement&>(sender).kernel(n);
+      const auto& patch = static_cast<SkyPatchElement&>(sender);
+      const double kernel = patch.kernel(n);
       if (!(kernel > 0.0))
         return 0.0;
-      return kernel * seen([&](int) { return sampleSkyDirection(range, random); });
+      return kernel * seen([&](int) { return patch.sampleDirection(random); });
     }
     default:
     {

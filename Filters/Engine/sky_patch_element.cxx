@@ -61,6 +61,56 @@ SkyPatchElement::SkyPatchElement(
     radiance += sky->radiance(patch, band);
   }
   this->RadianceVector = radiance > 0.0 ? weighted / radiance : this->VectorSolidAngle;
+
+  const int finest = sky->finestLevel();
+  if (patch.level < finest)
+  {
+    const int per = 1 << (finest - patch.level);
+    this->CellsPerSide = per;
+    this->CellCdf.resize(static_cast<std::size_t>(per) * per);
+    double sum = 0.0;
+    for (int a = 0; a < per; ++a)
+    {
+      const SkyPatch row{ finest, patch.iu * per + a, 0 };
+      const double weight = 0.5 * (std::pow(std::sin(row.u1()), 2) - std::pow(std::sin(row.u0()), 2));
+      for (int b = 0; b < per; ++b)
+      {
+        const SkyPatch cell{ finest, patch.iu * per + a, patch.iv * per + b };
+        double l = 0.0;
+        for (int band = 0; band < sky->bands(); ++band)
+          l += sky->radiance(cell, band);
+        sum += l * weight;
+        this->CellCdf[static_cast<std::size_t>(a) * per + b] = static_cast<float>(sum);
+      }
+    }
+    if (sum > 0.0)
+      for (float& c : this->CellCdf)
+        c = static_cast<float>(c / sum);
+    else
+      this->CellCdf.clear();
+  }
+}
+
+Vec3 SkyPatchElement::uniformDirection(double u0, double u1, double v0, double v1, SampleGenerator& random)
+{
+  const double s0 = std::sin(u0), s1 = std::sin(u1);
+  const double s = std::min(1.0, std::sqrt(s0 * s0 + random.uniform() * (s1 * s1 - s0 * s0)));
+  const double v = v0 + random.uniform() * (v1 - v0);
+  const double c = std::sqrt(1.0 - s * s); // cos u
+  return Vec3(-std::sin(v) * c, -std::cos(v) * c, s); // as directionFromSkyParameters
+}
+
+Vec3 SkyPatchElement::sampleDirection(SampleGenerator& random) const
+{
+  const SkyPatch& p = this->Patch;
+  if (this->CellCdf.empty())
+    return uniformDirection(p.u0(), p.u1(), p.v0(), p.v1(), random);
+  const float x = static_cast<float>(random.uniform());
+  const std::size_t k = std::min<std::size_t>(
+    std::lower_bound(this->CellCdf.begin(), this->CellCdf.end(), x) - this->CellCdf.begin(), this->CellCdf.size() - 1);
+  const int per = this->CellsPerSide, a = static_cast<int>(k) / per, b = static_cast<int>(k) % per;
+  const double du = (p.u1() - p.u0()) / per, dv = (p.v1() - p.v0()) / per;
+  return uniformDirection(p.u0() + a * du, p.u0() + (a + 1) * du, p.v0() + b * dv, p.v0() + (b + 1) * dv, random);
 }
 
 int SkyPatchElement::sideOf(const Vec3& n) const

@@ -37,6 +37,12 @@ public:
   /// what the radiance map gives it; projectedSolidAngle(n) where the surface's horizon
   /// crosses the patch (the refinement splits such links while they matter).
   double kernel(const Vec3& normal) const;
+  /// A direction in the patch for sampled visibility, distributed like the irradiance
+  /// the patch gives a horizontal plane (radiance x sin u over dOmega): a bright part
+  /// of the patch (the circumsolar sky) that an obstacle hides weighs as much as it
+  /// lights, instead of as much as it spans. Below the sky map's finest level (constant
+  /// radiance), by sin u alone.
+  Vec3 sampleDirection(SampleGenerator& random) const;
   /// projectedSolidAngle(n) / kernel(n) (1 where they agree or kernel is 0): turns
   /// transport into the geometric share the sky view factor counts.
   double geometricShare(const Vec3& normal) const;
@@ -53,7 +59,14 @@ private:
   /// n . d over the patch.
   int sideOf(const Vec3& normal) const;
 
+  /// Sin u-weighted sampling of (sin u, v) over a range of the patch.
+  static Vec3 uniformDirection(double u0, double u1, double v0, double v1, SampleGenerator& random);
+
   Vec3 VectorSolidAngle{ 0.0 };       // integral of d dOmega over the patch
+  /// Over the finest map cells inside the patch (row by row in altitude): cumulative
+  /// horizontal irradiance, normalised; empty below the finest level or for a dark patch.
+  std::vector<float> CellCdf;
+  int CellsPerSide = 1;
   Vec3 RadianceVector{ 0.0 };         // integral of L d dOmega / mean L (bands summed)
   std::vector<HElement*> Children;
 };

@@ -365,6 +365,19 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     }
   }
 
+  // TERRALUX_REPORT_POINTS=FILE: every point's values beside the reference's, as CSV.
+  if (const char* pointsFile = std::getenv("TERRALUX_REPORT_POINTS"))
+  {
+    ScenePoints where;
+    loadScene(input, where);
+    std::ofstream csv(pointsFile);
+    csv << "x,y,z,nx,ny,nz,sun,sky,reflected,global,ref_sun,ref_sky,ref_reflected,ref_global\n";
+    for (std::size_t k = 0; k < n; ++k)
+      csv << where.points[k].x << "," << where.points[k].y << "," << where.points[k].z << "," << where.normals[k].x
+          << "," << where.normals[k].y << "," << where.normals[k].z << "," << value[0][k] << "," << value[1][k] << ","
+          << value[2][k] << "," << value[3][k] << "," << ref[0][k] << "," << ref[1][k] << "," << ref[2][k] << ","
+          << ref[3][k] << "\n";
+  }
   // The floor: one Embree occlusion ray per point toward the sun.
   ScenePoints s;
   loadScene(input, s);
