@@ -105,8 +105,10 @@ std::uint64_t HierarchicalRadiosity::raysCast() const
 
 void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance)
 {
-  // A sun below every surface's horizon still gets its link: the oracle drops it at once.
-  if (largest(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0)
+  // A sun at or below the horizon lights nothing: beyond the scene's edge the ground
+  // would hide it, and inside the scene steep slopes that face it are shadowed anyway;
+  // it gets no element and no links (they would only refine toward edge slopes).
+  if (largest(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
     this->Suns.push_back(this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance));
 }
 

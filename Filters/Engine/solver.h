@@ -76,8 +76,9 @@ public:
   HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options);
   ~HierarchicalRadiosity();
 
-  /// External sources: any number of suns (their light adds up) and one sky (the
-  /// hierarchy must outlive the solver; several skies are summed into one map first).
+  /// External sources: any number of suns (their light adds up; one at or below the
+  /// horizon, direction z <= 0, is ignored) and one sky (the hierarchy must outlive the
+  /// solver; several skies are summed into one map first).
   void addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance);
   void setSky(const SkyHierarchy* sky);
 

@@ -2,6 +2,7 @@
 
 #include "fractal_dem.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -13,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkReverseSense.h"
+#include "vtkSphereSource.h"
 #include "vtkSkySource.h"
 #include "vtkStructuredGrid.h"
 #include "vtkSunSource.h"
@@ -99,8 +101,50 @@ vtkSmartPointer<vtkPolyData> box(double x0, double x1, double y0, double y1, dou
 
 std::vector<std::string> accuracySceneNames()
 {
-  return { "olinda", "fractal", "crater", "canyon", "box" };
+  return { "olinda", "fractal", "crater", "canyon", "box", "house-sky", "house-sun", "olinda-sky", "olinda-black" };
 }
+
+namespace
+{
+// (d) A house and two trees on a small hill (the paper's Figs. 5-8): a terrain grid, a
+// box house and trees as closed triangle meshes (trunk box, crown sphere).
+void houseAndTrees(AccuracyScene& scene, bool withSun)
+{
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  blocks->SetNumberOfBlocks(4);
+  blocks->SetBlock(0, heightField(41, 2.0, [](int i, int j) {
+    const double x = (i - 20) * 2.0, y = (j - 20) * 2.0;
+    return 0.02 * x + 0.01 * y - 0.0004 * (x * x + y * y); // a gentle rise, curved
+  }));
+  blocks->SetBlock(1, box(-5, 5, -4, 4, -1.0, 6.0, 2));
+  auto tree = [](double x, double y) {
+    vtkNew<vtkSphereSource> crown;
+    crown->SetCenter(x, y, 7.0);
+    crown->SetRadius(3.0);
+    crown->SetThetaResolution(16);
+    crown->SetPhiResolution(12);
+    crown->Update();
+    vtkNew<vtkAppendPolyData> both;
+    both->AddInputData(crown->GetOutput());
+    both->AddInputData(box(x - 0.3, x + 0.3, y - 0.3, y + 0.3, -1.0, 4.5, 1));
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(both->GetOutputPort());
+    triangles->Update();
+    auto result = vtkSmartPointer<vtkPolyData>::New();
+    result->DeepCopy(triangles->GetOutput());
+    return result;
+  };
+  blocks->SetBlock(2, tree(12.0, 6.0));
+  blocks->SetBlock(3, tree(-11.0, -9.0));
+  scene.geometry = blocks;
+  scene.lights = { skyMap(vtkSkySource::CIE_GENERAL, 12, 55.0, 160.0, 100.0) };
+  if (withSun)
+    scene.lights.push_back(sunAt(35.0, 160.0, 800.0));
+  scene.reflectance = 0.3;
+  scene.description = std::string("house 10 x 8 x 6 m and two trees on an 80 m hill, CIE 12 sky (100 W/m^2)") +
+    (withSun ? " and sun 35 deg up (800 W/m^2)" : ", sky only") + ", reflectance 0.3";
+}
+} // namespace
 
 AccuracyScene makeAccuracyScene(const std::string& name, const std::string& dataDir)
 {
@@ -133,6 +177,27 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
     scene.reflectance = 0.2;
     scene.terrain = true;
     scene.description = "Olinda SRTM DEM 111 x 111, 2024-08-15 08:30 -03:00, ESRA sun + CIE 12 sky, reflectance 0.2";
+  }
+  else if (name == "house-sky" || name == "house-sun")
+  {
+    houseAndTrees(scene, name == "house-sun");
+  }
+  else if (name == "olinda-sky" || name == "olinda-black")
+  {
+    // Work follows the scene: Olinda with the sun below the horizon (sky alone), or with
+    // every reflectance 0 (no interreflection to compute).
+    scene = makeAccuracyScene("olinda", dataDir);
+    scene.name = name;
+    if (name == "olinda-sky")
+    {
+      scene.lights = { scene.lights[1], sunAt(-5.0, 90.0, 800.0) };
+      scene.description = "Olinda, CIE 12 sky, a sun 5 deg below the horizon";
+    }
+    else
+    {
+      scene.reflectance = 0.0;
+      scene.description = "Olinda as (a), reflectance 0";
+    }
   }
   else if (name == "fractal")
   {

@@ -461,3 +461,50 @@ TEST(HostileRadiosity, FuzzFindingsStayFixed)
     EXPECT_GT(radiosity->GetLeafMeshOutput()->GetNumberOfCells(), 0);
   }
 }
+
+TEST(HostileRadiosity, SunBelowTheHorizonCostsNothing)
+{
+  // Work follows the scene: a user sun 5 deg below the horizon adds no element, link or
+  // light to a sky-lit terrain (it once refined toward the slopes at the DEM's edge).
+  auto sky = uniformSky(100.0);
+  auto solve = [&](bool withSun) {
+    vtkNew<vtkPlaneSource> hills;
+    hills->SetResolution(8, 8);
+    hills->SetOrigin(-100, -100, 0);
+    hills->SetPoint1(100, -100, 0);
+    hills->SetPoint2(-100, 100, 0);
+    hills->Update();
+    vtkNew<vtkPolyData> ground;
+    ground->DeepCopy(hills->GetOutput());
+    for (vtkIdType k = 0; k < ground->GetNumberOfPoints(); ++k)
+    {
+      double p[3];
+      ground->GetPoint(k, p);
+      ground->GetPoints()->SetPoint(k, p[0], p[1], 20.0 * std::sin(p[0] / 30.0) * std::cos(p[1] / 40.0));
+    }
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputData(ground);
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    vtkNew<vtkPolyData> sun;
+    vtkNew<vtkDoubleArray> direction, flux;
+    direction->SetName("SunDirection");
+    for (double c : { 0.0, std::cos(5.0 * M_PI / 180.0), -std::sin(5.0 * M_PI / 180.0) })
+      direction->InsertNextValue(c);
+    flux->SetName("SunNormalIrradiance");
+    flux->InsertNextValue(800.0);
+    sun->GetFieldData()->AddArray(direction);
+    sun->GetFieldData()->AddArray(flux);
+    if (withSun)
+      radiosity->AddInputDataObject(1, sun);
+    radiosity->Update();
+    return vtkSmartPointer<vtkDataObject>(radiosity->GetOutput());
+  };
+  auto without = solve(false), with = solve(true);
+  for (const char* name : { "Elements", "Links" })
+    EXPECT_EQ(with->GetFieldData()->GetArray(name)->GetComponent(0, 0),
+      without->GetFieldData()->GetArray(name)->GetComponent(0, 0)) << name;
+  auto* lit = vtkDataSet::SafeDownCast(with);
+  vtkDataArray* sunIrradiance = lit->GetPointData()->GetArray("SunIrradiance");
+  for (vtkIdType k = 0; k < sunIrradiance->GetNumberOfTuples(); ++k)
+    EXPECT_EQ(sunIrradiance->GetComponent(k, 0), 0.0);
+}
