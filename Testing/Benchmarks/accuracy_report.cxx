@@ -192,8 +192,11 @@ void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
 std::vector<terralux_reference::ReferenceSun> sunsOf(const vtkRadiosityScene& scene)
 {
   std::vector<terralux_reference::ReferenceSun> suns;
+  // As TerraLux defines it, a sun at or below the horizon lights nothing (beyond the
+  // scene's edge the ground would hide it).
   for (const auto& sun : scene.Suns)
-    suns.push_back({ glm::normalize(sun.direction), sun.irradiance[0] });
+    if (sun.direction.z > 0.0)
+      suns.push_back({ glm::normalize(sun.direction), sun.irradiance[0] });
   return suns;
 }
 
@@ -382,10 +385,10 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   ScenePoints s;
   loadScene(input, s);
   double floorSeconds = 0.0;
-  if (!s.scene.Suns.empty())
+  if (!sunsOf(s.scene).empty())
   {
     const terralux_reference::ReferenceScene rays(s.scene.Scene);
-    const Vec3 toward = glm::normalize(s.scene.Suns.front().direction);
+    const Vec3 toward = sunsOf(s.scene).front().direction;
     std::atomic<int> lit{ 0 };
     const auto floorStart = std::chrono::steady_clock::now();
     tbb::parallel_for(std::size_t(0), s.points.size(), [&](std::size_t k) {
