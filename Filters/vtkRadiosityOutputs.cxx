@@ -329,7 +329,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   const double none = std::numeric_limits<double>::quiet_NaN();
   const auto arrays = makeArrays(bands, count, none);
   const vtkSmartPointer<vtkDoubleArray> skyViewFactor =
-    scene.Sky && vtkStructuredGrid::SafeDownCast(input.data) ? skyViewFactorArray(count) : nullptr;
+    scene.Sky && terrainGrid ? skyViewFactorArray(count) : nullptr;
   if (skyViewFactor)
     output->GetPointData()->AddArray(skyViewFactor);
 

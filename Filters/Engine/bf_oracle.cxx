@@ -26,6 +26,20 @@ double relativeSize(const HElement& element, double sceneArea)
   }
   return element.area() / sceneArea;
 }
+
+// Bounding box of a surface or cluster.
+void elementBounds(const HElement& e, Vec3& low, Vec3& high)
+{
+  if (e.isCluster())
+  {
+    low = static_cast<const Cluster&>(e).low();
+    high = static_cast<const Cluster&>(e).high();
+  }
+  else
+  {
+    static_cast<const PolygonElement&>(e).bounds(low, high);
+  }
+}
 } // namespace
 
 // Whether the element's kernels come from a far-field model: clusters, and surfaces
@@ -41,10 +55,8 @@ double approximatedSizeOverDistance(const HElement& receiver, const HElement& se
   auto radius = [](const HElement& e) {
     if (!approximated(e))
       return 0.0;
-    if (e.isCluster())
-      return 0.5 * glm::length(static_cast<const Cluster&>(e).high() - static_cast<const Cluster&>(e).low());
     Vec3 low, high;
-    static_cast<const PolygonElement&>(e).bounds(low, high);
+    elementBounds(e, low, high);
     return 0.5 * glm::length(high - low);
   };
   const double distance = glm::length(sender.centre() - receiver.centre());
@@ -54,19 +66,6 @@ double approximatedSizeOverDistance(const HElement& receiver, const HElement& se
 
 namespace
 {
-void elementBounds(const HElement& e, Vec3& low, Vec3& high)
-{
-  if (e.isCluster())
-  {
-    low = static_cast<const Cluster&>(e).low();
-    high = static_cast<const Cluster&>(e).high();
-  }
-  else
-  {
-    static_cast<const PolygonElement&>(e).bounds(low, high);
-  }
-}
-
 // The one direction all of an element's surfaces face, if they do (planar polygons,
 // flat clusters); false for rough terrain patches and clusters of several orientations.
 bool facingDirection(const HElement& e, Vec3& n)
@@ -112,10 +111,7 @@ double clusterKernelBound(const HElement& receiver, const HElement& sender)
   constexpr double pi = 3.14159265358979323846;
   return d2 > 0.0 ? std::min(1.0, sender.area() / (pi * d2)) : 1.0;
 }
-} // namespace
 
-namespace
-{
 // What a surface or cluster sends now, or could once lit at the scene's mean irradiance.
 double potentialEmittance(const HElement& sender, const OracleSettings& settings)
 {
@@ -138,9 +134,9 @@ bool clusterMayCarryMore(const HElement& receiver, const Link& link, const Oracl
 {
   const HElement& sender = *link.sender;
   // Only where the receiver (or a surface in it) is small beside the sender: between
-  // elements of like size the
-  // near-field rule of decideRefinement refines, and the bound, loose where boxes touch,
-  // would refine every pair of neighbouring clusters on a curved surface.
+  // elements of like size the near-field rule of decideRefinement refines, and the
+  // bound, loose where boxes touch, would refine every pair of neighbouring clusters on
+  // a curved surface.
   if (sender.isExternal() || !(receiver.isCluster() || sender.isCluster()) || !(settings.irradianceThreshold > 0.0) ||
     (receiver.isCluster() ? static_cast<const Cluster&>(receiver).smallestSurfaceArea() : receiver.area()) >
       0.01 * sender.area())

@@ -68,6 +68,8 @@ public:
   /// where it is large the leaf is split so shadows are resolved in space.
   double PartialIrradiance = 0.0;
   double DeferredPartial = 0.0; ///< the part from links evaluated at this leaf (cached)
+  /// Sky view factor from the sky links evaluated at this leaf (cached with LeafKernels).
+  double DeferredSkyView = 0.0;
 
 protected:
   ElementStore* Store;

@@ -150,9 +150,10 @@ int SkyPatchElement::sideOf(const Vec3& n) const
 
 double SkyPatchElement::kernel(const Vec3& normal) const
 {
-  if (this->sideOf(normal) > 0)
+  const int side = this->sideOf(normal);
+  if (side > 0)
     return std::max(0.0, glm::dot(normal, this->RadianceVector));
-  return this->projectedSolidAngle(normal);
+  return side < 0 ? 0.0 : this->straddlingProjection(normal);
 }
 
 double SkyPatchElement::geometricShare(const Vec3& normal) const
@@ -168,8 +169,11 @@ double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
   const int side = this->sideOf(normal);
   if (side > 0)
     return std::max(0.0, glm::dot(normal, this->VectorSolidAngle));
-  if (side < 0)
-    return 0.0;
+  return side < 0 ? 0.0 : this->straddlingProjection(normal);
+}
+
+double SkyPatchElement::straddlingProjection(const Vec3& normal) const
+{
   // The surface's horizon crosses the patch. With s = sin u (dOmega = ds dv) and
   // n . d = n_z s - sqrt(1 - s^2) h cos(v - phi), each row of constant s integrates
   // max(0, n . d) over v in closed form; the rows are summed by Gauss-Legendre over s,

@@ -58,6 +58,8 @@ private:
   /// normal n through the receiver, or straddles its horizon (0): the exact extremes of
   /// n . d over the patch.
   int sideOf(const Vec3& normal) const;
+  /// Integral of max(0, n . d) dOmega over a patch that straddles the plane's horizon.
+  double straddlingProjection(const Vec3& normal) const;
 
   /// Sin u-weighted sampling of (sin u, v) over a range of the patch.
   static Vec3 uniformDirection(double u0, double u1, double v0, double v1, SampleGenerator& random);

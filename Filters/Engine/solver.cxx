@@ -435,6 +435,7 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, const V
     polygon.LeafKernels.resize(task.count);
     polygon.LeafKernelPartial.assign(task.count, 0);
     polygon.DeferredPartial = 0.0;
+    polygon.DeferredSkyView = 0.0;
     for (std::size_t k = 0; k < task.count; ++k)
     {
       const DeferredLink& item = deferred[k];
@@ -460,6 +461,7 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, const V
       polygon.LeafKernelPartial[k] = partial;
       if (partial)
         polygon.DeferredPartial += polygon.LeafKernels[k] * largest(link.sender->emittance());
+      polygon.DeferredSkyView += skyViewOf(*link.sender, polygon.normal(), polygon.LeafKernels[k]);
     }
     polygon.LeafKernelKeys = std::move(keys);
   }
@@ -471,8 +473,8 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, const V
     const int category = lightCategoryOf(*link.sender);
     for (int band = 0; band < maxBands; ++band)
       irradiance[category][band] += transport * e[band];
-    skyView += skyViewOf(*link.sender, polygon.normal(), transport);
   }
+  skyView += polygon.DeferredSkyView;
   polygon.Irradiance = irradiance;
   polygon.SkyViewFactor = skyView;
   polygon.PartialIrradiance = task.inherited.partial + polygon.DeferredPartial;
