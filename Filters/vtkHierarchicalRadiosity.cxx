@@ -73,6 +73,8 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   : ErrorTolerance(1e-3)
   , MinimumElementArea(0.0)
   , VisibilitySamples(4)
+  , MaximumGatherRays(1024)
+  , GatherError(0.003)
   , MaximumIterations(30)
   , ConvergenceTolerance(1e-3)
   , MaximumNumberOfElements(1000000)
@@ -239,7 +241,7 @@ int vtkHierarchicalRadiosity::Solve(
 {
   terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
     { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
-    { "DefaultReflectance", this->DefaultReflectance } });
+    { "DefaultReflectance", this->DefaultReflectance }, { "GatherError", this->GatherError } });
   vtkRadiosityScene scene;
   const std::vector<vtkDataSet*> inputs = inputDataSets(inputVector[0]);
   for (vtkDataSet* input : inputs)
@@ -260,6 +262,8 @@ int vtkHierarchicalRadiosity::Solve(
   options.errorTolerance = this->ErrorTolerance;
   options.minimumElementArea = this->MinimumElementArea;
   options.visibilitySamples = this->VisibilitySamples;
+  options.gatherSamples = this->MaximumGatherRays;
+  options.gatherError = this->GatherError;
   options.maximumIterations = this->MaximumIterations;
   options.convergenceTolerance = this->ConvergenceTolerance;
   options.maximumElements = static_cast<std::size_t>(this->MaximumNumberOfElements);
@@ -377,6 +381,8 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ErrorTolerance: " << this->ErrorTolerance << "\n";
   os << indent << "MinimumElementArea: " << this->MinimumElementArea << "\n";
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
+  os << indent << "MaximumGatherRays: " << this->MaximumGatherRays << "\n";
+  os << indent << "GatherError: " << this->GatherError << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";

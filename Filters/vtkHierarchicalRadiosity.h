@@ -97,6 +97,30 @@ public:
 
   ///@{
   /**
+   * Set/Get the most rays per point of the final gather that gives, with
+   * EvaluateAtPoints on, the sky and the light from surfaces at each point: rays from
+   * the point meet the solved leaves (their radiosity, with direct sunlight taken at
+   * the hit itself) or the sky (open sky of the point's plane, exact, minus what the
+   * rays find hidden). A pilot of 64 rays decides how many, from 64 to this, bring
+   * the standard error below GatherError x the point's irradiance. 0 re-evaluates the
+   * hierarchy's links at each point instead (faster, less accurate in rough terrain).
+   * Default is 1024.
+   */
+  vtkSetClampMacro(MaximumGatherRays, int, 0, 1 << 20);
+  vtkGetMacro(MaximumGatherRays, int);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the standard error the final gather aims at, as a fraction of each
+   * point's irradiance. Default is 0.003.
+   */
+  vtkSetClampMacro(GatherError, double, 1e-6, 1.0);
+  vtkGetMacro(GatherError, double);
+  ///@}
+
+  ///@{
+  /**
    * Set/Get the most gather / push-pull iterations. Default is 30.
    */
   vtkSetClampMacro(MaximumIterations, int, 1, 100000);
@@ -247,6 +271,8 @@ protected:
   double ErrorTolerance;
   double MinimumElementArea;
   int VisibilitySamples;
+  int MaximumGatherRays;
+  double GatherError;
   int MaximumIterations;
   double ConvergenceTolerance;
   vtkIdType MaximumNumberOfElements;

@@ -3,6 +3,7 @@
 #include "point_form_factor.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace terralux
 {
@@ -77,6 +78,39 @@ const std::vector<HElement*>& PolygonElement::children()
     kid->Parent = this;
   }
   return this->Children;
+}
+
+const PolygonElement* PolygonElement::leafHolding(const Vec3& p) const
+{
+  const PolygonElement* element = this;
+  while (!element->Children.empty())
+  {
+    const PolygonElement* deepest = nullptr;
+    double best = -std::numeric_limits<double>::infinity();
+    for (const HElement* child : element->Children)
+    {
+      const auto* part = static_cast<const PolygonElement*>(child);
+      // Smallest signed distance of p inside the part's edges (all corners share the plane).
+      double margin = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < part->Count; ++k)
+      {
+        const Vec3& a = part->Corners[k];
+        const Vec3 edge = part->Corners[(k + 1) % part->Count] - a;
+        const double length = glm::length(edge);
+        if (length > 0.0)
+          margin = std::min(margin, glm::dot(glm::cross(edge, p - a), part->Normal) / length);
+      }
+      if (margin > best)
+      {
+        best = margin;
+        deepest = part;
+      }
+    }
+    if (!deepest)
+      break;
+    element = deepest;
+  }
+  return element;
 }
 
 SurfaceSample PolygonElement::sample(int k, int n, SampleGenerator& random) const

@@ -26,6 +26,10 @@ public:
   const std::vector<HElement*>& children() override;
   bool canSplit() const override { return this->Area >= 4.0 * this->Store->MinimumArea; }
   bool hasChildren() const { return !this->Children.empty(); }
+  /// The leaf below this element that holds point p of its plane: at each level the
+  /// child p lies deepest inside (so a point on a shared edge, or just off the
+  /// polygon by rounding, still finds one).
+  const PolygonElement* leafHolding(const Vec3& p) const;
   SurfaceSample sample(int k, int n, SampleGenerator& random) const override;
   double receiverFactor(const Vec3& towardSender) const override;
   /// Form factor from a differential area at x with unit normal n to this surface

@@ -47,6 +47,11 @@ public:
   /// transport into the geometric share the sky view factor counts.
   double geometricShare(const Vec3& normal) const;
 
+  /// Whether the patch lies wholly in front of (+1), wholly behind (-1) a plane of unit
+  /// normal n through the receiver, or straddles its horizon (0): the exact extremes of
+  /// n . d over the patch.
+  int sideOf(const Vec3& normal) const;
+
 private:
   ElementStore* Store;
   const SkyHierarchy* Sky;
@@ -54,10 +59,6 @@ private:
   Spectrum Radiance{};
   double SolidAngle;
   Vec3 Direction;
-  /// Whether the patch lies wholly in front of (+1), wholly behind (-1) a plane of unit
-  /// normal n through the receiver, or straddles its horizon (0): the exact extremes of
-  /// n . d over the patch.
-  int sideOf(const Vec3& normal) const;
   /// Integral of max(0, n . d) dOmega over a patch that straddles the plane's horizon.
   double straddlingProjection(const Vec3& normal) const;
 

@@ -3,6 +3,8 @@
 #include "bf_oracle.h"
 #include "cluster.h"
 #include "error.h"
+#include "final_gather.h"
+#include "open_sky.h"
 #include "link_transport.h"
 #include "polygon_element.h"
 #include "sky_hierarchy.h"
@@ -41,10 +43,11 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
   : Options(options)
   , Store(std::make_unique<ElementStore>())
 {
-  if (options.visibilitySamples < 1 || options.maximumIterations < 1 || !(options.errorTolerance > 0.0))
+  if (options.visibilitySamples < 1 || options.maximumIterations < 1 || !(options.errorTolerance > 0.0) ||
+    options.gatherSamples < 0 || !(options.gatherError > 0.0))
   {
-    throw Error("radiosity options: VisibilitySamples and MaximumIterations must be >= 1 and "
-                "ErrorTolerance > 0");
+    throw Error("radiosity options: VisibilitySamples and MaximumIterations must be >= 1, "
+                "ErrorTolerance > 0, MaximumGatherRays >= 0 and GatherError > 0");
   }
   std::vector<PolygonElement*>& polygons = this->TopSurfaces;
   this->Roots.assign(scene.polygons.size(), nullptr);
@@ -93,6 +96,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
 
   const auto start = std::chrono::steady_clock::now();
   this->Rays = std::make_unique<Visibility>(scene);
+  this->Gather = std::make_unique<FinalGather>(*this->Rays, this->Roots, this->TerrainRoots, this->Suns);
   this->Stats.secondsVisibilityBuild = secondsSince(start);
 }
 
@@ -115,6 +119,8 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
 {
   this->Sky = sky;
+  this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
+  this->Gather->setSky(this->SkyAtPoints.get());
   this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
 }
 
@@ -546,82 +552,6 @@ double HierarchicalRadiosity::pushPull(double extrapolation)
   this->Stats.referencePowerW = std::max(this->Stats.referencePowerW, incident);
   this->LargestRadiosity = radiosity;
   return change;
-}
-
-PointIrradiance HierarchicalRadiosity::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
-{
-  return this->irradianceAt(leaf, point, leaf.normal());
-}
-
-PointIrradiance HierarchicalRadiosity::irradianceAt(
-  const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const
-{
-  PointIrradiance result;
-  auto& irradiance = result.irradiance;
-  // Visibility from a point is noisier than over an element: many more samples where
-  // the element saw the sender only in part; as many as the link had where it saw all
-  // of it (more there halved nothing but the speed: Olinda's error moved from 0.134 to
-  // 0.141 % at tolerance 1e-3 while point evaluation took 40 % less time).
-  const int partialSamples = 8 * this->Options.visibilitySamples;
-  const int clearSamples = this->Options.visibilitySamples;
-  // Seeded by the point itself: points sharing a leaf (posts inside a terrain patch)
-  // must not share their jitter, or the noise would be the same pattern at each.
-  std::uint64_t salt = this->Rays->seedOf(point) ^ (leaf.id() * 31);
-  // A point on the leaf's border is the limit from inside the leaf: at a concave
-  // junction (a wall's foot, a box's corner) the point itself lies in the plane of the
-  // other surface, which it would see edge-on with a form factor of 0, and rays that
-  // skip their first offset would skip that surface too. So the point moves two ray
-  // offsets into its leaf (at most half way to the leaf's centre).
-  const Vec3 toCentre = leaf.centre() - point;
-  const double distance = glm::length(toCentre);
-  const Vec3 inside = distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays->offset() / distance) * toCentre : point;
-  for (const HElement* element = &leaf; element; element = element->Parent)
-  {
-    for (const Link& link : element->Incoming)
-    {
-      if (link.sender->kind() == HElement::Kind::Sun)
-        continue; // direct sun is taken below, by a ray from the point itself
-      const std::uint64_t seed = linkSeed(salt++, link.sender->id());
-      // Sky visibility from the point itself: a ray that starts on a wall's plane skips
-      // it and then meets the building from inside, so the sky is judged right whatever
-      // leaf holds the point; form factors need the point inside its leaf.
-      const Vec3& from = link.sender->kind() == HElement::Kind::SkyPatch ? point : inside;
-      const double transport = transportToPoint(
-        from, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
-      const Spectrum e = link.sender->emittance();
-      const int category = lightCategoryOf(*link.sender);
-      for (int band = 0; band < maxBands; ++band)
-        irradiance[category][band] += transport * e[band];
-      // Sky links cover the whole sky once: their projected solid angles, seen, over pi.
-      result.skyViewFactor += skyViewOf(*link.sender, normal, transport);
-    }
-  }
-  // Direct sun is what a ray from just above the point sees, whatever leaf the point
-  // was assigned to and whether or not the links there still hold the sun (a shadowed
-  // element's sun link is dropped, yet its border posts may be lit).
-  irradiance[SunLight] = this->directSunAt(point, normal);
-  return result;
-}
-
-Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal) const
-{
-  Spectrum result{};
-  for (HElement* sun : this->Suns)
-  {
-    const double transport = transportToPoint(point, normal, *sun, *this->Rays, 1, 0);
-    const Spectrum flux = sun->emittance();
-    for (int band = 0; band < maxBands; ++band)
-      result[band] += transport * flux[band];
-  }
-  return result;
-}
-
-void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,
-  const std::vector<Vec3>& points, const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const
-{
-  results.resize(points.size());
-  tbb::parallel_for(std::size_t(0), points.size(),
-    [&](std::size_t k) { results[k] = this->irradianceAt(*leaves[k], points[k], normals[k]); });
 }
 
 std::size_t HierarchicalRadiosity::splitLeaves(const std::vector<PolygonElement*>& leaves)

@@ -14,6 +14,8 @@
 namespace terralux
 {
 class Cluster;
+class FinalGather;
+class OpenSky;
 class PolygonElement;
 class SkyHierarchy;
 class TerrainPatch;
@@ -31,6 +33,12 @@ struct RadiosityOptions
   /// solution is then coarser than errorTolerance asks, and
   /// statistics().elementBudgetReached says so).
   std::size_t maximumElements = 1000000;
+  /// Sky and light from surfaces at points come from a final gather over the solved
+  /// leaves (FinalGather): as many rays, from 64 to gatherSamples, as a pilot of 64
+  /// says bring the standard error below gatherError x the point's irradiance.
+  /// gatherSamples 0 re-evaluates the links that reach the point's leaf instead.
+  int gatherSamples = 1024;
+  double gatherError = 0.003;
 };
 
 struct RadiosityStatistics
@@ -132,6 +140,8 @@ private:
   RadiosityOptions Options;
   std::unique_ptr<ElementStore> Store;
   std::unique_ptr<Visibility> Rays;
+  std::unique_ptr<FinalGather> Gather;
+  std::unique_ptr<OpenSky> SkyAtPoints;
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on

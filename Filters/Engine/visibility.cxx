@@ -5,6 +5,8 @@
 
 #include <embree3/rtcore.h>
 #include <tbb/enumerable_thread_specific.h>
+#include <utility>
+#include <vector>
 
 #include <algorithm>
 #include <cmath>
@@ -58,9 +60,9 @@ Visibility::Visibility(const RadiosityScene& scene)
   }
   this->Offset = std::max(1e-9, 1e-5 * glm::length(high - low));
   this->Centre = scene.terrains.empty() ? 0.5 * (low + high) : scene.terrains.front()->origin();
-  for (const TerrainGrid* terrain : scene.terrains)
+  for (std::size_t t = 0; t < scene.terrains.size(); ++t)
   {
-    this->addTerrain(*terrain);
+    this->addTerrain(*scene.terrains[t], static_cast<int>(t));
   }
   if (!scene.polygons.empty())
   {
@@ -73,7 +75,7 @@ Visibility::Visibility(const RadiosityScene& scene)
   }
 }
 
-void Visibility::addTerrain(const TerrainGrid& terrain)
+void Visibility::addTerrain(const TerrainGrid& terrain, int terrainIndex)
 {
   // Rectangles of valid cells, merged greedily: runs of valid cells in a row grow down
   // the rows while the next row has the same run. Embree limits a grid to 32767 posts a side.
@@ -140,6 +142,8 @@ void Visibility::addTerrain(const TerrainGrid& terrain)
       for (int c = 0; c < 3; ++c)
         vertices[3 * k + c] = static_cast<float>(terrain.vertices()[3 * k + c] + shift[c]);
   }
+  GeometryOrigin origin;
+  origin.terrain = terrainIndex;
   auto* grids = static_cast<RTCGrid*>(rtcSetNewGeometryBuffer(
     geometry, RTC_BUFFER_TYPE_GRID, 0, RTC_FORMAT_GRID, sizeof(RTCGrid), rectangles.size()));
   if (!grids)
@@ -154,9 +158,14 @@ void Visibility::addTerrain(const TerrainGrid& terrain)
     grids[k].stride = static_cast<unsigned>(terrain.postsX());
     grids[k].width = static_cast<unsigned short>(r.i1 - r.i0 + 1);
     grids[k].height = static_cast<unsigned short>(r.j1 - r.j0 + 1);
+    origin.gridStarts.emplace_back(r.i0, r.j0);
+    origin.gridSizes.emplace_back(r.i1 - r.i0, r.j1 - r.j0);
   }
   rtcCommitGeometry(geometry);
-  rtcAttachGeometry(this->Scene, geometry);
+  const unsigned id = rtcAttachGeometry(this->Scene, geometry);
+  if (this->Origins.size() <= id)
+    this->Origins.resize(id + 1);
+  this->Origins[id] = std::move(origin);
   rtcReleaseGeometry(geometry);
 }
 
@@ -185,17 +194,23 @@ void Visibility::addPolygons(const RadiosityScene& scene)
     }
   }
   std::size_t t = 0;
-  for (const ScenePolygon& polygon : scene.polygons)
+  this->TrianglePolygon.resize(triangleCount);
+  for (std::size_t p = 0; p < scene.polygons.size(); ++p)
   {
+    const ScenePolygon& polygon = scene.polygons[p];
     for (int k = 1; k + 1 < polygon.vertexCount; ++k, ++t)
     {
+      this->TrianglePolygon[t] = static_cast<int>(p);
       indices[3 * t + 0] = static_cast<unsigned>(polygon.vertices[0]);
       indices[3 * t + 1] = static_cast<unsigned>(polygon.vertices[k]);
       indices[3 * t + 2] = static_cast<unsigned>(polygon.vertices[k + 1]);
     }
   }
   rtcCommitGeometry(geometry);
-  rtcAttachGeometry(this->Scene, geometry);
+  const unsigned id = rtcAttachGeometry(this->Scene, geometry);
+  if (this->Origins.size() <= id)
+    this->Origins.resize(id + 1);
+  this->Origins[id] = GeometryOrigin{};
   rtcReleaseGeometry(geometry);
 }
 
@@ -245,6 +260,56 @@ bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, con
   // The ray also starts one offset along itself: a point where two surfaces meet (the
   // foot of a wall) lifted off one of them may still lie on the other.
   return castOcclusion(this->Scene, from - this->Centre, d / length, this->Offset, length - this->Offset);
+}
+
+bool Visibility::firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, SurfaceHit& hit) const
+{
+  ++this->Rays->perThread.local();
+  const Vec3 origin = a + this->Offset * aNormal - this->Centre;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit query;
+  query.ray.org_x = static_cast<float>(origin.x);
+  query.ray.org_y = static_cast<float>(origin.y);
+  query.ray.org_z = static_cast<float>(origin.z);
+  query.ray.dir_x = static_cast<float>(d.x);
+  query.ray.dir_y = static_cast<float>(d.y);
+  query.ray.dir_z = static_cast<float>(d.z);
+  // From the lifted origin on: a scene-relative offset can exceed small objects (a 1 m
+  // box on 100 km of ground lifts rays by 1.4 m), and skipping it would miss the
+  // ground just below a wall.
+  query.ray.tnear = 0.0f;
+  query.ray.tfar = std::numeric_limits<float>::infinity();
+  query.ray.time = 0.0f;
+  query.ray.mask = 0xFFFFFFFFu;
+  query.ray.id = 0;
+  query.ray.flags = 0;
+  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(this->Scene, &context, &query);
+  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID || query.hit.geomID >= this->Origins.size())
+    return false;
+  const GeometryOrigin& source = this->Origins[query.hit.geomID];
+  hit = SurfaceHit{};
+  hit.point = origin + static_cast<double>(query.ray.tfar) * d + this->Centre;
+  const Vec3 ng(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
+  const double length = glm::length(ng);
+  if (length > 0.0)
+    hit.normal = ng / length;
+  if (source.terrain >= 0)
+  {
+    // Grid u, v run over [0, 1] across the whole grid of posts.
+    const auto [i0, j0] = source.gridStarts[query.hit.primID];
+    const auto [cellsU, cellsV] = source.gridSizes[query.hit.primID];
+    hit.terrain = source.terrain;
+    hit.u = i0 + std::clamp(static_cast<double>(query.hit.u), 0.0, 1.0) * cellsU;
+    hit.v = j0 + std::clamp(static_cast<double>(query.hit.v), 0.0, 1.0) * cellsV;
+  }
+  else
+  {
+    hit.polygon = this->TrianglePolygon[query.hit.primID];
+  }
+  return true;
 }
 
 std::uint64_t Visibility::seedOf(const Vec3& p) const

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 struct RTCDeviceTy;
 struct RTCSceneTy;
@@ -14,6 +15,17 @@ struct RTCSceneTy;
 namespace terralux
 {
 class TerrainGrid;
+
+/// The surface a ray meets first: a terrain (its index in RadiosityScene::terrains and
+/// the grid parameter of the hit, in post units) or an input polygon (its index).
+struct SurfaceHit
+{
+  int terrain = -1;
+  int polygon = -1;
+  double u = 0.0, v = 0.0;
+  Vec3 point{ 0.0 };
+  Vec3 normal{ 0.0, 0.0, 1.0 }; ///< unit normal of the triangle met, either side
+};
 
 class Visibility
 {
@@ -34,6 +46,9 @@ public:
   /// True when the ray from surface point a (unit normal aNormal) along unit direction
   /// d hits anything.
   bool occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const;
+  /// The first surface the ray from surface point a (unit normal aNormal) along unit
+  /// direction d meets, from a lifted by offset() along aNormal; false when it escapes.
+  bool firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, SurfaceHit& hit) const;
   /// Offset (metres) of ray ends: 1e-5 of the scene's bounding diagonal.
   double offset() const { return this->Offset; }
   /// A seed for samples that belong to a point: its position relative to the scene,
@@ -44,8 +59,19 @@ public:
   std::uint64_t raysCast() const;
 
 private:
-  void addTerrain(const TerrainGrid& terrain);
+  void addTerrain(const TerrainGrid& terrain, int terrainIndex);
   void addPolygons(const RadiosityScene& scene);
+
+  // What each Embree geometry id stands for: a terrain's index and the first post of
+  // each of its grids, or (terrain -1) the polygons, with the polygon of each triangle.
+  struct GeometryOrigin
+  {
+    int terrain = -1;
+    std::vector<std::pair<int, int>> gridStarts; // (i0, j0) per grid
+    std::vector<std::pair<int, int>> gridSizes;  // (cells in u, cells in v) per grid
+  };
+  std::vector<GeometryOrigin> Origins;
+  std::vector<int> TrianglePolygon;
 
   RTCDeviceTy* Device = nullptr;
   RTCSceneTy* Scene = nullptr;

@@ -1,0 +1,151 @@
+#include "final_gather.h"
+
+#include "link_transport.h"
+#include "open_sky.h"
+#include "sampling.h"
+#include "terrain_patch.h"
+#include "visibility.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace terralux
+{
+Vec3 cosineWeightedDirection(const Vec3& n, double s, double t)
+{
+  const Vec3 a = std::abs(n.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
+  const Vec3 u = glm::normalize(glm::cross(a, n));
+  const Vec3 v = glm::cross(n, u);
+  constexpr double twoPi = 6.28318530717958647692;
+  const double r = std::sqrt(s), phi = twoPi * t;
+  return glm::normalize(r * std::cos(phi) * u + r * std::sin(phi) * v + std::sqrt(std::max(0.0, 1.0 - s)) * n);
+}
+
+FinalGather::FinalGather(const Visibility& rays, const std::vector<PolygonElement*>& polygons,
+  const std::vector<TerrainPatch*>& terrains, const std::vector<HElement*>& suns)
+  : Rays(rays)
+  , Polygons(polygons)
+  , Terrains(terrains)
+  , Suns(suns)
+{
+}
+
+Spectrum FinalGather::radiosityAt(const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front) const
+{
+  const auto& e = leaf.Irradiance;
+  Spectrum sun{};
+  for (HElement* source : this->Suns)
+  {
+    const double transport = transportToPoint(hit.point, front, *source, this->Rays, 1, 0);
+    for (int band = 0; band < maxBands; ++band)
+      sun[band] += transport * source->emittance()[band];
+  }
+  Spectrum b;
+  for (int band = 0; band < maxBands; ++band)
+    b[band] =
+      leaf.emission()[band] + leaf.reflectance()[band] * (sun[band] + e[SkyLight][band] + e[ReflectedLight][band]);
+  return b;
+}
+
+const PolygonElement* FinalGather::leafAt(const SurfaceHit& hit) const
+{
+  if (hit.terrain >= 0)
+  {
+    const auto t = static_cast<std::size_t>(hit.terrain);
+    return t < this->Terrains.size() && this->Terrains[t] ? this->Terrains[t]->leafHolding(hit.u, hit.v) : nullptr;
+  }
+  const auto p = static_cast<std::size_t>(hit.polygon);
+  return p < this->Polygons.size() && this->Polygons[p] ? this->Polygons[p]->leafHolding(hit.point) : nullptr;
+}
+
+GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget,
+  std::uint64_t seed, double directIrradiance, bool surfacesSend) const
+{
+  GatheredLight result;
+  constexpr double pi = 3.14159265358979323846;
+  Spectrum open{};
+  double openOmega = 0.0;
+  if (this->Sky)
+    this->Sky->irradiance(normal, open, openOmega);
+  Spectrum hidden{}, surfaces{};
+  int hiddenSky = 0, n = 0;
+  // Each ray's share of the point's irradiance beyond the open sky (largest
+  // band): what it meets minus the sky it hides; its spread decides when to
+  // stop.
+  double sum = 0.0, sumOfSquares = 0.0;
+  // A pilot of budget.pilot rays of their own sets how many rays the point
+  // needs (their standard error, as for independent rays, against the
+  // irradiance it receives); the estimate then comes from that many fresh
+  // stratified rays. Rays that decided when to stop would be biased: they stop
+  // early where they happened to miss a bright hit.
+  auto cast = [&](int count, SampleGenerator& random)
+  {
+    sum = sumOfSquares = 0.0;
+    hidden = surfaces = Spectrum{};
+    hiddenSky = 0;
+    for (int k = 0; k < count; ++k)
+    {
+      double s, t;
+      stratifiedPoint(k, count, random, s, t);
+      const Vec3 d = cosineWeightedDirection(normal, s, t);
+      SurfaceHit hit;
+      if (!this->Rays.firstHit(point, normal, d, hit))
+        continue;
+      double value = 0.0;
+      if (this->Sky && d.z > 0.0)
+      {
+        const Spectrum l = this->Sky->radiance(d);
+        for (int band = 0; band < maxBands; ++band)
+          hidden[band] += l[band];
+        ++hiddenSky;
+        value -= pi * std::max({ l[0], l[1], l[2] });
+      }
+      const PolygonElement* leaf = surfacesSend ? this->leafAt(hit) : nullptr;
+      if (leaf)
+      {
+        // The triangle's own normal, turned to the side its leaf faces; the
+        // back of a one-sided surface sends nothing.
+        const Vec3 front = glm::dot(hit.normal, leaf->normal()) < 0.0 ? -hit.normal : hit.normal;
+        if (glm::dot(front, d) < 0.0)
+        {
+          const Spectrum b = this->radiosityAt(*leaf, hit, front);
+          for (int band = 0; band < maxBands; ++band)
+            surfaces[band] += b[band];
+          value += std::max({ b[0], b[1], b[2] });
+        }
+      }
+      sum += value;
+      sumOfSquares += value * value;
+    }
+  };
+  SampleGenerator pilotRandom(seed ^ 0x5851F42D4C957F2Dull), random(seed);
+  int count = budget.maximum;
+  if (budget.pilot > 0 && budget.minimum < budget.maximum)
+  {
+    cast(budget.pilot, pilotRandom);
+    const double mean = sum / budget.pilot;
+    const double variance = std::max(0.0, sumOfSquares / budget.pilot - mean * mean);
+    const double received = directIrradiance + std::max({ open[0], open[1], open[2] }) + mean;
+    const double target = budget.relativeError * std::max(received, 1e-12);
+    // A whole square of strata: a partly filled last row would leave a band of the
+    // hemisphere unsampled.
+    const double needed =
+      std::clamp<double>(std::ceil(variance / (target * target)), budget.minimum, budget.maximum);
+    const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
+    count = side * side;
+  }
+  cast(count, random);
+  n = count;
+  // E = pi x the mean radiance over cosine-weighted directions: the mean
+  // radiosity.
+  for (int band = 0; band < maxBands; ++band)
+  {
+    result.surfaces[band] = surfaces[band] / n;
+    result.sky[band] = std::max(0.0, open[band] - pi * hidden[band] / n);
+  }
+  if (this->Sky)
+    result.skyViewFactor = std::max(0.0, openOmega / pi - static_cast<double>(hiddenSky) / n);
+  result.rays = n;
+  return result;
+}
+} // namespace terralux

@@ -1,0 +1,82 @@
+#pragma once
+// Final gather (Reichert 1992; Lischinski, Tampieri & Greenberg 1993): light that
+// surfaces send to a point, taken from the solved radiosity of the leaves its rays
+// meet. The hierarchy's links bound each exchange against a threshold, so the many small
+// exchanges between nearby slopes of a rough terrain, each below it, add up to a
+// large loss (a third of the reflected light on the fractal scene of the accuracy
+// report); a ray from the point sees all of them at the scene's full resolution.
+
+#include "radiosity_types.h"
+
+namespace terralux
+{
+class HElement;
+class OpenSky;
+class PolygonElement;
+class TerrainPatch;
+class Visibility;
+
+/// What a point receives from the sky and from surfaces, by the same rays.
+struct GatheredLight
+{
+  Spectrum surfaces{};
+  Spectrum sky{};
+  double skyViewFactor = 0.0;
+  int rays = 0;
+};
+
+/// How many rays a point takes: as many as a pilot of `pilot` rays says bring the
+/// standard error of what they add below relativeError x the point's irradiance,
+/// between `minimum` and `maximum` (pilot 0: always maximum).
+struct GatherBudget
+{
+  int pilot = 64;
+  int minimum = 64;
+  int maximum = 1024;
+  double relativeError = 0.003;
+};
+
+class FinalGather
+{
+public:
+  /// The roots of the input polygons and of the terrains (null entries allowed), as
+  /// the solver holds them; their leaves' radiosity is read at each gather.
+  FinalGather(const Visibility& rays, const std::vector<PolygonElement*>& polygons,
+    const std::vector<TerrainPatch*>& terrains, const std::vector<HElement*>& suns);
+
+  /// Irradiance (W/m^2) at a point with unit normal from the surfaces it sees: the mean
+  /// radiosity met by stratified cosine-weighted rays (the fronts of surfaces only: a
+  /// one-sided surface sends nothing from its back), as many as `budget` asks for
+  /// against directIrradiance (the sun at the point) plus the rest. `seed` makes it
+  /// repeatable.
+  ///
+  /// What a hit sends is its leaf's radiosity except for direct sunlight, the sharpest
+  /// part of it: that is taken at the hit itself, with its own triangle's cosine and a
+  /// shadow ray (a leaf of several cells of a rough terrain averages slopes the
+  /// grazing sun lights very differently).
+  ///
+  /// With a sky (setSky), the same rays give the sky at the point as the open sky of its
+  /// plane (exact, OpenSky) minus the sky's radiance toward the rays that meet the
+  /// scene, and the sky view factor likewise. `surfacesSend` false skips what surfaces
+  /// send (every radiosity 0).
+  GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
+    double directIrradiance, bool surfacesSend = true) const;
+  void setSky(const OpenSky* sky) { this->Sky = sky; }
+
+  /// The leaf a ray's hit lies on (null where nothing solved is there).
+  const PolygonElement* leafAt(const struct SurfaceHit& hit) const;
+  /// Radiosity leaving a hit on `leaf`, its direct sunlight taken at the hit.
+  Spectrum radiosityAt(const PolygonElement& leaf, const struct SurfaceHit& hit, const Vec3& front) const;
+
+private:
+  const Visibility& Rays;
+  const std::vector<PolygonElement*>& Polygons;
+  const std::vector<TerrainPatch*>& Terrains;
+  const std::vector<HElement*>& Suns;
+  const OpenSky* Sky = nullptr;
+};
+
+/// Direction about unit normal n, cosine-weighted, from a point (s, t) of the unit square
+/// (Malley's method: a uniform point of the disc lifted onto the hemisphere).
+Vec3 cosineWeightedDirection(const Vec3& n, double s, double t);
+} // namespace terralux

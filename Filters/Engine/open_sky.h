@@ -1,0 +1,38 @@
+#pragma once
+// The sky a plane would receive with nothing in the way, exact for any normal, and the
+// sky's radiance toward a direction: what a final gather needs to take the sky at a
+// point as "open sky minus what the scene hides" (a control variate: the rays then only
+// estimate the hidden part, which is 0 on open ground and small on most slopes).
+
+#include "radiosity_types.h"
+
+#include <memory>
+
+namespace terralux
+{
+class SkyHierarchy;
+class SkyPatchElement;
+
+class OpenSky
+{
+public:
+  explicit OpenSky(const SkyHierarchy& sky);
+  ~OpenSky();
+
+  /// Irradiance on an unobstructed plane of unit normal n, per band, and the projected
+  /// solid angle of the sky above both the plane and the horizon (pi x the sky view
+  /// factor of an open plane): patches wholly in front of the plane exactly through
+  /// their irradiance vectors, those its horizon crosses split down to the sky map's
+  /// finest level (at most level 6) and integrated exactly in solid angle there.
+  void irradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const;
+  /// Radiance (W/m^2/sr) of the finest sky cell holding unit direction d; 0 below the horizon.
+  Spectrum radiance(const Vec3& d) const;
+
+private:
+  void accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, double& omega) const;
+
+  const SkyHierarchy& Sky;
+  int Deepest = 0;
+  std::vector<std::vector<std::unique_ptr<SkyPatchElement>>> Levels; // [level][iu * side + iv]
+};
+} // namespace terralux
