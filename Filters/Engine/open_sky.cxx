@@ -7,6 +7,14 @@
 
 namespace terralux
 {
+namespace
+{
+double largestOf(const Spectrum& s)
+{
+  return std::max({ s[0], s[1], s[2] });
+}
+} // namespace
+
 OpenSky::OpenSky(const SkyHierarchy& sky)
   : Sky(sky)
   , Deepest(std::min(sky.finestLevel(), 4))
@@ -31,9 +39,11 @@ void OpenSky::accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, 
   const int side = patch.sideOf(n);
   if (side < 0)
     return;
-  if (side == 0 && level < this->Deepest)
+  // The plane's horizon crosses the patch: split it while what it gives could matter,
+  // since its radiance is taken as its mean where splitting stops.
+  if (side == 0 && level < this->Deepest &&
+    (level < 3 || patch.kernel(n) * largestOf(patch.emittance()) > 1e-4 * this->Brightest))
   {
-    // The plane's horizon crosses the patch: split it.
     for (int k = 0; k < 4; ++k)
       this->accumulate(level + 1, 2 * iu + k / 2, 2 * iv + k % 2, n, e, omega);
     return;

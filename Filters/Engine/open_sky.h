@@ -22,8 +22,9 @@ public:
   /// Irradiance on an unobstructed plane of unit normal n, per band, and the projected
   /// solid angle of the sky above both the plane and the horizon (pi x the sky view
   /// factor of an open plane): patches wholly in front of the plane exactly through
-  /// their irradiance vectors, those its horizon crosses split down to the sky map's
-  /// finest level (at most level 6) and integrated exactly in solid angle there.
+  /// their irradiance vectors, those its horizon crosses split (to level 3 at least, on
+  /// toward the sky map's finest level, at most 4, while one gives more than 1e-4 of the
+  /// horizontal irradiance) and integrated exactly in solid angle there.
   void irradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const;
   /// Radiance (W/m^2/sr) of the finest sky cell holding unit direction d; 0 below the horizon.
   Spectrum radiance(const Vec3& d) const;
@@ -33,6 +34,7 @@ private:
 
   const SkyHierarchy& Sky;
   int Deepest = 0;
+  double Brightest = 0.0; // largest horizontal irradiance over the bands
   std::vector<std::vector<std::unique_ptr<SkyPatchElement>>> Levels; // [level][iu * side + iv]
 };
 } // namespace terralux

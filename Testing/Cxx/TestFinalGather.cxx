@@ -1,0 +1,146 @@
+// Final gather at points (final_gather.h) and the open sky it subtracts from (open_sky.h).
+
+#include "cie_sky.h"
+#include "final_gather.h"
+#include "open_sky.h"
+#include "polygon_element.h"
+#include "radiosity_scenes.h"
+#include "sky_hierarchy.h"
+#include "solver.h"
+#include "visibility.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace terralux;
+using namespace terralux_test;
+
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+constexpr double degree = pi / 180.0;
+
+// Irradiance on an open plane by brute force over the finest sky cells: 8 x 8
+// sub-cells of each, at their centres.
+double bruteForceOpenSky(const SkyHierarchy& sky, const Vec3& n)
+{
+  const int level = sky.finestLevel(), side = SkyHierarchy::cellsPerSide(level);
+  double sum = 0.0;
+  for (int iu = 0; iu < side; ++iu)
+    for (int iv = 0; iv < side; ++iv)
+    {
+      const SkyPatch cell{ level, iu, iv };
+      const double l = sky.radiance(cell, 0);
+      constexpr int parts = 8;
+      const double s0 = std::sin(cell.u0()), s1 = std::sin(cell.u1());
+      for (int a = 0; a < parts; ++a)
+        for (int b = 0; b < parts; ++b)
+        {
+          const double sinU = s0 + (a + 0.5) * (s1 - s0) / parts;
+          const double v = cell.v0() + (b + 0.5) * (cell.v1() - cell.v0()) / parts;
+          const Direction d = directionFromSkyParameters(std::asin(sinU), v);
+          const double omega = (s1 - s0) * (cell.v1() - cell.v0()) / (parts * parts);
+          sum += l * omega * std::max(0.0, n.x * d[0] + n.y * d[1] + n.z * d[2]);
+        }
+    }
+  return sum;
+}
+} // namespace
+
+TEST(OpenSky, HorizontalPlaneGetsTheDiffuseHorizontalIrradiance)
+{
+  for (int type : { 1, 8, 12, 15 })
+  {
+    const Direction sun = directionFromZenithAzimuth(85.0 * degree, 1.0);
+    const SkyHierarchy sky(CieGeneralSky(type, sun), 100.0, 6);
+    const OpenSky open(sky);
+    Spectrum e;
+    double omega = 0.0;
+    open.irradiance(Vec3(0.0, 0.0, 1.0), e, omega);
+    // The map's own quadrature makes it integrate to 100 within 0.1 %.
+    EXPECT_NEAR(e[0], 100.0, 0.1) << type;
+    EXPECT_NEAR(omega, pi, 1e-12) << type;
+  }
+}
+
+TEST(OpenSky, TiltedPlanesMatchTheSkyMapIntegratedByBruteForce)
+{
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(70.0 * degree, 0.5)), 100.0, 6);
+  const OpenSky open(sky);
+  for (double slope : { 10.0, 35.0, 60.0, 90.0, 120.0 })
+    for (double azimuth : { 0.0, 1.0, 2.5, 4.0 })
+    {
+      const Vec3 n(std::sin(slope * degree) * std::sin(azimuth), std::sin(slope * degree) * std::cos(azimuth),
+        std::cos(slope * degree));
+      Spectrum e;
+      double omega = 0.0;
+      open.irradiance(n, e, omega);
+      const double expected = bruteForceOpenSky(sky, n);
+      // Patches the plane's horizon crosses are split to level 4 at most and taken at
+      // their mean radiance there: up to 0.8 % off under a clear sky's bright horizon
+      // band with the sun 20 deg up (level 6 brings it under 0.2 %, at twice the cost
+      // of the whole point evaluation).
+      EXPECT_NEAR(e[0] / expected, 1.0, 1e-2) << slope << " " << azimuth;
+      // Geometrically exact: the sky above the horizon and the plane, pi (1 + cos b) / 2
+      // for b <= 90 deg.
+      if (slope <= 90.0)
+        EXPECT_NEAR(omega, pi * (1.0 + std::cos(slope * degree)) / 2.0, 1e-6);
+    }
+}
+
+TEST(OpenSky, RadianceTowardAPatchCentreIsThatPatchsRadiance)
+{
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(40.0 * degree, 2.0)), 100.0, 5);
+  const OpenSky open(sky);
+  for (int iu : { 0, 7, 31 })
+    for (int iv : { 0, 13, 31 })
+    {
+      const SkyPatch patch{ 5, iu, iv };
+      const Direction d = patch.direction();
+      EXPECT_DOUBLE_EQ(open.radiance(Vec3(d[0], d[1], d[2]))[0], sky.radiance(patch, 0));
+    }
+  EXPECT_EQ(open.radiance(Vec3(0.0, 0.6, -0.8))[0], 0.0); // below the horizon
+}
+
+TEST(FinalGather, ClosedBoxReadsItsRadiosityAtCornersEdgesAndFaces)
+{
+  // Inward cube, emission 100, reflectance 0.5: B = 200 and E = 200 everywhere, the
+  // points users read included (corners and edges are where links saw edge-on walls).
+  RadiosityScene scene;
+  addInwardCube(scene, 1.0, 0.5, 100.0);
+  HierarchicalRadiosity solver(scene, RadiosityOptions{});
+  ASSERT_TRUE(solver.solve());
+  const PolygonElement& floor = *solver.polygonRoots()[0];
+  for (const Vec3& p : { Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0.5, 0, 0), Vec3(0.5, 0.5, 0), Vec3(0.1, 0.9, 0) })
+  {
+    const PolygonElement& leaf = *floor.leafHolding(p);
+    const PointIrradiance e = solver.irradianceAt(leaf, p);
+    EXPECT_NEAR(e.irradiance[ReflectedLight][0], 200.0, 2.0) << p.x << " " << p.y;
+  }
+}
+
+TEST(FinalGather, OpenGroundTakesTheFewestRaysAndThePitMore)
+{
+  // Work follows the scene: a post that sees nothing but sky needs only the pilot's
+  // verdict and the fewest rays; the floor of a pit needs many.
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(40.0 * degree, 2.0)), 100.0, 6);
+  const OpenSky open(sky);
+  RadiosityScene scene;
+  addPit(scene, 1.0, 1.0, 48, 0.3);
+  const Visibility rays(scene);
+  const std::vector<PolygonElement*> none;
+  const std::vector<TerrainPatch*> noTerrain;
+  const std::vector<HElement*> noSun;
+  FinalGather gather(rays, none, noTerrain, noSun);
+  gather.setSky(&open);
+  const GatherBudget budget;
+  const GatheredLight high = gather.irradianceAt(Vec3(5, 5, 0.0), Vec3(0, 0, 1), budget, 1, 0.0);
+  EXPECT_EQ(high.rays, budget.minimum);
+  EXPECT_NEAR(high.sky[0], 100.0, 0.1);
+  EXPECT_DOUBLE_EQ(high.skyViewFactor, 1.0);
+  const GatheredLight floor = gather.irradianceAt(Vec3(0, 0, -1), Vec3(0, 0, 1), budget, 1, 0.0);
+  EXPECT_GT(floor.rays, 4 * budget.minimum);
+  // The pit's opening is a cone of half-angle 45 deg: sky view factor sin^2 45 deg.
+  EXPECT_NEAR(floor.skyViewFactor, 0.5, 0.02);
+}
