@@ -13,12 +13,23 @@ namespace terralux
 {
 Vec3 cosineWeightedDirection(const Vec3& n, double s, double t)
 {
+  return CosineFrame(n).direction(s, t);
+}
+
+CosineFrame::CosineFrame(const Vec3& n)
+  : N(n)
+{
   const Vec3 a = std::abs(n.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
-  const Vec3 u = glm::normalize(glm::cross(a, n));
-  const Vec3 v = glm::cross(n, u);
+  this->U = glm::normalize(glm::cross(a, n));
+  this->V = glm::cross(n, this->U);
+}
+
+Vec3 CosineFrame::direction(double s, double t) const
+{
   constexpr double twoPi = 6.28318530717958647692;
   const double r = std::sqrt(s), phi = twoPi * t;
-  return glm::normalize(r * std::cos(phi) * u + r * std::sin(phi) * v + std::sqrt(std::max(0.0, 1.0 - s)) * n);
+  return glm::normalize(
+    r * std::cos(phi) * this->U + r * std::sin(phi) * this->V + std::sqrt(std::max(0.0, 1.0 - s)) * this->N);
 }
 
 FinalGather::FinalGather(const Visibility& rays, const std::vector<PolygonElement*>& polygons,
@@ -78,19 +89,22 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // irradiance it receives); the estimate then comes from that many fresh
   // stratified rays. Rays that decided when to stop would be biased: they stop
   // early where they happened to miss a bright hit.
+  const CosineFrame frame(normal);
+  int met = 0; // rays that met the scene
   auto cast = [&](int count, SampleGenerator& random)
   {
     sum = sumOfSquares = 0.0;
     hidden = surfaces = Spectrum{};
-    hiddenSky = 0;
+    hiddenSky = met = 0;
     for (int k = 0; k < count; ++k)
     {
       double s, t;
       stratifiedPoint(k, count, random, s, t);
-      const Vec3 d = cosineWeightedDirection(normal, s, t);
+      const Vec3 d = frame.direction(s, t);
       SurfaceHit hit;
       if (!this->Rays.firstHit(point, normal, d, hit))
         continue;
+      ++met;
       double value = 0.0;
       if (this->Sky && d.z > 0.0)
       {
@@ -133,9 +147,15 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       std::clamp<double>(std::ceil(variance / (target * target)), budget.minimum, budget.maximum);
     const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
     count = side * side;
+    // An open point (no pilot ray met anything) keeps the pilot's answer, the open sky:
+    // what it could miss is at most a point seeing the scene through 1 / pilot of its
+    // cosine-weighted hemisphere, with odds (1 - 1 / pilot)^pilot, a third.
+    if (met == 0)
+      count = 0;
   }
-  cast(count, random);
-  n = count;
+  if (count > 0)
+    cast(count, random);
+  n = count > 0 ? count : budget.pilot;
   // E = pi x the mean radiance over cosine-weighted directions: the mean
   // radiosity.
   for (int band = 0; band < maxBands; ++band)

@@ -76,6 +76,18 @@ private:
   const OpenSky* Sky = nullptr;
 };
 
+/// Cosine-weighted directions about one unit normal (its frame made once).
+class CosineFrame
+{
+public:
+  explicit CosineFrame(const Vec3& n);
+  /// From a point (s, t) of the unit square, as cosineWeightedDirection.
+  Vec3 direction(double s, double t) const;
+
+private:
+  Vec3 N, U, V;
+};
+
 /// Direction about unit normal n, cosine-weighted, from a point (s, t) of the unit square
 /// (Malley's method: a uniform point of the disc lifted onto the hemisphere).
 Vec3 cosineWeightedDirection(const Vec3& n, double s, double t);

@@ -36,5 +36,6 @@ private:
   int Deepest = 0;
   double Brightest = 0.0; // largest horizontal irradiance over the bands
   std::vector<std::vector<std::unique_ptr<SkyPatchElement>>> Levels; // [level][iu * side + iv]
+  std::vector<std::vector<double>> Radii; // the same: largest |d - centre| over each patch
 };
 } // namespace terralux

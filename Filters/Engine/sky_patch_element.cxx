@@ -172,6 +172,17 @@ double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
   return side < 0 ? 0.0 : this->straddlingProjection(normal);
 }
 
+void SkyPatchElement::kernelAndProjection(const Vec3& normal, int side, double& kernel, double& projected) const
+{
+  if (side > 0)
+  {
+    kernel = std::max(0.0, glm::dot(normal, this->RadianceVector));
+    projected = std::max(0.0, glm::dot(normal, this->VectorSolidAngle));
+  }
+  else
+    kernel = projected = side < 0 ? 0.0 : this->straddlingProjection(normal);
+}
+
 double SkyPatchElement::straddlingProjection(const Vec3& normal) const
 {
   // The surface's horizon crosses the patch. With s = sin u (dOmega = ds dv) and

@@ -37,6 +37,8 @@ public:
   /// what the radiance map gives it; projectedSolidAngle(n) where the surface's horizon
   /// crosses the patch (the refinement splits such links while they matter).
   double kernel(const Vec3& normal) const;
+  /// kernel(n) and projectedSolidAngle(n) at once, for a side already known (sideOf).
+  void kernelAndProjection(const Vec3& normal, int side, double& kernel, double& projected) const;
   /// A direction in the patch for sampled visibility, distributed like the irradiance
   /// the patch gives a horizontal plane (radiance x sin u over dOmega): a bright part
   /// of the patch (the circumsolar sky) that an obstacle hides weighs as much as it
