@@ -26,9 +26,10 @@
  * a composite input a composite of the same structure, null and empty blocks kept;
  * several inputs a vtkMultiBlockDataSet with one block per input) with point data `Irradiance` (global),
  * `SunIrradiance`, `SkyIrradiance`, `ReflectedIrradiance` and `Radiosity` in W/m^2
- * (NumberOfBands components), evaluated at each point (every link reaching the
- * element there re-evaluated at the point: exact form factors, visibility from the
- * point), so values are not smeared over the elements around it; for a terrain lit
+ * (NumberOfBands components), evaluated at each point (direct sun by one ray from the
+ * point, sky and light from surfaces by a final gather from the point over the solved
+ * hierarchy, see MaximumGatherRays), so values are not smeared over the elements
+ * around it; for a terrain lit
  * by a sky also `SkyViewFactor`, the cosine-weighted fraction of the sky each post sees
  * (1 on open flat ground), as SAGA and GRASS r.skyview report it (NaN at points on no
  * polygon, e.g. blanked no-data posts); field
@@ -40,8 +41,9 @@
  * edge; a terrain leaf's polygon holds the T-vertices of its edges, so the mesh has no
  * cracks).
  * Output port 2: the links as lines from receiver to sender (sun and sky links drawn
- * toward the sky) with cell data `Level` and transported `Power` (W), as in the
- * paper's Fig. 9.
+ * toward the sky) with cell data `Level` (the receiver's), transported `Power` (W),
+ * `Sender` (0 a surface or cluster, 1 a sky patch, 2 the sun) and `SenderLevel`, as in
+ * the paper's Fig. 9.
  *
  * Refused with an error naming the fix, outputs empty: NaN or infinite parameters;
  * cells whose point ids are out of range; structured grids whose dimensions do not
@@ -174,8 +176,8 @@ public:
 
   ///@{
   /**
-   * Set/Get whether output 0's point values are evaluated at each point (every link
-   * reaching the element there re-evaluated at the point; accurate) or averaged over
+   * Set/Get whether output 0's point values are evaluated at each point (a final
+   * gather from the point, see MaximumGatherRays; accurate) or averaged over
    * the leaf elements around it (fast for large scenes, smears values over elements;
    * on terrain patches interpolated from the continuous leaf mesh, direct sun still
    * taken at each post with one ray). Default is on.

@@ -183,15 +183,15 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
     auto normalAt = [&](int i, int j) { return options.hornNormals ? grid.hornNormal(i, j) : grid.postNormal(i, j); };
     if (evaluateAtPoints)
     {
-      // Every post through the links that reach the leaf holding it, with the normal of
-      // the cells around it, in parallel.
+      // Every post evaluated at itself from its most lit leaf, with the normal of the
+      // cells around it, in parallel.
       vtkSMPTools::For(0, ny, [&](vtkIdType first, vtkIdType last) {
         for (int j = static_cast<int>(first); j < last; ++j)
           for (int i = 0; i < nx; ++i)
           {
             if (!grid.postUsed(i, j))
               continue;
-            const terralux::TerrainPatch* leaf = root->leafHolding(i, j);
+            const terralux::TerrainPatch* leaf = root->mostLitLeafAt(i, j);
             if (!leaf)
               continue;
             const terralux::PointIrradiance result = solver.irradianceAt(*leaf, grid.post(i, j), normalAt(i, j));
@@ -557,6 +557,9 @@ void vtkRadiosityOutputs::BuildLinks(const terralux::HierarchicalRadiosity& solv
   level->SetName("Level");
   vtkNew<vtkDoubleArray> power;
   power->SetName("Power");
+  vtkNew<vtkIntArray> sender, senderLevel;
+  sender->SetName("Sender"); // what sends: 0 a surface or cluster, 1 a sky patch, 2 the sun
+  senderLevel->SetName("SenderLevel");
   for (const auto& element : solver.elements().all())
   {
     for (const terralux::Link& link : element->Incoming)
@@ -576,10 +579,16 @@ void vtkRadiosityOutputs::BuildLinks(const terralux::HierarchicalRadiosity& solv
       lines->InsertNextCell(2, ids);
       level->InsertNextValue(element->level());
       power->InsertNextValue(terralux::linkPower(*element, link));
+      const auto kind = link.sender->kind();
+      sender->InsertNextValue(
+        kind == terralux::HElement::Kind::Sun ? 2 : (kind == terralux::HElement::Kind::SkyPatch ? 1 : 0));
+      senderLevel->InsertNextValue(link.sender->level());
     }
   }
   output->SetPoints(points);
   output->SetLines(lines);
   output->GetCellData()->AddArray(level);
   output->GetCellData()->AddArray(power);
+  output->GetCellData()->AddArray(sender);
+  output->GetCellData()->AddArray(senderLevel);
 }

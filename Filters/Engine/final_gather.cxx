@@ -90,12 +90,11 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // stratified rays. Rays that decided when to stop would be biased: they stop
   // early where they happened to miss a bright hit.
   const CosineFrame frame(normal);
-  int met = 0; // rays that met the scene
   auto cast = [&](int count, SampleGenerator& random)
   {
     sum = sumOfSquares = 0.0;
     hidden = surfaces = Spectrum{};
-    hiddenSky = met = 0;
+    hiddenSky = 0;
     for (int k = 0; k < count; ++k)
     {
       double s, t;
@@ -104,7 +103,6 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       SurfaceHit hit;
       if (!this->Rays.firstHit(point, normal, d, hit))
         continue;
-      ++met;
       double value = 0.0;
       if (this->Sky && d.z > 0.0)
       {
@@ -147,15 +145,9 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       std::clamp<double>(std::ceil(variance / (target * target)), budget.minimum, budget.maximum);
     const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
     count = side * side;
-    // An open point (no pilot ray met anything) keeps the pilot's answer, the open sky:
-    // what it could miss is at most a point seeing the scene through 1 / pilot of its
-    // cosine-weighted hemisphere, with odds (1 - 1 / pilot)^pilot, a third.
-    if (met == 0)
-      count = 0;
   }
-  if (count > 0)
-    cast(count, random);
-  n = count > 0 ? count : budget.pilot;
+  cast(count, random);
+  n = count;
   // E = pi x the mean radiance over cosine-weighted directions: the mean
   // radiosity.
   for (int band = 0; band < maxBands; ++band)

@@ -144,6 +144,30 @@ const TerrainPatch* TerrainPatch::leafHolding(double u, double v) const
   return nullptr;
 }
 
+const TerrainPatch* TerrainPatch::mostLitLeafAt(int i, int j) const
+{
+  const TerrainPatch* best = nullptr;
+  double most = -1.0;
+  for (const double du : { -0.5, 0.5 })
+    for (const double dv : { -0.5, 0.5 })
+    {
+      const TerrainPatch* leaf = this->leafHolding(i + du, j + dv);
+      if (!leaf)
+        continue;
+      double received = 0.0;
+      for (const Spectrum& category : leaf->Irradiance)
+        received += std::max({ category[0], category[1], category[2] });
+      // Only a clearly brighter leaf: between leaves of one open slope the choice only
+      // sets which way the point is nudged, and should not hop with noise.
+      if (!best || received > 1.1 * most + 1e-9)
+      {
+        best = leaf;
+        most = received;
+      }
+    }
+  return best;
+}
+
 bool TerrainPatch::canSplit() const
 {
   if (!this->Complete)

@@ -42,6 +42,11 @@ public:
   /// The leaf below this patch whose closed range holds parameter (u, v) (the first one
   /// found on shared borders), or null: outside the range, or in a hole.
   const TerrainPatch* leafHolding(double u, double v) const;
+  /// Of the leaves that touch post (i, j) (those of the up to four cells around it),
+  /// the one that receives the most light once solved: a post where the ground runs
+  /// under a building takes the value seen from the open side, as points on polygons
+  /// do. Null when no cell around it is valid.
+  const TerrainPatch* mostLitLeafAt(int i, int j) const;
   /// False for structural patches that hold missing cells.
   bool complete() const { return this->Complete; }
   int terrain() const { return this->TerrainIndex; }

@@ -12,6 +12,13 @@ cmake -S "$here" -B "$scratch/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
 cmake --build "$scratch/consumer" >/dev/null
 "$scratch/consumer/terralux_consumer" "$dem"
+# The C++ example of Examples/cxx, built the way its CMakeLists.txt says.
+cmake -S "$here/../../Examples/cxx" -B "$scratch/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
+cmake --build "$scratch/example" >/dev/null
+"$scratch/example/lit_dem" "$dem" "$scratch/example/lit.tif" | tee "$scratch/example/lit.log"
+grep -q "global irradiance" "$scratch/example/lit.log"
+test -s "$scratch/example/lit.tif"
 cd /
 PYTHONPATH="$scratch/prefix/$python_destination" "$python" -c "
 import terralux, os

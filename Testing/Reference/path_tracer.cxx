@@ -158,16 +158,51 @@ double PathTracer::incidentAt(const Vec3& point, const Vec3& normal, int depth, 
   const Vec3 d = cosineDirection(normal, random.uniform(), random.uniform());
   const double offset = this->Scene.offsetAt(point);
   Hit hit;
-  if (!this->Scene.intersect(point + offset * normal, d, offset, hit))
+  if (!this->Scene.intersect(point + offset * normal, d, 0.0, hit))
     return e + pi * this->skyRadiance(d);
   if (glm::dot(hit.normal, d) >= 0.0)
     return e; // the back of a one-sided surface sends nothing
   return e + this->radiosityAt(hit, depth, random);
 }
 
-ReferenceIrradiance PathTracer::irradianceAt(const Vec3& point, const Vec3& normal, int samples, std::uint64_t seed) const
+Vec3 PathTracer::openSideOf(const Vec3& point, const Vec3& normal, Random& random) const
+{
+  const double offset = this->Scene.offsetAt(point);
+  // Probe rays that escape or meet a front: what an open side sees.
+  auto openness = [&](const Vec3& p) {
+    constexpr int strata = 6;
+    int open = 0;
+    for (int a = 0; a < strata; ++a)
+      for (int c = 0; c < strata; ++c)
+      {
+        const Vec3 d = cosineDirection(normal, (a + random.uniform()) / strata, (c + random.uniform()) / strata);
+        Hit hit;
+        if (!this->Scene.intersect(p + offset * normal, d, 0.0, hit) || glm::dot(hit.normal, d) < 0.0)
+          ++open;
+      }
+    return open;
+  };
+  Vec3 t, b;
+  frameOf(normal, t, b);
+  Vec3 best = point;
+  int most = openness(point);
+  for (const Vec3& along : { t + b, t - b, -t + b, -t - b })
+  {
+    const Vec3 candidate = point + 2.0 * offset * glm::normalize(along);
+    const int open = openness(candidate);
+    if (open > most + 3) // clearly more open, not noise
+    {
+      best = candidate;
+      most = open;
+    }
+  }
+  return best;
+}
+
+ReferenceIrradiance PathTracer::irradianceAt(const Vec3& at, const Vec3& normal, int samples, std::uint64_t seed) const
 {
   Random random(seed);
+  const Vec3 point = this->openSideOf(at, normal, random);
   const int strata = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples)))));
   const int n = strata * strata;
   const double offset = this->Scene.offsetAt(point);
@@ -178,7 +213,7 @@ ReferenceIrradiance PathTracer::irradianceAt(const Vec3& point, const Vec3& norm
       const Vec3 d = cosineDirection(normal, (a + random.uniform()) / strata, (c + random.uniform()) / strata);
       double hiddenValue = 0.0, reflectedValue = 0.0;
       Hit hit;
-      if (this->Scene.intersect(point + offset * normal, d, offset, hit))
+      if (this->Scene.intersect(point + offset * normal, d, 0.0, hit))
       {
         hiddenValue = pi * this->skyRadiance(d); // sky the scene hides in this direction
         if (glm::dot(hit.normal, d) < 0.0)
@@ -199,7 +234,7 @@ ReferenceIrradiance PathTracer::irradianceAt(const Vec3& point, const Vec3& norm
   };
   ReferenceIrradiance result;
   const double open = this->unoccludedSky(normal);
-  result.sun = { this->directSun(point, normal), 0.0 };
+  result.sun = { this->directSun(at, normal), 0.0 };
   result.sky = estimate(hidden, hidden2);
   result.sky.mean = std::max(0.0, open - result.sky.mean);
   result.reflected = estimate(reflected, reflected2);

@@ -2,7 +2,9 @@
 // An independent Monte Carlo reference for TerraLux's per-point irradiance (not part of
 // its API): Lambertian scenes under suns and a sky, estimated by path tracing. Direct
 // sun is one shadow ray from just above the point; sky and reflected light come from
-// stratified cosine-weighted directions: one that hits a surface's front brings that
+// stratified cosine-weighted directions, from just above the point along its normal on
+// (not one offset further along the ray: at the foot of a wall the wall's front is
+// seen, the limit from the open side): one that hits a surface's front brings that
 // surface's radiosity, estimated recursively (its own sun ray, one cosine-weighted
 // continuation, Russian roulette after the second bounce). The sky term uses the
 // unoccluded sky as a control variate: its irradiance on the point's plane is summed
@@ -64,6 +66,11 @@ private:
   class Random;
   double radiosityAt(const Hit& hit, int depth, Random& random) const;
   double incidentAt(const Vec3& point, const Vec3& normal, int depth, Random& random) const;
+  /// Where a point's sky and reflected light are estimated from: the point itself, or,
+  /// where it lies on the line a surface meets another (a post at the foot of a wall,
+  /// possibly inside the wall's plane), the most open of four points two offsets away
+  /// along its tangent diagonals: the limit from the open side.
+  Vec3 openSideOf(const Vec3& point, const Vec3& normal, Random& random) const;
 
   const ReferenceScene& Scene;
   const terralux::SkyHierarchy* Sky;
