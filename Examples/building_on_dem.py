@@ -18,7 +18,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 from example_support import (OLINDA, caption, coloured_actor, fail, legend, oblique_view,  # noqa: E402
-                             parse_arguments, render, write)
+                             parse_arguments, render, solve, write)
 from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkMultiBlockDataSet, vtkPolyData  # noqa: E402
 from vtkmodules.vtkCommonTransforms import vtkTransform  # noqa: E402
@@ -111,11 +111,7 @@ def main():
     radiosity.SetInputData(scene)
     radiosity.AddLightConnection(sun.GetOutputPort())
     radiosity.AddLightConnection(sky.GetOutputPort(0))
-    radiosity.SetDefaultReflectance(0.25)
-    if args.quick:
-        radiosity.SetErrorTolerance(1e-2)
-        radiosity.SetMaximumGatherRays(256)
-    radiosity.Update()
+    solve(radiosity, 0.25, args.quick)
     lit = radiosity.GetOutput()
     write(lit, os.path.join(out, "lit_scene.vtm"))
     building = lit.GetBlock(1)

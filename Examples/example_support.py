@@ -7,6 +7,7 @@ import argparse
 import math
 import os
 import sys
+import time
 
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
@@ -17,7 +18,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkActor2D, vtkColorTransferF
                                          vtkPolyDataMapper, vtkPolyDataMapper2D, vtkRenderer,
                                          vtkRenderWindow, vtkTextActor, vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL back end)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401,E402  (the OpenGL back end)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OLINDA = os.path.join(HERE, "..", "Testing", "Data", "External", "olinda_dem_utm25s.tif")
@@ -34,6 +35,41 @@ def parse_arguments(description, extra=None):
     args = parser.parse_args()
     os.makedirs(args.output_dir, exist_ok=True)
     return args
+
+
+def lit_dem(dem, when, reflectance=0.2, linke=3.0, quick=False, horn_normals=False):
+    """The usual pipeline: a DEM (vtkTerrainSource), the sun over it at `when` (NREL SPA,
+    ESRA clear sky with that Linke turbidity), the matching CIE clear sky, and the
+    radiosity filter lighting the terrain. Returns (sun, radiosity, seconds of the solve)."""
+    from terralux import vtkHierarchicalRadiosity, vtkSkySource, vtkSunSource, vtkTerrainSource
+
+    terrain = vtkTerrainSource()
+    terrain.SetFileName(dem)
+    sun = vtkSunSource()
+    sun.SetInputConnection(terrain.GetOutputPort())  # place: the DEM's GeoOrigin
+    sun.SetDateTime(when)
+    sun.SetLinkeTurbidity(linke)
+    sky = vtkSkySource()
+    sky.SetSunConnection(sun.GetOutputPort())
+    sky.SetSkyType(12)  # CIE clear sky
+    radiosity = vtkHierarchicalRadiosity()
+    radiosity.SetInputConnection(terrain.GetOutputPort())
+    radiosity.AddLightConnection(sun.GetOutputPort())
+    radiosity.AddLightConnection(sky.GetOutputPort(0))
+    if horn_normals:
+        radiosity.SetPostNormals(vtkHierarchicalRadiosity.HORN_NORMALS)  # as r.slope.aspect
+    return sun, radiosity, solve(radiosity, reflectance, quick)
+
+
+def solve(radiosity, reflectance, quick):
+    """Runs the radiosity filter (coarser with --quick); returns its wall time."""
+    radiosity.SetDefaultReflectance(reflectance)
+    if quick:
+        radiosity.SetErrorTolerance(1e-2)
+        radiosity.SetMaximumGatherRays(256)
+    start = time.perf_counter()
+    radiosity.Update()
+    return time.perf_counter() - start
 
 
 def fail(message):
@@ -72,12 +108,12 @@ def coloured_actor(data, array, value_range, association="point", gouraud=True):
     return actor, mapper
 
 
-def legend(mapper, title):
-    """A colour legend with its unit, to the right of the picture."""
+def legend(mapper, title, labels=5):
+    """A colour legend with its unit, for the picture's right-hand strip."""
     bar = vtkScalarBarActor()
     bar.SetLookupTable(mapper.GetLookupTable())
     bar.SetTitle(title)
-    bar.SetNumberOfLabels(5)
+    bar.SetNumberOfLabels(labels)
     bar.SetLabelFormat("%.0f")
     bar.SetPosition(0.15, 0.08)
     bar.SetWidth(0.7)

@@ -10,33 +10,26 @@ fig5_sky_only.png, fig6_sky_and_sun.png, fig7_toward_the_sun.png.
 """
 import os
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 from example_scenes import HOUSE, clear_sky, house_and_trees, sun_at  # noqa: E402
 from example_support import (caption, coloured_actor, field_value, legend, oblique_view,  # noqa: E402
-                             parse_arguments, render, write)
+                             parse_arguments, render, solve, write)
 
 from terralux import vtkHierarchicalRadiosity  # noqa: E402
 
 SUN_ALTITUDE, SUN_AZIMUTH = 35.0, 160.0  # degrees; the sun stands south-south-east
 
 
-def solve(scene, lights, quick):
+def light(scene, lights, quick):
     """Lights the scene; returns the filter and its wall time."""
     radiosity = vtkHierarchicalRadiosity()
     radiosity.SetInputData(scene)
-    for light in lights:
-        radiosity.AddLightConnection(light)
-    radiosity.SetDefaultReflectance(0.3)
-    if quick:
-        radiosity.SetErrorTolerance(1e-2)
-        radiosity.SetMaximumGatherRays(256)
-    start = time.perf_counter()
-    radiosity.Update()
-    return radiosity, time.perf_counter() - start
+    for port in lights:
+        radiosity.AddLightConnection(port)
+    return radiosity, solve(radiosity, 0.3, quick)
 
 
 def picture(leaves, png, title, value_range, view):
@@ -54,8 +47,8 @@ def main():
     sky = clear_sky(SUN_ALTITUDE, SUN_AZIMUTH, diffuse=100.0, levels=5 if args.quick else 7, dome_radius=60.0)
     sun = sun_at(SUN_ALTITUDE, SUN_AZIMUTH, 800.0)
 
-    sky_only, seconds_sky = solve(scene, [sky.GetOutputPort(0)], args.quick)
-    with_sun, seconds_sun = solve(scene, [sky.GetOutputPort(0), sun.GetOutputPort()], args.quick)
+    sky_only, seconds_sky = light(scene, [sky.GetOutputPort(0)], args.quick)
+    with_sun, seconds_sun = light(scene, [sky.GetOutputPort(0), sun.GetOutputPort()], args.quick)
 
     for name, radiosity, seconds in (("sky_only", sky_only, seconds_sky), ("sky_and_sun", with_sun, seconds_sun)):
         lit = radiosity.GetOutput()

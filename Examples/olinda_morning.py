@@ -10,18 +10,16 @@ olinda_radiosity.tif (Radiosity and Irradiance as GeoTIFF bands), olinda_leaves.
 """
 import os
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from example_support import (OLINDA, caption, coloured_actor, fail, field_value, legend,  # noqa: E402
+from example_support import (OLINDA, caption, coloured_actor, fail, field_value, legend, lit_dem,  # noqa: E402
                              oblique_view, parse_arguments, render, write)
 from vtkmodules.vtkCommonTransforms import vtkTransform  # noqa: E402
 from vtkmodules.vtkFiltersGeneral import vtkTransformFilter  # noqa: E402
 
-from terralux import (vtkHierarchicalRadiosity, vtkSkySource, vtkSunSource, vtkTerrainRasterWriter,  # noqa: E402
-                      vtkTerrainSource)
+from terralux import vtkTerrainRasterWriter  # noqa: E402
 
 WHEN = "2024-08-15T08:30:00-03:00"
 EXAGGERATION = 5.0  # the terrain's relief is 90 m over 10 km
@@ -30,25 +28,7 @@ EXAGGERATION = 5.0  # the terrain's relief is 90 m over 10 km
 def main():
     args = parse_arguments(__doc__.splitlines()[0])
     out = args.output_dir
-    terrain = vtkTerrainSource()
-    terrain.SetFileName(OLINDA)
-    sun = vtkSunSource()
-    sun.SetInputConnection(terrain.GetOutputPort())
-    sun.SetDateTime(WHEN)
-    sky = vtkSkySource()
-    sky.SetSunConnection(sun.GetOutputPort())
-    sky.SetSkyType(12)  # CIE clear sky
-    radiosity = vtkHierarchicalRadiosity()
-    radiosity.SetInputConnection(terrain.GetOutputPort())
-    radiosity.AddLightConnection(sun.GetOutputPort())
-    radiosity.AddLightConnection(sky.GetOutputPort(0))
-    radiosity.SetDefaultReflectance(0.2)
-    if args.quick:
-        radiosity.SetErrorTolerance(1e-2)
-        radiosity.SetMaximumGatherRays(256)
-    start = time.perf_counter()
-    radiosity.Update()
-    seconds = time.perf_counter() - start
+    sun, radiosity, seconds = lit_dem(OLINDA, WHEN, reflectance=0.2, quick=args.quick)
     lit = radiosity.GetOutput()
     if lit.GetNumberOfPoints() == 0:
         fail("could not read or light %s (run cmake/install-dependencies.sh)" % OLINDA)

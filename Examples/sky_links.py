@@ -61,7 +61,7 @@ def main():
     render([scene_actor, link_actor], os.path.join(args.output_dir, "fig9_sky_links.png"), size=(1100, 900),
            view=oblique_view((0.0, 0.0, 20.0), 215.0, 30.0, 220.0),
            overlays=[caption("Links to the sky over the scene, coloured by the sky patch's level")],
-           key=legend(mapper, "Sky patch\nlevel"))
+           key=legend(mapper, "Sky patch\nlevel", labels=int(levels[1] - levels[0]) + 1))
 
 
 if __name__ == "__main__":

@@ -16,18 +16,16 @@ irradiance_map.png, profile_histogram.png.
 """
 import os
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from example_support import (OLINDA, caption, coloured_actor, fail, legend, map_decorations,  # noqa: E402
-                             parse_arguments, render, write)
+from example_support import (OLINDA, caption, coloured_actor, fail, legend, lit_dem,  # noqa: E402
+                             map_decorations, parse_arguments, render, write)
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
-from terralux import (vtkHierarchicalRadiosity, vtkSkySource, vtkSunSource, vtkTerrainRasterWriter,  # noqa: E402
-                      vtkTerrainSource)
+from terralux import vtkTerrainRasterWriter  # noqa: E402
 
 BANDS = ("Irradiance", "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance", "SkyViewFactor")
 
@@ -42,31 +40,11 @@ def arguments(parser):
 
 def light(dem, when, reflectance, linke, quick):
     """DEM -> terrain, sun and sky at its place and time -> irradiance at every post."""
-    terrain = vtkTerrainSource()
-    terrain.SetFileName(dem)
-    sun = vtkSunSource()
-    sun.SetInputConnection(terrain.GetOutputPort())  # place: the DEM's GeoOrigin
-    sun.SetDateTime(when)
-    sun.SetLinkeTurbidity(linke)
-    sky = vtkSkySource()
-    sky.SetSunConnection(sun.GetOutputPort())
-    sky.SetSkyType(12)
-    radiosity = vtkHierarchicalRadiosity()
-    radiosity.SetInputConnection(terrain.GetOutputPort())
-    radiosity.AddLightConnection(sun.GetOutputPort())
-    radiosity.AddLightConnection(sky.GetOutputPort(0))
-    radiosity.SetDefaultReflectance(reflectance)
-    radiosity.SetPostNormals(vtkHierarchicalRadiosity.HORN_NORMALS)  # as r.slope.aspect
-    if quick:
-        radiosity.SetErrorTolerance(1e-2)
-        radiosity.SetMaximumGatherRays(256)
-    start = time.perf_counter()
-    radiosity.Update()
-    seconds = time.perf_counter() - start
+    sun, radiosity, seconds = lit_dem(dem, when, reflectance, linke, quick, horn_normals=True)
     output = radiosity.GetOutput()
     if output.GetNumberOfPoints() == 0:
         fail("could not light %s (see the error above)" % dem)
-    return terrain, sun, output, seconds
+    return sun, output, seconds
 
 
 def write_rasters(lit, path):
@@ -135,7 +113,7 @@ def main():
     args = parse_arguments(__doc__.splitlines()[0], arguments)
     if not os.path.exists(args.dem):
         fail("no such DEM: %s" % args.dem)
-    terrain, sun, lit, seconds = light(args.dem, args.when, args.reflectance, args.linke, args.quick)
+    sun, lit, seconds = light(args.dem, args.when, args.reflectance, args.linke, args.quick)
     nx, ny, _ = lit.GetDimensions()
     print("%s: %d x %d posts, sun %.1f deg up at azimuth %.1f deg, solved in %.2f s" % (
         os.path.basename(args.dem), nx, ny, sun.GetOutput().GetFieldData().GetArray("SunAltitude").GetValue(0),

@@ -22,7 +22,7 @@ packages=(
   xvfb xauth                        # off-screen X for rendering
   time                              # /usr/bin/time -v for the benchmarks
   clang libclang-rt-14-dev          # the sanitizer build and its libFuzzer targets
-  python3-matplotlib                # plots of the accuracy report (Testing/Benchmarks)
+  python3-matplotlib                # plots: the examples and the accuracy report
 )
 
 sudo_cmd=()
