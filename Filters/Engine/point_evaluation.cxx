@@ -81,7 +81,11 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     budget.minimum = std::min(budget.minimum, budget.maximum);
     budget.relativeError = this->Options.gatherError;
     const Spectrum& sun = irradiance[SunLight];
-    const GatheredLight light = this->Gather->irradianceAt(inside, normal, budget, gatherSeed,
+    // Its rays start two more offsets above (three in all): on rough terrain the move
+    // into the leaf, toward a centre across a crease, can end that far below the
+    // surface the point's normal lifts from.
+    const Vec3 lifted = inside + 2.0 * this->Rays->offset() * normal;
+    const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
       std::max({ sun[0], sun[1], sun[2] }), this->LargestRadiosity > 0.0);
     irradiance[ReflectedLight] = light.surfaces;
     irradiance[SkyLight] = light.sky;
