@@ -104,7 +104,8 @@ public:
    * the point meet the solved leaves (their radiosity, with direct sunlight taken at
    * the hit itself) or the sky (open sky of the point's plane, exact, minus what the
    * rays find hidden). A pilot of 64 rays decides how many, from 64 to this, bring
-   * the standard error below GatherError x the point's irradiance. 0 re-evaluates the
+   * the standard error below GatherError x the point's irradiance (points of leaves the
+   * solution found open take 64 rays and no pilot). 0 re-evaluates the
    * hierarchy's links at each point instead (faster, less accurate in rough terrain).
    * Default is 1024.
    */

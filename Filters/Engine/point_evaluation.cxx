@@ -14,6 +14,20 @@
 // vertices), from the solved hierarchy but with what varies sharply taken at the point.
 namespace terralux
 {
+namespace
+{
+bool leafLooksOpen(const PolygonElement& leaf)
+{
+  const double openPlane = 0.5 * (1.0 + std::max(-1.0, std::min(1.0, leaf.normal().z)));
+  double total = 0.0;
+  for (const Spectrum& category : leaf.Irradiance)
+    total += std::max({ category[0], category[1], category[2] });
+  const Spectrum& reflected = leaf.Irradiance[ReflectedLight];
+  return leaf.SkyViewFactor >= 0.999 * openPlane &&
+    std::max({ reflected[0], reflected[1], reflected[2] }) <= 0.002 * total;
+}
+} // namespace
+
 PointIrradiance HierarchicalRadiosity::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
 {
   return this->irradianceAt(leaf, point, leaf.normal());
@@ -80,6 +94,12 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     budget.maximum = this->Options.gatherSamples;
     budget.minimum = std::min(budget.minimum, budget.maximum);
     budget.relativeError = this->Options.gatherError;
+    // A leaf the solution found open (nearly all the sky its plane could see, next to
+    // no light from surfaces) needs no pilot: its points take the fewest rays. The
+    // decision comes from the solution, not from rays the estimate uses, so it keeps
+    // the estimate unbiased (a point that does see something gets those few rays).
+    if (leafLooksOpen(leaf))
+      budget.pilot = 0, budget.maximum = budget.minimum;
     const Spectrum& sun = irradiance[SunLight];
     // Its rays start two more offsets above (three in all): on rough terrain the move
     // into the leaf, toward a centre across a crease, can end that far below the

@@ -35,7 +35,9 @@ struct RadiosityOptions
   std::size_t maximumElements = 1000000;
   /// Sky and light from surfaces at points come from a final gather over the solved
   /// leaves (FinalGather): as many rays, from 64 to gatherSamples, as a pilot of 64
-  /// says bring the standard error below gatherError x the point's irradiance.
+  /// says bring the standard error below gatherError x the point's irradiance; points
+  /// of leaves the solution found open (sky view within 0.1 % of their plane's, light
+  /// from surfaces under 0.2 %) take 64 rays and no pilot.
   /// gatherSamples 0 re-evaluates the links that reach the point's leaf instead.
   int gatherSamples = 1024;
   double gatherError = 0.003;

@@ -144,3 +144,32 @@ TEST(FinalGather, OpenGroundTakesTheFewestRaysAndThePitMore)
   // The pit's opening is a cone of half-angle 45 deg: sky view factor sin^2 45 deg.
   EXPECT_NEAR(floor.skyViewFactor, 0.5, 0.02);
 }
+
+TEST(FinalGather, PointsOfLeavesTheSolutionFoundOpenTakeNoPilot)
+{
+  // Open flat ground under a clear sky: the solved leaf sees all the sky its plane can,
+  // so its points take the fewest rays (64) and no pilot; the sky there is still exact.
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(40.0 * degree, 2.0)), 100.0, 6);
+  RadiosityScene scene;
+  addPolygon(scene, { { -10, -10, 0 }, { 10, -10, 0 }, { 10, 10, 0 }, { -10, 10, 0 } }, 0.2);
+  HierarchicalRadiosity solver(scene, RadiosityOptions{});
+  solver.setSky(&sky);
+  ASSERT_TRUE(solver.solve());
+  const PolygonElement& ground = *solver.polygonRoots()[0];
+  const Vec3 p(1.0, 2.0, 0.0);
+  const std::uint64_t before = solver.raysCast();
+  const PointIrradiance open = solver.irradianceAt(*ground.leafHolding(p), p);
+  EXPECT_EQ(solver.raysCast() - before, 64u);
+  EXPECT_NEAR(open.irradiance[SkyLight][0], 100.0, 0.1);
+  // Beside a wall the leaf is not open: a pilot and more rays.
+  RadiosityScene walled;
+  addWallOnGround(walled, 10.0, 10.0, 3.0, 0.2);
+  HierarchicalRadiosity beside(walled, RadiosityOptions{});
+  beside.setSky(&sky);
+  ASSERT_TRUE(beside.solve());
+  const Vec3 q(0.0, 0.5, 0.0);
+  const PolygonElement& floor = *beside.polygonRoots()[0];
+  const std::uint64_t start = beside.raysCast();
+  beside.irradianceAt(*floor.leafHolding(q), q);
+  EXPECT_GT(beside.raysCast() - start, 128u);
+}
