@@ -21,6 +21,7 @@
 #include "finite_parameters.h"
 #include "solver.h"
 
+#include <chrono>
 #include <vector>
 
 vtkStandardNewMacro(vtkHierarchicalRadiosity);
@@ -303,6 +304,7 @@ int vtkHierarchicalRadiosity::Solve(
 
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.
+  const auto pointsStart = std::chrono::steady_clock::now();
   vtkRadiosityOutputs::PointOptions pointOptions;
   pointOptions.bands = this->NumberOfBands;
   pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;
@@ -350,6 +352,8 @@ int vtkHierarchicalRadiosity::Solve(
     dataSet->ShallowCopy(scene.Inputs[0].data);
     vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
   }
+  const double secondsPoints =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
   vtkFieldData* fieldData = output->GetFieldData();
   auto addValue = [&](const char* name, double value) {
     vtkNew<vtkDoubleArray> array;
@@ -367,6 +371,10 @@ int vtkHierarchicalRadiosity::Solve(
   addValue("SecondsRefine", stats.secondsRefine);
   addValue("SecondsGather", stats.secondsGather);
   addValue("SecondsPushPull", stats.secondsPushPull);
+  addValue("SecondsPoints", secondsPoints);
+  addValue("RaysRefine", static_cast<double>(stats.raysRefine));
+  addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
+  addValue("RaysPoints", static_cast<double>(solver->raysCast() - stats.rays));
 
   vtkRadiosityOutputs::BuildLeafMesh(*solver, this->NumberOfBands, scene.Sky != nullptr, leafMesh);
   vtkRadiosityOutputs::BuildLinks(*solver, links);

@@ -33,8 +33,10 @@
  * by a sky also `SkyViewFactor`, the cosine-weighted fraction of the sky each post sees
  * (1 on open flat ground), as SAGA and GRASS r.skyview report it (NaN at points on no
  * polygon, e.g. blanked no-data posts); field
- * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons` and seconds per
- * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`).
+ * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons`, seconds per
+ * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`,
+ * `SecondsPoints` for output 0's point values) and rays per phase (`RaysRefine`,
+ * `RaysPushPull` for gather and push-pull, `RaysPoints`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
  * `Level`, and the same point arrays (SkyViewFactor: the leaves' own, under a sky),
  * continuous across elements (values at T-vertices interpolated along the coarser

@@ -646,8 +646,16 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
   // sees emitters before the first gather.
   this->pushPull();
   auto start = std::chrono::steady_clock::now();
+  std::uint64_t rays = this->Rays->raysCast();
+  // Rays cast since the last call, for the phase that cast them.
+  auto raysSince = [&]() {
+    const std::uint64_t now = this->Rays->raysCast(), since = now - rays;
+    rays = now;
+    return since;
+  };
   this->refine(pending, false);
   this->Stats.secondsRefine += secondsSince(start);
+  this->Stats.raysRefine += raysSince();
 
   // Gathering is a Jacobi iteration: its change shrinks by about the scene's
   // reflectance each time. The remaining change is estimated from that ratio, and where
@@ -664,6 +672,7 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     const double absoluteChange = this->pushPull(extrapolation);
     const double change = this->LargestRadiosity > 0.0 ? absoluteChange / this->LargestRadiosity : 0.0;
     this->Stats.secondsPushPull += secondsSince(start);
+    this->Stats.raysPushPull += raysSince();
     this->Stats.iterations = iteration + 1;
     if (progress && !progress->report(static_cast<double>(iteration + 1) / this->Options.maximumIterations))
     {
@@ -709,6 +718,7 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
       this->refine(pending, true);
     }
     this->Stats.secondsRefine += secondsSince(start);
+    this->Stats.raysRefine += raysSince(); // with the leaf splits of the iteration
 
     const bool structureChanged = splits > 0 || !pending.empty();
     steadyIterations = structureChanged || extrapolated ? 0 : steadyIterations + 1;

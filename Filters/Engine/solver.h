@@ -59,6 +59,10 @@ struct RadiosityStatistics
   double secondsRefine = 0.0;
   double secondsGather = 0.0;
   double secondsPushPull = 0.0;
+  /// Rays of each phase of the solve (link visibility in refinement; leaf kernels in
+  /// gather and push-pull); the point evaluation's are raysCast() minus their sum.
+  std::uint64_t raysRefine = 0;
+  std::uint64_t raysPushPull = 0;
 };
 
 /// Irradiance by light category at a point, and the sky view factor there: the

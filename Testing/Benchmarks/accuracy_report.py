@@ -63,6 +63,28 @@ def table(scene, reference, runs):
             percent(g["bias"]), percent(sky["rms"]), percent(refl["bias"]) if refl["mean"] > 0 else "-",
             percent(run["shadow_disagreement"]), percent(g["reference_error"]), " (noisy)" if noisy else ""))
     lines.append("")
+    lines += phases(runs)
+    return lines
+
+
+def phases(runs):
+    """Share of time and rays by phase, for each output mode at the default tolerance."""
+    rows = [r for r in runs if r["tolerance"] == 1e-3 and "phase_rays" in r]
+    if not rows:
+        return []
+    lines = ["Time and rays by phase at tolerance 1e-3 (visibility build, refinement, gather and "
+             "push-pull, point values):", "",
+             "| method | time: build / refine / gather, push-pull / points | rays: refine / gather, push-pull / points |",
+             "|---|---|---|"]
+    for run in rows:
+        t, n = run["phase_seconds"], run["phase_rays"]
+        total_t = max(1e-12, t["visibility"] + t["refine"] + t["gather"] + t["push_pull"] + t["points"])
+        total_n = max(1, n["refine"] + n["gather_push_pull"] + n["points"])
+        lines.append("| %s | %.0f / %.0f / %.0f / %.0f %% | %.0f / %.0f / %.0f %% |" % (
+            METHODS.get(run["method"], run["method"]), 100 * t["visibility"] / total_t, 100 * t["refine"] / total_t,
+            100 * (t["gather"] + t["push_pull"]) / total_t, 100 * t["points"] / total_t,
+            100 * n["refine"] / total_n, 100 * n["gather_push_pull"] / total_n, 100 * n["points"] / total_n))
+    lines.append("")
     return lines
 
 
