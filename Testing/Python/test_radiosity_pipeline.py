@@ -75,6 +75,11 @@ class OlindaRadiosity(unittest.TestCase):
         self.assertGreater(field(output, "Elements"), 10)
         self.assertLess(field(output, "Elements"), 24200)
         self.assertGreater(field(output, "Rays"), 0)
+        # Rays by phase add up to all of them; the points' values take most (the gather).
+        phases = [field(output, name) for name in ("RaysRefine", "RaysPushPull", "RaysPoints")]
+        self.assertEqual(sum(phases), field(output, "Rays"))
+        self.assertGreater(phases[2], phases[0])
+        self.assertGreater(field(output, "SecondsPoints"), 0.0)
         self.assertGreaterEqual(field(output, "Iterations"), 1)
         leaves = self.radiosity.GetLeafMeshOutput()
         self.assertGreater(leaves.GetNumberOfCells(), 10)
