@@ -205,11 +205,7 @@ def render(actors, png, size=(1000, 800), view=None, overlays=(), key=None, back
     renderer.SetBackground(*background)
     if key:
         renderer.SetViewport(0.0, 0.0, 0.84, 1.0)
-        strip = vtkRenderer()
-        strip.SetViewport(0.84, 0.0, 1.0, 1.0)
-        strip.SetBackground(*background)
-        strip.AddActor2D(key)
-        window.AddRenderer(strip)
+        _add_key_strip(window, key, 0.84, background)
     for actor in actors:
         renderer.AddActor(actor)
     if view:
@@ -244,15 +240,20 @@ def render_panels(panels, png, size=(1600, 700), key=None, background=(1.0, 1.0,
             renderer.AddActor2D(overlay)
         window.AddRenderer(renderer)
     if key:
-        strip = vtkRenderer()
-        strip.SetViewport(width, 0.0, 1.0, 1.0)
-        strip.SetBackground(*background)
-        strip.AddActor2D(key)
-        window.AddRenderer(strip)
+        _add_key_strip(window, key, width, background)
     window.SetOffScreenRendering(1)
     window.SetSize(*size)
     window.Render()
     _write_png(window, png)
+
+
+def _add_key_strip(window, key, left, background):
+    """The legend in a renderer of its own, from `left` to the window's right edge."""
+    strip = vtkRenderer()
+    strip.SetViewport(left, 0.0, 1.0, 1.0)
+    strip.SetBackground(*background)
+    strip.AddActor2D(key)
+    window.AddRenderer(strip)
 
 
 def _write_png(window, png):

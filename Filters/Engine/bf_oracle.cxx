@@ -156,7 +156,7 @@ bool modelMissesExchange(const HElement&, const Link& link, const OracleSettings
 double linkPower(const HElement& receiver, const Link& link)
 {
   const Spectrum e = link.sender->emittance();
-  const double emittance = std::max({ e[0], e[1], e[2] });
+  const double emittance = largestBand(e);
   // A cluster receiver's links carry normal irradiance; its surfaces take on average
   // S = 1/4 of it (Sillion's isotropic receiver, paper eq. 1).
   return emittance * link.kernel * link.visibility * receiver.area() * (link.directional ? receiver.scaleFactor() : 1.0);
@@ -190,7 +190,7 @@ Refinement decideRefinement(HElement& receiver, const Link& link, const OracleSe
   // Besides BF, the kernel's variation over the receiver bounds the error of using one
   // value for the whole element (the bounds-based refinement the paper cites [10, 5]).
   const Spectrum e = link.sender->emittance();
-  const double variation = std::max({ e[0], e[1], e[2] }) * link.kernelSpread * link.visibility * receiver.area();
+  const double variation = largestBand(e) * link.kernelSpread * link.visibility * receiver.area();
   // Cluster kernels and coarse terrain quads are far-field estimates: near the other
   // element they are refined while they carry any noticeable power.
   const bool nearApproximation = !link.sender->isExternal() && (approximated(receiver) || approximated(*link.sender)) &&

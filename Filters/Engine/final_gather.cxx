@@ -11,11 +11,6 @@
 
 namespace terralux
 {
-Vec3 cosineWeightedDirection(const Vec3& n, double s, double t)
-{
-  return CosineFrame(n).direction(s, t);
-}
-
 CosineFrame::CosineFrame(const Vec3& n)
   : N(n)
 {
@@ -44,13 +39,7 @@ FinalGather::FinalGather(const Visibility& rays, const std::vector<PolygonElemen
 Spectrum FinalGather::radiosityAt(const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front) const
 {
   const auto& e = leaf.Irradiance;
-  Spectrum sun{};
-  for (HElement* source : this->Suns)
-  {
-    const double transport = transportToPoint(hit.point, front, *source, this->Rays, 1, 0);
-    for (int band = 0; band < maxBands; ++band)
-      sun[band] += transport * source->emittance()[band];
-  }
+  const Spectrum sun = directSunlight(hit.point, front, this->Suns, this->Rays);
   Spectrum b;
   for (int band = 0; band < maxBands; ++band)
     b[band] =
@@ -79,16 +68,15 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   if (this->Sky)
     this->Sky->irradiance(normal, open, openOmega);
   Spectrum hidden{}, surfaces{};
-  int hiddenSky = 0, n = 0;
-  // Each ray's share of the point's irradiance beyond the open sky (largest
-  // band): what it meets minus the sky it hides; its spread decides when to
-  // stop.
+  int hiddenSky = 0;
+  // Each ray's share of the point's irradiance beyond the open sky (largest band):
+  // what it meets minus the sky it hides; its spread sets how many rays are needed.
   double sum = 0.0, sumOfSquares = 0.0;
-  // A pilot of budget.pilot rays of their own sets how many rays the point
-  // needs (their standard error, as for independent rays, against the
-  // irradiance it receives); the estimate then comes from that many fresh
-  // stratified rays. Rays that decided when to stop would be biased: they stop
-  // early where they happened to miss a bright hit.
+  // A pilot of budget.pilot rays of their own sets how many rays the point needs
+  // (their standard error, as for independent rays, against the irradiance it
+  // receives); the estimate then comes from that many fresh stratified rays. Rays that
+  // decided when to stop would be biased: they stop early where they happened to miss
+  // a bright hit.
   const CosineFrame frame(normal);
   auto cast = [&](int count, SampleGenerator& random)
   {
@@ -110,7 +98,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
         for (int band = 0; band < maxBands; ++band)
           hidden[band] += l[band];
         ++hiddenSky;
-        value -= pi * std::max({ l[0], l[1], l[2] });
+        value -= pi * largestBand(l);
       }
       const PolygonElement* leaf = surfacesSend ? this->leafAt(hit) : nullptr;
       if (leaf)
@@ -123,7 +111,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
           const Spectrum b = this->radiosityAt(*leaf, hit, front);
           for (int band = 0; band < maxBands; ++band)
             surfaces[band] += b[band];
-          value += std::max({ b[0], b[1], b[2] });
+          value += largestBand(b);
         }
       }
       sum += value;
@@ -137,7 +125,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     cast(budget.pilot, pilotRandom);
     const double mean = sum / budget.pilot;
     const double variance = std::max(0.0, sumOfSquares / budget.pilot - mean * mean);
-    const double received = directIrradiance + std::max({ open[0], open[1], open[2] }) + mean;
+    const double received = directIrradiance + largestBand(open) + mean;
     const double target = budget.relativeError * std::max(received, 1e-12);
     // A whole square of strata: a partly filled last row would leave a band of the
     // hemisphere unsampled.
@@ -147,17 +135,15 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     count = side * side;
   }
   cast(count, random);
-  n = count;
-  // E = pi x the mean radiance over cosine-weighted directions: the mean
-  // radiosity.
+  // E = pi x the mean radiance over cosine-weighted directions: the mean radiosity.
   for (int band = 0; band < maxBands; ++band)
   {
-    result.surfaces[band] = surfaces[band] / n;
-    result.sky[band] = std::max(0.0, open[band] - pi * hidden[band] / n);
+    result.surfaces[band] = surfaces[band] / count;
+    result.sky[band] = std::max(0.0, open[band] - pi * hidden[band] / count);
   }
   if (this->Sky)
-    result.skyViewFactor = std::max(0.0, openOmega / pi - static_cast<double>(hiddenSky) / n);
-  result.rays = n;
+    result.skyViewFactor = std::max(0.0, openOmega / pi - static_cast<double>(hiddenSky) / count);
+  result.rays = count;
   return result;
 }
 } // namespace terralux

@@ -81,14 +81,11 @@ class CosineFrame
 {
 public:
   explicit CosineFrame(const Vec3& n);
-  /// From a point (s, t) of the unit square, as cosineWeightedDirection.
+  /// From a point (s, t) of the unit square (Malley's method: a uniform point of the
+  /// disc lifted onto the hemisphere).
   Vec3 direction(double s, double t) const;
 
 private:
   Vec3 N, U, V;
 };
-
-/// Direction about unit normal n, cosine-weighted, from a point (s, t) of the unit square
-/// (Malley's method: a uniform point of the disc lifted onto the hemisphere).
-Vec3 cosineWeightedDirection(const Vec3& n, double s, double t);
 } // namespace terralux

@@ -229,6 +229,20 @@ double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
   return transport * static_cast<const SkyPatchElement&>(sender).geometricShare(normal) / pi;
 }
 
+Spectrum directSunlight(
+  const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns, const Visibility& visibility)
+{
+  Spectrum result{};
+  for (HElement* sun : suns)
+  {
+    const double transport = transportToPoint(point, normal, *sun, visibility, 1, 0);
+    const Spectrum flux = sun->emittance();
+    for (int band = 0; band < maxBands; ++band)
+      result[band] += transport * flux[band];
+  }
+  return result;
+}
+
 int lightCategoryOf(const HElement& sender)
 {
   switch (sender.kind())

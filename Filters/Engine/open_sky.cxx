@@ -7,14 +7,6 @@
 
 namespace terralux
 {
-namespace
-{
-double largestOf(const Spectrum& s)
-{
-  return std::max({ s[0], s[1], s[2] });
-}
-} // namespace
-
 OpenSky::OpenSky(const SkyHierarchy& sky)
   : Sky(sky)
   , Deepest(std::min(sky.finestLevel(), 4))
@@ -58,12 +50,10 @@ OpenSky::~OpenSky() = default;
 
 void OpenSky::accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, double& omega) const
 {
-  const SkyPatchElement& patch =
-    *this->Levels[level][static_cast<std::size_t>(iu) * SkyHierarchy::cellsPerSide(level) + iv];
-
+  const std::size_t index = static_cast<std::size_t>(iu) * SkyHierarchy::cellsPerSide(level) + iv;
+  const SkyPatchElement& patch = *this->Levels[level][index];
   // Cheap side test first: n . d >= n . c - |d - c| for unit n, and |d - c| <= the
   // patch's radius about its centre direction c; the exact test only where it is close.
-  const std::size_t index = static_cast<std::size_t>(iu) * SkyHierarchy::cellsPerSide(level) + iv;
   const double towardCentre = glm::dot(n, patch.direction()), radius = this->Radii[level][index];
   const int side = towardCentre > radius ? 1 : (towardCentre < -radius ? -1 : patch.sideOf(n));
   if (side < 0)
@@ -71,7 +61,7 @@ void OpenSky::accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, 
   // The plane's horizon crosses the patch: split it while what it gives could matter,
   // since its radiance is taken as its mean where splitting stops.
   if (side == 0 && level < this->Deepest &&
-    (level < 3 || patch.projectedSolidAngle(n) * largestOf(patch.emittance()) > 1e-4 * this->Brightest))
+    (level < 3 || patch.projectedSolidAngle(n) * largestBand(patch.emittance()) > 1e-4 * this->Brightest))
   {
     for (int k = 0; k < 4; ++k)
       this->accumulate(level + 1, 2 * iu + k / 2, 2 * iv + k % 2, n, e, omega);

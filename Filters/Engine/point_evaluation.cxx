@@ -19,12 +19,8 @@ namespace
 bool leafLooksOpen(const PolygonElement& leaf)
 {
   const double openPlane = 0.5 * (1.0 + std::max(-1.0, std::min(1.0, leaf.normal().z)));
-  double total = 0.0;
-  for (const Spectrum& category : leaf.Irradiance)
-    total += std::max({ category[0], category[1], category[2] });
-  const Spectrum& reflected = leaf.Irradiance[ReflectedLight];
   return leaf.SkyViewFactor >= 0.999 * openPlane &&
-    std::max({ reflected[0], reflected[1], reflected[2] }) <= 0.002 * total;
+    largestBand(leaf.Irradiance[ReflectedLight]) <= 0.002 * leaf.receivedIrradiance();
 }
 } // namespace
 
@@ -46,10 +42,11 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   const int clearSamples = this->Options.visibilitySamples;
   // Seeded by the point itself: points sharing a leaf (posts inside a terrain patch)
   // must not share their jitter, or the noise would be the same pattern at each.
-  std::uint64_t salt = this->Rays->seedOf(point) ^ (leaf.id() * 31);
+  const std::uint64_t pointSeed = this->Rays->seedOf(point);
+  std::uint64_t salt = pointSeed ^ (leaf.id() * 31);
   // The gather's rays belong to the point alone, so that two discretisations of one
   // surface (terrain patches, triangles) cast the same rays from each post.
-  const std::uint64_t gatherSeed = this->Rays->seedOf(point) * 0x9E3779B97F4A7C15ull;
+  const std::uint64_t gatherSeed = pointSeed * 0x9E3779B97F4A7C15ull;
   // A point on the leaf's border is the limit from inside the leaf: at a concave
   // junction (a wall's foot, a box's corner) the point itself lies in the plane of the
   // other surface, which it would see edge-on with a form factor of 0, and rays that
@@ -106,7 +103,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // surface the point's normal lifts from.
     const Vec3 lifted = inside + 2.0 * this->Rays->offset() * normal;
     const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
-      std::max({ sun[0], sun[1], sun[2] }), this->LargestRadiosity > 0.0);
+      largestBand(sun), this->LargestRadiosity > 0.0);
     irradiance[ReflectedLight] = light.surfaces;
     irradiance[SkyLight] = light.sky;
     result.skyViewFactor = light.skyViewFactor;
@@ -116,15 +113,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
 
 Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal) const
 {
-  Spectrum result{};
-  for (HElement* sun : this->Suns)
-  {
-    const double transport = transportToPoint(point, normal, *sun, *this->Rays, 1, 0);
-    const Spectrum flux = sun->emittance();
-    for (int band = 0; band < maxBands; ++band)
-      result[band] += transport * flux[band];
-  }
-  return result;
+  return directSunlight(point, normal, this->Suns, *this->Rays);
 }
 
 void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,

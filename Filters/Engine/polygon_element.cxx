@@ -80,6 +80,14 @@ const std::vector<HElement*>& PolygonElement::children()
   return this->Children;
 }
 
+double PolygonElement::receivedIrradiance() const
+{
+  double total = 0.0;
+  for (const Spectrum& category : this->Irradiance)
+    total += largestBand(category);
+  return total;
+}
+
 const PolygonElement* PolygonElement::leafHolding(const Vec3& p) const
 {
   const PolygonElement* element = this;

@@ -59,6 +59,8 @@ public:
 
   /// Irradiance by category once push-pull has run (leaves only).
   std::array<Spectrum, lightCategories> Irradiance{};
+  /// All of it, each category by its largest band.
+  double receivedIrradiance() const;
   /// Cosine-weighted fraction of the sky the leaf sees, once push-pull has run (0
   /// without a sky).
   double SkyViewFactor = 0.0;

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -18,6 +19,12 @@ using Spectrum = std::array<double, maxBands>;
 inline Spectrum uniformSpectrum(double value)
 {
   return { value, value, value };
+}
+
+/// The largest band of a spectrum: what the oracle and the samplers measure by.
+inline double largestBand(const Spectrum& s)
+{
+  return std::max({ s[0], s[1], s[2] });
 }
 
 /// FNV-1a over the bits of a position (-0 and +0 alike): for hash maps keyed by exact

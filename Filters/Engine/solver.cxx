@@ -32,11 +32,6 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
-
-double largest(const Spectrum& s)
-{
-  return std::max({ s[0], s[1], s[2] });
-}
 } // namespace
 
 HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options)
@@ -112,7 +107,7 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
   // A sun at or below the horizon lights nothing: beyond the scene's edge the ground
   // would hide it, and inside the scene steep slopes that face it are shadowed anyway;
   // it gets no element and no links (they would only refine toward edge slopes).
-  if (largest(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
+  if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
     this->Suns.push_back(this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance));
 }
 
@@ -319,7 +314,7 @@ void HierarchicalRadiosity::gather()
       if (link.visibility < 1.0)
       {
         element.GatheredPartial +=
-          link.kernel * link.visibility * std::max({ emittance[0], emittance[1], emittance[2] });
+          link.kernel * link.visibility * largestBand(emittance);
       }
       element.GatheredSkyView +=
         skyViewOf(*link.sender, static_cast<PolygonElement&>(element).normal(), link.kernel * link.visibility);
@@ -466,7 +461,7 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, const V
       }
       polygon.LeafKernelPartial[k] = partial;
       if (partial)
-        polygon.DeferredPartial += polygon.LeafKernels[k] * largest(link.sender->emittance());
+        polygon.DeferredPartial += polygon.LeafKernels[k] * largestBand(link.sender->emittance());
       polygon.DeferredSkyView += skyViewOf(*link.sender, polygon.normal(), polygon.LeafKernels[k]);
     }
     polygon.LeafKernelKeys = std::move(keys);

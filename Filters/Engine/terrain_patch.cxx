@@ -154,9 +154,7 @@ const TerrainPatch* TerrainPatch::mostLitLeafAt(int i, int j) const
       const TerrainPatch* leaf = this->leafHolding(i + du, j + dv);
       if (!leaf)
         continue;
-      double received = 0.0;
-      for (const Spectrum& category : leaf->Irradiance)
-        received += std::max({ category[0], category[1], category[2] });
+      const double received = leaf->receivedIrradiance();
       // Only a clearly brighter leaf: between leaves of one open slope the choice only
       // sets which way the point is nudged, and should not hop with noise.
       if (!best || received > 1.1 * most + 1e-9)

@@ -224,10 +224,9 @@ Visibility::~Visibility()
 
 namespace
 {
-bool castOcclusion(RTCScene scene, const Vec3& origin, const Vec3& direction, double tnear, double tfar)
+// A ray of Embree's single-ray API from scene-relative double values.
+RTCRay embreeRay(const Vec3& origin, const Vec3& direction, double tnear, double tfar)
 {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
   RTCRay ray;
   ray.org_x = static_cast<float>(origin.x);
   ray.org_y = static_cast<float>(origin.y);
@@ -241,6 +240,14 @@ bool castOcclusion(RTCScene scene, const Vec3& origin, const Vec3& direction, do
   ray.mask = 0xFFFFFFFFu;
   ray.id = 0;
   ray.flags = 0;
+  return ray;
+}
+
+bool castOcclusion(RTCScene scene, const Vec3& origin, const Vec3& direction, double tnear, double tfar)
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray = embreeRay(origin, direction, tnear, tfar);
   rtcOccluded1(scene, &context, &ray);
   return ray.tfar < 0.0f; // Embree marks a hit by tfar = -inf
 }
@@ -269,21 +276,10 @@ bool Visibility::firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, Sur
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit query;
-  query.ray.org_x = static_cast<float>(origin.x);
-  query.ray.org_y = static_cast<float>(origin.y);
-  query.ray.org_z = static_cast<float>(origin.z);
-  query.ray.dir_x = static_cast<float>(d.x);
-  query.ray.dir_y = static_cast<float>(d.y);
-  query.ray.dir_z = static_cast<float>(d.z);
   // From the lifted origin on: a scene-relative offset can exceed small objects (a 1 m
   // box on 100 km of ground lifts rays by 1.4 m), and skipping it would miss the
   // ground just below a wall.
-  query.ray.tnear = 0.0f;
-  query.ray.tfar = std::numeric_limits<float>::infinity();
-  query.ray.time = 0.0f;
-  query.ray.mask = 0xFFFFFFFFu;
-  query.ray.id = 0;
-  query.ray.flags = 0;
+  query.ray = embreeRay(origin, d, 0.0, std::numeric_limits<float>::infinity());
   query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(this->Scene, &context, &query);
