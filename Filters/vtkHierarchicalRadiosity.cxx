@@ -151,7 +151,7 @@ vtkTypeBool vtkHierarchicalRadiosity::ProcessRequest(
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
   {
     // The whole scene and whole sky are needed whatever extent is asked of output 0.
-    for (int port = 0; port < 2; ++port)
+    for (int port = 0; port < this->GetNumberOfInputPorts(); ++port)
       for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
       {
         vtkInformation* info = inputVector[port]->GetInformationObject(k);
@@ -250,11 +250,7 @@ int vtkHierarchicalRadiosity::Solve(
     scene.AddDataSet(input, this->DefaultReflectance, this->ReflectanceArrayName, this->EmissionArrayName,
       this->UseTerrainHierarchy != 0);
   }
-  for (int k = 0; k < inputVector[1]->GetNumberOfInformationObjects(); ++k)
-  {
-    scene.AddLight(inputVector[1]->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()));
-  }
-  if (!scene.Sky && scene.Suns.empty() && !scene.HasEmission)
+  if (!this->AddLights(inputVector, scene) && !scene.HasEmission)
   {
     throw terralux::Error("no light source: connect a vtkSunSource or vtkSkySource with "
                           "AddLightConnection(), or give an EmissionArrayName");
@@ -276,7 +272,7 @@ int vtkHierarchicalRadiosity::Solve(
   }
   for (const vtkRadiosityScene::SunLight& sun : scene.Suns)
   {
-    solver->addSun(sun.direction, sun.irradiance);
+    solver->addSun(sun.direction, sun.irradiance, sun.hours);
   }
   solver->setSky(scene.Sky.get());
   this->UpdateProgress(0.1);
@@ -309,6 +305,7 @@ int vtkHierarchicalRadiosity::Solve(
   pointOptions.bands = this->NumberOfBands;
   pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;
   pointOptions.hornNormals = this->PostNormals == HORN_NORMALS;
+  pointOptions.sunshine = scene.SunshineDuration;
   int index = 0;
   auto withResults = [&](vtkDataSet* input) {
     vtkSmartPointer<vtkDataSet> copy;
@@ -378,9 +375,23 @@ int vtkHierarchicalRadiosity::Solve(
 
   vtkRadiosityOutputs::BuildLeafMesh(*solver, this->NumberOfBands, scene.Sky != nullptr, leafMesh);
   vtkRadiosityOutputs::BuildLinks(*solver, links);
+  this->FinishOutputs(output, leafMesh);
   this->UpdateProgress(1.0);
   return 1;
 }
+
+//------------------------------------------------------------------------------
+bool vtkHierarchicalRadiosity::AddLights(vtkInformationVector** inputVector, vtkRadiosityScene& scene)
+{
+  for (int k = 0; k < inputVector[1]->GetNumberOfInformationObjects(); ++k)
+  {
+    scene.AddLight(inputVector[1]->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()));
+  }
+  return scene.Sky || !scene.Suns.empty();
+}
+
+//------------------------------------------------------------------------------
+void vtkHierarchicalRadiosity::FinishOutputs(vtkDataObject*, vtkPolyData*) {}
 
 //------------------------------------------------------------------------------
 void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)

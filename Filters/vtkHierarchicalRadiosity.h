@@ -62,6 +62,7 @@
 #include "vtkAlgorithm.h"
 
 class vtkPolyData;
+class vtkRadiosityScene;
 
 class TERRALUXFILTERS_EXPORT vtkHierarchicalRadiosity : public vtkAlgorithm
 {
@@ -272,6 +273,12 @@ protected:
   virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   // RequestData's work; throws terralux::Error on bad input.
   int Solve(vtkInformationVector** inputVector, vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links);
+  // The solve's light sources: those on input port 1 (a subclass may make its own, as
+  // vtkSolarIrradiation makes a time range's suns and cumulative sky). Throws
+  // terralux::Error on bad input; returns false where there is no light at all.
+  virtual bool AddLights(vtkInformationVector** inputVector, vtkRadiosityScene& scene);
+  // Last touches to the filled outputs (array names, field data).
+  virtual void FinishOutputs(vtkDataObject* output, vtkPolyData* leafMesh);
 
   double ErrorTolerance;
   double MinimumElementArea;

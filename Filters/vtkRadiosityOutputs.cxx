@@ -128,11 +128,11 @@ Values valuesAtPoint(const terralux::PointIrradiance& point, const Spectrum& ref
   return v;
 }
 
-// SkyViewFactor for a terrain lit by a sky, NaN until set.
-vtkSmartPointer<vtkDoubleArray> skyViewFactorArray(vtkIdType count)
+// One value per point (SkyViewFactor, SunshineDuration), NaN until set.
+vtkSmartPointer<vtkDoubleArray> scalarArray(const char* name, vtkIdType count)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName("SkyViewFactor");
+  array->SetName(name);
   array->SetNumberOfTuples(count);
   array->Fill(std::numeric_limits<double>::quiet_NaN());
   return array;
@@ -167,7 +167,8 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
   const vtkIdType count = output->GetNumberOfPoints();
   const double none = std::numeric_limits<double>::quiet_NaN();
   const auto arrays = makeArrays(bands, count, none);
-  const vtkSmartPointer<vtkDoubleArray> skyViewFactor = withSky ? skyViewFactorArray(count) : nullptr;
+  const vtkSmartPointer<vtkDoubleArray> skyViewFactor = withSky ? scalarArray("SkyViewFactor", count) : nullptr;
+  const vtkSmartPointer<vtkDoubleArray> sunshine = options.sunshine ? scalarArray("SunshineDuration", count) : nullptr;
   std::array<double*, quantities> out{};
   for (int q = 0; q < quantities; ++q)
     out[q] = arrays[q]->GetPointer(0);
@@ -199,6 +200,8 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
             put(post, valuesAtPoint(result, leaf->reflectance(), leaf->emission()));
             if (skyViewFactor)
               skyViewFactor->SetValue(post, result.skyViewFactor);
+            if (sunshine)
+              sunshine->SetValue(post, result.sunlitHours);
           }
       });
     }
@@ -228,7 +231,10 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
               for (int q = 0; q < quantities; ++q)
                 for (int band = 0; band < terralux::maxBands; ++band)
                   v[q][band] = flat[q * terralux::maxBands + band];
-              v[1] = solver.directSunAt(grid.post(i, j), normalAt(i, j));
+              double sunlitHours = 0.0;
+              v[1] = solver.directSunAt(grid.post(i, j), normalAt(i, j), &sunlitHours);
+              if (sunshine)
+                sunshine->SetValue(i + static_cast<vtkIdType>(j) * nx, sunlitHours);
               if (skyViewFactor)
                 skyViewFactor->SetValue(i + static_cast<vtkIdType>(j) * nx, flat[skyViewComponent]);
               for (int band = 0; band < terralux::maxBands; ++band)
@@ -246,6 +252,8 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
     output->GetPointData()->AddArray(array);
   if (skyViewFactor)
     output->GetPointData()->AddArray(skyViewFactor);
+  if (sunshine)
+    output->GetPointData()->AddArray(sunshine);
   output->GetPointData()->SetActiveScalars("Irradiance");
 }
 
@@ -329,9 +337,13 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   const double none = std::numeric_limits<double>::quiet_NaN();
   const auto arrays = makeArrays(bands, count, none);
   const vtkSmartPointer<vtkDoubleArray> skyViewFactor =
-    scene.Sky && terrainGrid ? skyViewFactorArray(count) : nullptr;
+    scene.Sky && terrainGrid ? scalarArray("SkyViewFactor", count) : nullptr;
   if (skyViewFactor)
     output->GetPointData()->AddArray(skyViewFactor);
+  const vtkSmartPointer<vtkDoubleArray> sunshine =
+    options.sunshine ? scalarArray("SunshineDuration", count) : nullptr;
+  if (sunshine)
+    output->GetPointData()->AddArray(sunshine);
 
   // One evaluation per side of each point, in parallel.
   std::vector<const terralux::PolygonElement*> leaves;
@@ -347,7 +359,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
       owners.emplace_back(p, &side);
     }
   std::vector<Values> values(points.size());
-  std::vector<double> skyViews(points.size(), 0.0);
+  std::vector<double> skyViews(points.size(), 0.0), sunlitHours(points.size(), 0.0);
   if (evaluateAtPoints)
   {
     // The first leaf of each side, then the side's other leaves; the most open wins.
@@ -383,6 +395,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
       const std::size_t b = best[k];
       values[k] = valuesAtPoint(results[b], allLeaves[b]->reflectance(), allLeaves[b]->emission());
       skyViews[k] = results[b].skyViewFactor;
+      sunlitHours[k] = results[b].sunlitHours;
     }
   }
   else
@@ -395,7 +408,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
         const Side& side = *owners[k].second;
         Values v{};
         accumulate(v, side.leafSum, 1.0 / side.leafWeight);
-        v[1] = solver.directSunAt(points[k], normals[k]);
+        v[1] = solver.directSunAt(points[k], normals[k], &sunlitHours[k]);
         for (int band = 0; band < terralux::maxBands; ++band)
         {
           v[0][band] = v[1][band] + v[2][band] + v[3][band];
@@ -411,11 +424,12 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   {
     const vtkIdType p = owners[k].first;
     Values sum{};
-    double weight = 0.0, skyView = 0.0;
+    double weight = 0.0, skyView = 0.0, sunlit = 0.0;
     for (; k < owners.size() && owners[k].first == p; ++k)
     {
       accumulate(sum, values[k], owners[k].second->area);
       skyView += skyViews[k] * owners[k].second->area;
+      sunlit += sunlitHours[k] * owners[k].second->area;
       weight += owners[k].second->area;
     }
     Values mean{};
@@ -423,6 +437,8 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     store(arrays, p, mean, bands);
     if (skyViewFactor)
       skyViewFactor->SetValue(p, skyView / weight);
+    if (sunshine)
+      sunshine->SetValue(p, sunlit / weight);
   }
   for (const auto& array : arrays)
     output->GetPointData()->AddArray(array);
@@ -528,7 +544,7 @@ void vtkRadiosityOutputs::BuildLeafMesh(
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
   const auto arrays = makeArrays(bands, static_cast<vtkIdType>(positions.size()));
-  const auto skyViewFactor = withSky ? skyViewFactorArray(static_cast<vtkIdType>(positions.size())) : nullptr;
+  const auto skyViewFactor = withSky ? scalarArray("SkyViewFactor", static_cast<vtkIdType>(positions.size())) : nullptr;
   for (std::size_t k = 0; k < positions.size(); ++k)
   {
     points->SetPoint(static_cast<vtkIdType>(k), positions[k].x, positions[k].y, positions[k].z);

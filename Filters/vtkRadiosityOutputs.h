@@ -21,9 +21,10 @@ struct vtkRadiosityOutputs
     int bands = 1;
     bool evaluateAtPoints = true;
     bool hornNormals = false; ///< terrain posts take Horn's 3 x 3 normal, else the area-weighted one
+    bool sunshine = false;    ///< add SunshineDuration: the hours of the suns that reach each point
   };
   /// Adds Irradiance, SunIrradiance, SkyIrradiance, ReflectedIrradiance and Radiosity
-  /// (and SkyViewFactor for a terrain lit by a sky) to `output`, a shallow copy of
+  /// (SkyViewFactor for a terrain lit by a sky, SunshineDuration if asked) to `output`, a shallow copy of
   /// input `index` of the scene.
   /// With evaluateAtPoints off, each point takes the area-weighted average of the
   /// leaves that have it as a corner instead (fast; values smeared over the elements

@@ -402,7 +402,7 @@ void vtkRadiosityScene::AddLight(vtkDataObject* light)
     throw terralux::Error("the sun on input port 1 needs a finite, non-zero SunDirection and a finite "
                           "SunNormalIrradiance >= 0 (W/m^2)");
   }
-  this->Suns.push_back({ toward, terralux::uniformSpectrum(flux) });
+  this->Suns.push_back({ toward, terralux::uniformSpectrum(flux), 0.0 });
 }
 
 void vtkRadiosityScene::AddSky(int level, int bands, std::vector<double> averages)

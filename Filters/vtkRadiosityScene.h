@@ -40,6 +40,7 @@ public:
   {
     terralux::Vec3 direction;
     terralux::Spectrum irradiance;
+    double hours = 0.0; ///< the time a step of a time series stands for; 0 for an instant
   };
 
   terralux::RadiosityScene Scene;
@@ -48,6 +49,7 @@ public:
   std::unique_ptr<terralux::SkyHierarchy> Sky; ///< the sum of the skies added, or null
   std::vector<SunLight> Suns;
   bool HasEmission = false;
+  bool SunshineDuration = false; ///< the outputs add SunshineDuration (the suns' hours at each point)
   std::size_t SkippedCells = 0; ///< vertices and lines, ignored
 
 private:

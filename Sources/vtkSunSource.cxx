@@ -146,28 +146,19 @@ int vtkSunSource::RequestData(
     this->SolarConstant / (position.earthSunDistanceAU * position.earthSunDistanceAU);
 
   terralux::ClearSkyIrradiance irradiance;
-  switch (this->IrradianceModel)
+  if (this->IrradianceModel == ESRA || this->IrradianceModel == INEICHEN_PEREZ)
   {
-    case ESRA:
-      irradiance = terralux::esraClearSky(90.0 - position.geometricZenithDeg, place[2],
-        this->LinkeTurbidity, this->ExtraterrestrialIrradiance);
-      break;
-    case INEICHEN_PEREZ:
-      irradiance = terralux::ineichenPerezClearSky(
-        position.zenithDeg, place[2], this->LinkeTurbidity, this->ExtraterrestrialIrradiance);
-      break;
-    default:
-      if (position.zenithDeg < 90.0)
-      {
-        irradiance.directNormalWm2 = this->UserNormalIrradiance;
-        irradiance.diffuseHorizontalWm2 = this->UserDiffuseHorizontalIrradiance;
-        irradiance.globalHorizontalWm2 =
-          irradiance.directNormalWm2 * std::cos(position.zenithDeg * degree) + irradiance.diffuseHorizontalWm2;
-      }
+    irradiance = terralux::clearSkyIrradiance(this->IrradianceModel == ESRA ? terralux::ClearSkyModel::Esra
+                                                                            : terralux::ClearSkyModel::IneichenPerez,
+      position.zenithDeg, position.geometricZenithDeg, place[2], this->LinkeTurbidity,
+      this->ExtraterrestrialIrradiance);
   }
-  if (position.zenithDeg >= 90.0) // the apparent sun is below the horizon
+  else if (position.zenithDeg < 90.0) // the apparent sun is above the horizon
   {
-    irradiance = terralux::ClearSkyIrradiance{};
+    irradiance.directNormalWm2 = this->UserNormalIrradiance;
+    irradiance.diffuseHorizontalWm2 = this->UserDiffuseHorizontalIrradiance;
+    irradiance.globalHorizontalWm2 =
+      irradiance.directNormalWm2 * std::cos(position.zenithDeg * degree) + irradiance.diffuseHorizontalWm2;
   }
   this->NormalIrradiance = irradiance.directNormalWm2;
   this->DiffuseHorizontalIrradiance = irradiance.diffuseHorizontalWm2;

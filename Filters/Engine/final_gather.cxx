@@ -36,10 +36,37 @@ FinalGather::FinalGather(const Visibility& rays, const std::vector<PolygonElemen
 {
 }
 
-Spectrum FinalGather::radiosityAt(const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front) const
+void FinalGather::prepareSuns()
+{
+  this->SunCumulative.clear();
+  if (this->Suns.size() <= maximumSunsPerHit)
+    return;
+  double sum = 0.0;
+  for (const HElement* sun : this->Suns)
+    this->SunCumulative.push_back(sum += largestBand(sun->emittance()));
+}
+
+Spectrum FinalGather::radiosityAt(
+  const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front, double sunSample) const
 {
   const auto& e = leaf.Irradiance;
-  const Spectrum sun = directSunlight(hit.point, front, this->Suns, this->Rays);
+  Spectrum sun{};
+  if (this->SunCumulative.empty())
+  {
+    sun = directSunlight(hit.point, front, this->Suns, this->Rays);
+  }
+  else
+  {
+    const double total = this->SunCumulative.back();
+    const auto picked = std::upper_bound(this->SunCumulative.begin(), this->SunCumulative.end() - 1,
+                          sunSample * total) - this->SunCumulative.begin();
+    HElement& chosen = *this->Suns[static_cast<std::size_t>(picked)];
+    const double chance = (this->SunCumulative[picked] - (picked > 0 ? this->SunCumulative[picked - 1] : 0.0)) / total;
+    const double transport = transportToPoint(hit.point, front, chosen, this->Rays, 1, 0) / chance;
+    const Spectrum flux = chosen.emittance();
+    for (int band = 0; band < maxBands; ++band)
+      sun[band] = transport * flux[band];
+  }
   Spectrum b;
   for (int band = 0; band < maxBands; ++band)
     b[band] =
@@ -80,6 +107,9 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   const CosineFrame frame(normal);
   auto cast = [&](int count, SampleGenerator& random)
   {
+    // The sun each hit takes (when there are many), by a golden-ratio sequence: evenly
+    // spread over the suns for any count, and unrelated to the rays' strata.
+    const double sunStart = this->SunCumulative.empty() ? 0.0 : random.uniform();
     sum = sumOfSquares = 0.0;
     hidden = surfaces = Spectrum{};
     hiddenSky = 0;
@@ -108,7 +138,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
         const Vec3 front = glm::dot(hit.normal, leaf->normal()) < 0.0 ? -hit.normal : hit.normal;
         if (glm::dot(front, d) < 0.0)
         {
-          const Spectrum b = this->radiosityAt(*leaf, hit, front);
+          const double sunSample = std::fmod(sunStart + 0.61803398874989485 * k, 1.0);
+          const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample);
           for (int band = 0; band < maxBands; ++band)
             surfaces[band] += b[band];
           value += largestBand(b);

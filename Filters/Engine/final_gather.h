@@ -62,11 +62,20 @@ public:
   GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
     double directIrradiance, bool surfacesSend = true) const;
   void setSky(const OpenSky* sky) { this->Sky = sky; }
+  /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
+  /// at every hit; more (the sun positions of a day or a year, summed in one solve)
+  /// would multiply the gather's rays, so a hit then takes one sun, chosen in
+  /// proportion to its irradiance and weighted by the inverse of that chance (unbiased;
+  /// the gather's error control sees the extra spread and adds rays where it matters).
+  void prepareSuns();
+  static constexpr std::size_t maximumSunsPerHit = 4;
 
   /// The leaf a ray's hit lies on (null where nothing solved is there).
   const PolygonElement* leafAt(const struct SurfaceHit& hit) const;
-  /// Radiosity leaving a hit on `leaf`, its direct sunlight taken at the hit.
-  Spectrum radiosityAt(const PolygonElement& leaf, const struct SurfaceHit& hit, const Vec3& front) const;
+  /// Radiosity leaving a hit on `leaf`, its direct sunlight taken at the hit;
+  /// `sunSample` in [0, 1) picks the sun when there are many.
+  Spectrum radiosityAt(
+    const PolygonElement& leaf, const struct SurfaceHit& hit, const Vec3& front, double sunSample) const;
 
 private:
   const Visibility& Rays;
@@ -74,6 +83,7 @@ private:
   const std::vector<TerrainPatch*>& Terrains;
   const std::vector<HElement*>& Suns;
   const OpenSky* Sky = nullptr;
+  std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };
 
 /// Cosine-weighted directions about one unit normal (its frame made once).

@@ -229,8 +229,8 @@ double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
   return transport * static_cast<const SkyPatchElement&>(sender).geometricShare(normal) / pi;
 }
 
-Spectrum directSunlight(
-  const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns, const Visibility& visibility)
+Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
+  const Visibility& visibility, double* sunlitHours)
 {
   Spectrum result{};
   for (HElement* sun : suns)
@@ -239,6 +239,8 @@ Spectrum directSunlight(
     const Spectrum flux = sun->emittance();
     for (int band = 0; band < maxBands; ++band)
       result[band] += transport * flux[band];
+    if (sunlitHours && transport > 0.0)
+      *sunlitHours += static_cast<const SunElement*>(sun)->duration();
   }
   return result;
 }

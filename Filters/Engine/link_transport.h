@@ -40,9 +40,10 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
   const Visibility& visibility, int samples, std::uint64_t seed);
 
 /// Direct sunlight at a point with a unit normal from every sun: normal irradiance x
-/// cosine where one ray from just above the point reaches the sun, else 0.
-Spectrum directSunlight(
-  const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns, const Visibility& visibility);
+/// cosine where one ray from just above the point reaches the sun, else 0. With
+/// `sunlitHours`, also the durations of the suns that reach the point (sunshine).
+Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
+  const Visibility& visibility, double* sunlitHours = nullptr);
 
 /// Kernel, visibility and direction of the link receiver <- sender.
 Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples);

@@ -82,7 +82,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   // Direct sun is what a ray from just above the point sees, whatever leaf the point
   // was assigned to and whether or not the links there still hold the sun (a shadowed
   // element's sun link is dropped, yet its border posts may be lit).
-  irradiance[SunLight] = this->directSunAt(point, normal);
+  irradiance[SunLight] = this->directSunAt(point, normal, &result.sunlitHours);
   // Sky and light from surfaces by a final gather from the point (inside its leaf, as
   // form factors), over the leaves' solved radiosity.
   if (gathered)
@@ -111,9 +111,9 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   return result;
 }
 
-Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal) const
+Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours) const
 {
-  return directSunlight(point, normal, this->Suns, *this->Rays);
+  return directSunlight(point, normal, this->Suns, *this->Rays, sunlitHours);
 }
 
 void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,

@@ -80,10 +80,12 @@ private:
 class SunElement : public HElement
 {
 public:
-  SunElement(std::uint64_t id, int level, const Vec3& direction, const Spectrum& flux)
+  /// `duration`: hours this sun stands for (a time series' step), 0 for an instant.
+  SunElement(std::uint64_t id, int level, const Vec3& direction, const Spectrum& flux, double duration = 0.0)
     : HElement(id, level)
     , Direction(glm::normalize(direction))
     , Flux(flux)
+    , Duration(duration)
   {
   }
   Kind kind() const override { return Kind::Sun; }
@@ -93,10 +95,12 @@ public:
   SurfaceSample sample(int, int, SampleGenerator&) const override { return { Vec3(0.0), this->Direction }; }
   double receiverFactor(const Vec3&) const override { return 0.0; }
   const Vec3& direction() const { return this->Direction; }
+  double duration() const { return this->Duration; }
 
 private:
   Vec3 Direction;
   Spectrum Flux;
+  double Duration;
   std::vector<HElement*> None;
 };
 } // namespace terralux

@@ -102,13 +102,13 @@ std::uint64_t HierarchicalRadiosity::raysCast() const
   return this->Rays->raysCast();
 }
 
-void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance)
+void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance, double duration)
 {
   // A sun at or below the horizon lights nothing: beyond the scene's edge the ground
   // would hide it, and inside the scene steep slopes that face it are shadowed anyway;
   // it gets no element and no links (they would only refine toward edge slopes).
   if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
-    this->Suns.push_back(this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance));
+    this->Suns.push_back(this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
@@ -623,6 +623,7 @@ std::size_t HierarchicalRadiosity::restrictTerrainMeshes()
 bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
 {
   this->Stats.referencePowerW = this->referencePower();
+  this->Gather->prepareSuns();
   std::vector<std::pair<HElement*, Link>> pending;
   auto addInitial = [&](HElement* sender) {
     if (sender)

@@ -71,6 +71,7 @@ struct PointIrradiance
 {
   std::array<Spectrum, lightCategories> irradiance{};
   double skyViewFactor = 0.0;
+  double sunlitHours = 0.0; ///< durations of the suns that reach the point (addSun)
 };
 
 class RadiosityProgress
@@ -92,8 +93,10 @@ public:
 
   /// External sources: any number of suns (their light adds up; one at or below the
   /// horizon, direction z <= 0, is ignored) and one sky (the hierarchy must outlive the
-  /// solver; several skies are summed into one map first).
-  void addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance);
+  /// solver; several skies are summed into one map first). A sun may stand for
+  /// `duration` hours (a time series' step; its irradiance then in Wh/m^2), which the
+  /// points it reaches add up as PointIrradiance::sunlitHours.
+  void addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance, double duration = 0.0);
   void setSky(const SkyHierarchy* sky);
 
   /// Solves; returns false when aborted through `progress`.
@@ -121,8 +124,9 @@ public:
   /// the cells around it), still through the links that reach `leaf`.
   PointIrradiance irradianceAt(const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const;
   /// Direct sunlight at a point with a unit normal: normal irradiance x cosine, 0 where
-  /// the point is shadowed (one ray per sun); zero without a sun.
-  Spectrum directSunAt(const Vec3& point, const Vec3& normal) const;
+  /// the point is shadowed (one ray per sun); zero without a sun. With `sunlitHours`,
+  /// also the durations of the suns that reach the point.
+  Spectrum directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours = nullptr) const;
   /// Many points at once, in parallel.
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
     const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const;

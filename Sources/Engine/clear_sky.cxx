@@ -89,4 +89,13 @@ ClearSkyIrradiance ineichenPerezClearSky(
     std::max(0.0, result.globalHorizontalWm2 - result.directNormalWm2 * cosZenith);
   return result;
 }
+ClearSkyIrradiance clearSkyIrradiance(ClearSkyModel model, double apparentZenithDeg, double geometricZenithDeg,
+  double heightM, double linkeTurbidity, double extraterrestrialWm2)
+{
+  if (!(apparentZenithDeg < 90.0))
+    return {};
+  return model == ClearSkyModel::Esra
+    ? esraClearSky(90.0 - geometricZenithDeg, heightM, linkeTurbidity, extraterrestrialWm2)
+    : ineichenPerezClearSky(apparentZenithDeg, heightM, linkeTurbidity, extraterrestrialWm2);
+}
 } // namespace terralux

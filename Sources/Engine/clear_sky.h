@@ -29,4 +29,15 @@ ClearSkyIrradiance esraClearSky(
 /// Ineichen-Perez: apparentZenithDeg with refraction. Zero when the sun is below the horizon.
 ClearSkyIrradiance ineichenPerezClearSky(
   double apparentZenithDeg, double heightM, double linkeTurbidity, double extraterrestrialWm2);
+
+enum class ClearSkyModel
+{
+  Esra,
+  IneichenPerez
+};
+
+/// Either model for a solar position given by its apparent (refracted) and geometric
+/// zenith angles; zero while the apparent sun is below the horizon.
+ClearSkyIrradiance clearSkyIrradiance(ClearSkyModel model, double apparentZenithDeg, double geometricZenithDeg,
+  double heightM, double linkeTurbidity, double extraterrestrialWm2);
 } // namespace terralux

@@ -101,12 +101,12 @@ double DateTime::julianDay() const
   return julianDayOf(this->year, this->month, this->day + utcHours / 24.0);
 }
 
-std::string DateTime::toUtcString() const
+DateTime DateTime::fromJulianDay(double julianDay)
 {
-  // Back from the Julian day (Meeus, Astronomical Algorithms, ch. 7).
-  const double jd = this->julianDay() + 0.5;
+  // Meeus, Astronomical Algorithms, ch. 7.
+  const double jd = julianDay + 0.5;
   const double z = std::floor(jd);
-  double fraction = jd - z;
+  const double fraction = jd - z;
   double a = z;
   if (z >= 2299161.0)
   {
@@ -117,20 +117,25 @@ std::string DateTime::toUtcString() const
   const double c = std::floor((b - 122.1) / 365.25);
   const double d = std::floor(365.25 * c);
   const double e = std::floor((b - d) / 30.6001);
-  int day = static_cast<int>(b - d - std::floor(30.6001 * e));
-  const int month = static_cast<int>(e < 14 ? e - 1 : e - 13);
-  const int year = static_cast<int>(month > 2 ? c - 4716 : c - 4715);
+  DateTime result;
+  result.day = static_cast<int>(b - d - std::floor(30.6001 * e));
+  result.month = static_cast<int>(e < 14 ? e - 1 : e - 13);
+  result.year = static_cast<int>(result.month > 2 ? c - 4716 : c - 4715);
   double seconds = std::round(fraction * 86400.0 * 1000.0) / 1000.0;
   if (seconds >= 86400.0)
-  {
-    seconds -= 86400.0; // rounding reached midnight; rare, keep the date simple
-    day += 1;
-  }
-  const int h = static_cast<int>(seconds / 3600.0);
-  const int m = static_cast<int>((seconds - h * 3600.0) / 60.0);
-  const double s = seconds - h * 3600.0 - m * 60.0;
+    seconds = 86399.999; // rounding reached midnight: stay on the day
+  result.hour = static_cast<int>(seconds / 3600.0);
+  result.minute = static_cast<int>((seconds - result.hour * 3600.0) / 60.0);
+  result.second = seconds - result.hour * 3600.0 - result.minute * 60.0;
+  return result;
+}
+
+std::string DateTime::toUtcString() const
+{
+  const DateTime utc = fromJulianDay(this->julianDay());
   char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%04d-%02d-%02dT%02d:%02d:%06.3fZ", year, month, day, h, m, s);
+  std::snprintf(buffer, sizeof(buffer), "%04d-%02d-%02dT%02d:%02d:%06.3fZ", utc.year, utc.month, utc.day, utc.hour,
+    utc.minute, utc.second);
   return buffer;
 }
 } // namespace terralux

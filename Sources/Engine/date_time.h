@@ -25,6 +25,9 @@ struct DateTime
   /// as in SPA (Reda & Andreas 2004, eq. 4).
   double julianDay() const;
 
+  /// The instant of a Julian day (UT), in UTC (to the millisecond).
+  static DateTime fromJulianDay(double julianDay);
+
   /// The same instant written in UTC, "YYYY-MM-DDTHH:MM:SS.sssZ".
   std::string toUtcString() const;
 };

@@ -1,0 +1,317 @@
+#include "vtkSolarIrradiation.h"
+
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityScene.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+
+#include "cie_sky.h"
+#include "cumulative_sky.h"
+#include "date_time.h"
+#include "error.h"
+#include "finite_parameters.h"
+#include "solar_steps.h"
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkSolarIrradiation);
+
+namespace
+{
+constexpr double degree = 3.14159265358979323846 / 180.0;
+
+// vtkHierarchicalRadiosity's names of instants and the sums' names.
+const char* const instantNames[] = { "Irradiance", "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance",
+  "Radiosity" };
+const char* const sumNames[] = { "GlobalIrradiation", "BeamIrradiation", "SkyIrradiation",
+  "ReflectedIrradiation", "OutgoingIrradiation" };
+
+void renameSums(vtkDataSet* data)
+{
+  vtkPointData* pointData = data->GetPointData();
+  for (int k = 0; k < 5; ++k)
+    if (vtkDataArray* array = pointData->GetArray(instantNames[k]))
+      array->SetName(sumNames[k]);
+  pointData->SetActiveScalars(sumNames[0]);
+}
+
+// The first data set of port 0 with a GeoOrigin (latitude, longitude, height).
+bool geoOrigin(vtkInformationVector* port, double place[3])
+{
+  auto fromData = [&](vtkDataObject* data) {
+    vtkDataArray* origin = data && data->GetFieldData() ? data->GetFieldData()->GetArray("GeoOrigin") : nullptr;
+    if (!origin || origin->GetNumberOfValues() != 3)
+      return false;
+    const int components = origin->GetNumberOfComponents();
+    for (int k = 0; k < 3; ++k)
+      place[k] = origin->GetComponent(k / components, k % components);
+    return true;
+  };
+  for (int k = 0; k < port->GetNumberOfInformationObjects(); ++k)
+  {
+    vtkDataObject* data = port->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT());
+    if (fromData(data))
+      return true;
+    if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+    {
+      vtkSmartPointer<vtkCompositeDataIterator> it;
+      it.TakeReference(composite->NewIterator());
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+        if (fromData(it->GetCurrentDataObject()))
+          return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
+struct vtkSolarIrradiation::Internals
+{
+  std::vector<terralux::SolarStep> Steps; // of the last solve
+  double RequestedHours = 0.0;            // UPDATE_TIME_STEP, with IntegrateOverTime off
+  bool Integrated = true;
+  double SecondsSteps = 0.0;
+};
+
+//------------------------------------------------------------------------------
+vtkSolarIrradiation::vtkSolarIrradiation()
+  : StartTime(nullptr)
+  , EndTime(nullptr)
+  , TimeStep(30.0)
+  , IntegrateOverTime(1)
+  , UseGeoOrigin(1)
+  , Latitude(0.0)
+  , Longitude(0.0)
+  , Height(0.0)
+  , IrradianceModel(ESRA)
+  , SkyType(12)
+  , SkyLevels(7)
+  , DeltaT(69.0)
+  , Internal(new Internals)
+{
+  this->SetStartTime("2000-01-01T00:00:00Z");
+  this->SetEndTime("2000-01-02T00:00:00Z");
+  for (double& value : this->MonthlyLinkeTurbidity)
+    value = 3.0;
+  this->SetNumberOfInputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+vtkSolarIrradiation::~vtkSolarIrradiation()
+{
+  this->SetStartTime(nullptr);
+  this->SetEndTime(nullptr);
+  delete this->Internal;
+}
+
+//------------------------------------------------------------------------------
+void vtkSolarIrradiation::SetLinkeTurbidity(double value)
+{
+  const double monthly[12] = { value, value, value, value, value, value, value, value, value, value, value,
+    value };
+  this->SetMonthlyLinkeTurbidity(monthly);
+}
+
+//------------------------------------------------------------------------------
+int vtkSolarIrradiation::FillInputPortInformation(int port, vtkInformation* info)
+{
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkSolarIrradiation::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    return this->RequestInformation(request, inputVector, outputVector);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  {
+    vtkInformation* info = outputVector->GetInformationObject(0);
+    this->Internal->RequestedHours = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+      : 0.0;
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkSolarIrradiation::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // Time steps are advertised where the range is valid; a bad one is reported by
+  // RequestData, which leaves the outputs empty.
+  std::vector<double> hours;
+  try
+  {
+    const double start = terralux::DateTime::parse(this->StartTime ? this->StartTime : "").julianDay();
+    const double end = terralux::DateTime::parse(this->EndTime ? this->EndTime : "").julianDay();
+    for (double instant : terralux::stepInstants(start, end, this->TimeStep))
+      hours.push_back((instant - start) * 24.0);
+  }
+  catch (const terralux::Error&)
+  {
+  }
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+    if (!hours.empty())
+    {
+      info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), hours.data(), static_cast<int>(hours.size()));
+      const double range[2] = { hours.front(), hours.back() };
+      info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    }
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadiosityScene& scene)
+{
+  const auto start = std::chrono::steady_clock::now();
+  terralux::requireFiniteParameters({ { "TimeStep", this->TimeStep }, { "Latitude", this->Latitude },
+    { "Longitude", this->Longitude }, { "Height", this->Height }, { "DeltaT", this->DeltaT } });
+  for (double linke : this->MonthlyLinkeTurbidity)
+    if (!(linke >= 0.5 && linke <= 10.0))
+      throw terralux::Error("a Linke turbidity of " + std::to_string(linke) +
+        " is out of range: give values in [0.5, 10] (r.sun's range; 3 is a rural clear sky)");
+
+  terralux::SolarSite site;
+  double place[3] = { this->Latitude, this->Longitude, this->Height };
+  if (this->UseGeoOrigin)
+    geoOrigin(inputVector[0], place);
+  site.position.latitudeDeg = place[0];
+  site.position.longitudeDeg = place[1];
+  site.position.heightM = place[2];
+  site.position.deltaT = this->DeltaT;
+  site.model = this->IrradianceModel == ESRA ? terralux::ClearSkyModel::Esra : terralux::ClearSkyModel::IneichenPerez;
+  std::copy(this->MonthlyLinkeTurbidity, this->MonthlyLinkeTurbidity + 12, site.linkeByMonth.begin());
+
+  const double startDay = terralux::DateTime::parse(this->StartTime ? this->StartTime : "").julianDay();
+  const double endDay = terralux::DateTime::parse(this->EndTime ? this->EndTime : "").julianDay();
+  auto& steps = this->Internal->Steps;
+  steps = terralux::daylightSteps(startDay, endDay, this->TimeStep, site); // validates the range too
+  this->Internal->Integrated = this->IntegrateOverTime != 0;
+  scene.SunshineDuration = this->Internal->Integrated;
+  if (!this->Internal->Integrated)
+  {
+    const double hours = this->Internal->RequestedHours;
+    if (!std::isfinite(hours))
+      throw terralux::Error("the requested time step is not a finite number of hours");
+    steps.assign(1, terralux::solarStepAt(startDay + std::min(std::max(hours, 0.0), (endDay - startDay) * 24.0) / 24.0, site));
+  }
+
+  // Each step's sun (irradiance x hours: Wh/m^2) and sky into the cumulative sky. An
+  // instant counts one hour with no duration, so its values stay W/m^2.
+  terralux::CumulativeSky sky(this->SkyLevels, 1);
+  for (const terralux::SolarStep& step : steps)
+  {
+    const double weight = this->Internal->Integrated ? step.hours : 1.0;
+    const terralux::Direction toward =
+      terralux::directionFromZenithAzimuth(step.position.zenithDeg * degree, step.position.azimuthDeg * degree);
+    if (step.clearSky.directNormalWm2 > 0.0)
+      scene.Suns.push_back({ terralux::Vec3(toward[0], toward[1], toward[2]), terralux::uniformSpectrum(step.clearSky.directNormalWm2 * weight),
+        this->Internal->Integrated ? step.hours : 0.0 });
+    if (step.clearSky.diffuseHorizontalWm2 > 0.0)
+      sky.add(terralux::SkyHierarchy(terralux::CieGeneralSky(this->SkyType, toward),
+                step.clearSky.diffuseHorizontalWm2, this->SkyLevels),
+        weight);
+    if (this->GetAbortExecute())
+      break;
+  }
+  scene.Sky = sky.hierarchy();
+  this->Internal->SecondsSteps = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!scene.Sky && scene.Suns.empty())
+  {
+    // Polar night, or an instant after sunset: darkness is an answer, not an error.
+    scene.Sky = std::make_unique<terralux::SkyHierarchy>(terralux::SkyHierarchy::fromCellAverages(
+      1, 1, std::vector<double>(4, 0.0)));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSolarIrradiation::FinishOutputs(vtkDataObject* output, vtkPolyData* leafMesh)
+{
+  const auto& steps = this->Internal->Steps;
+  if (this->Internal->Integrated)
+  {
+    if (auto* composite = vtkCompositeDataSet::SafeDownCast(output))
+    {
+      vtkSmartPointer<vtkCompositeDataIterator> it;
+      it.TakeReference(composite->NewIterator());
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+        if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+          renameSums(dataSet);
+    }
+    else if (auto* dataSet = vtkDataSet::SafeDownCast(output))
+    {
+      renameSums(dataSet);
+    }
+    renameSums(leafMesh);
+  }
+  vtkFieldData* fieldData = output->GetFieldData();
+  auto perStep = [&](const char* name, auto value) {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(name);
+    for (const terralux::SolarStep& step : steps)
+      array->InsertNextValue(value(step));
+    fieldData->AddArray(array);
+  };
+  vtkNew<vtkDoubleArray> count;
+  count->SetName("Steps");
+  count->InsertNextValue(static_cast<double>(steps.size()));
+  fieldData->AddArray(count);
+  vtkNew<vtkStringArray> times;
+  times->SetName("StepTime");
+  for (const terralux::SolarStep& step : steps)
+    times->InsertNextValue(terralux::DateTime::fromJulianDay(step.julianDay).toUtcString());
+  fieldData->AddArray(times);
+  perStep("StepHours", [](const terralux::SolarStep& s) { return s.hours; });
+  perStep("SunZenith", [](const terralux::SolarStep& s) { return s.position.zenithDeg; });
+  perStep("SunAzimuth", [](const terralux::SolarStep& s) { return s.position.azimuthDeg; });
+  perStep("SunNormalIrradiance", [](const terralux::SolarStep& s) { return s.clearSky.directNormalWm2; });
+  perStep(
+    "DiffuseHorizontalIrradiance", [](const terralux::SolarStep& s) { return s.clearSky.diffuseHorizontalWm2; });
+  vtkNew<vtkDoubleArray> seconds;
+  seconds->SetName("SecondsSteps");
+  seconds->InsertNextValue(this->Internal->SecondsSteps);
+  fieldData->AddArray(seconds);
+}
+
+//------------------------------------------------------------------------------
+void vtkSolarIrradiation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "StartTime: " << (this->StartTime ? this->StartTime : "(none)") << "\n";
+  os << indent << "EndTime: " << (this->EndTime ? this->EndTime : "(none)") << "\n";
+  os << indent << "TimeStep: " << this->TimeStep << "\n";
+  os << indent << "IntegrateOverTime: " << (this->IntegrateOverTime ? "On" : "Off") << "\n";
+  os << indent << "UseGeoOrigin: " << (this->UseGeoOrigin ? "On" : "Off") << "\n";
+  os << indent << "Latitude: " << this->Latitude << "\n";
+  os << indent << "Longitude: " << this->Longitude << "\n";
+  os << indent << "Height: " << this->Height << "\n";
+  os << indent << "IrradianceModel: " << (this->IrradianceModel == ESRA ? "ESRA" : "Ineichen-Perez") << "\n";
+  os << indent << "MonthlyLinkeTurbidity:";
+  for (double value : this->MonthlyLinkeTurbidity)
+    os << " " << value;
+  os << "\n";
+  os << indent << "SkyType: " << this->SkyType << "\n";
+  os << indent << "SkyLevels: " << this->SkyLevels << "\n";
+  os << indent << "DeltaT: " << this->DeltaT << "\n";
+}
