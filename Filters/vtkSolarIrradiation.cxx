@@ -39,12 +39,19 @@ const char* const instantNames[] = { "Irradiance", "SunIrradiance", "SkyIrradian
 const char* const sumNames[] = { "GlobalIrradiation", "BeamIrradiation", "SkyIrradiation",
   "ReflectedIrradiation", "OutgoingIrradiation" };
 
+// The sums' names and units (vtkDataArray::UNITS_LABEL, which vtkTerrainRasterWriter
+// writes into the GeoTIFF's bands).
 void renameSums(vtkDataSet* data)
 {
   vtkPointData* pointData = data->GetPointData();
   for (int k = 0; k < 5; ++k)
     if (vtkDataArray* array = pointData->GetArray(instantNames[k]))
+    {
       array->SetName(sumNames[k]);
+      array->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), "Wh/m^2");
+    }
+  if (vtkDataArray* sunshine = pointData->GetArray("SunshineDuration"))
+    sunshine->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), "h");
   pointData->SetActiveScalars(sumNames[0]);
 }
 
@@ -188,7 +195,7 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
     { "Longitude", this->Longitude }, { "Height", this->Height }, { "DeltaT", this->DeltaT } });
   for (double linke : this->MonthlyLinkeTurbidity)
     if (!(linke >= 0.5 && linke <= 10.0))
-      throw terralux::Error("a Linke turbidity of " + std::to_string(linke) +
+      throw terralux::Error("a Linke turbidity of " + terralux::numberText(linke) +
         " is out of range: give values in [0.5, 10] (r.sun's range; 3 is a rural clear sky)");
 
   terralux::SolarSite site;

@@ -25,8 +25,13 @@ namespace
 const char* const radiosityArrays[] = { "Irradiance", "SunIrradiance", "SkyIrradiance",
   "ReflectedIrradiance", "Radiosity", "SkyViewFactor" };
 
-std::string unitOf(const std::string& name)
+// The array's own units (vtkDataArray::UNITS_LABEL, as vtkSolarIrradiation sets
+// them), else those of the known names.
+std::string unitOf(vtkDataArray* array, const std::string& name)
 {
+  vtkInformation* info = array->HasInformation() ? array->GetInformation() : nullptr;
+  if (info && info->Has(vtkDataArray::UNITS_LABEL()))
+    return info->Get(vtkDataArray::UNITS_LABEL());
   if (name.find("Irradiance") != std::string::npos || name == "Radiosity")
     return "W/m^2";
   if (name == "Elevation")
@@ -165,7 +170,7 @@ void vtkTerrainRasterWriter::WriteData()
       {
         terralux::RasterBand band;
         band.description = array->GetNumberOfComponents() == 1 ? name : name + "[" + std::to_string(c) + "]";
-        band.unit = unitOf(name);
+        band.unit = unitOf(array, name);
         band.values.resize(static_cast<std::size_t>(dims[0]) * dims[1]);
         for (int row = 0; row < dims[1]; ++row)
           for (int col = 0; col < dims[0]; ++col)

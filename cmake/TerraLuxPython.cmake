@@ -33,7 +33,10 @@ string(REPLACE ";" "\", \"" TERRALUX_PYTHON_MODULES "${terralux_python_modules}"
 set(terralux_package_dir "${CMAKE_BINARY_DIR}/${TERRALUX_PYTHON_DESTINATION}/terralux")
 configure_file("${CMAKE_CURRENT_LIST_DIR}/terralux__init__.py.in"
   "${terralux_package_dir}/__init__.py" @ONLY)
-install(FILES "${terralux_package_dir}/__init__.py"
+# Pure-Python modules of the package: the irradiation command (python3 -m terralux.irradiation).
+configure_file("${CMAKE_SOURCE_DIR}/TimeIntegration/Python/irradiation.py"
+  "${terralux_package_dir}/irradiation.py" COPYONLY)
+install(FILES "${terralux_package_dir}/__init__.py" "${terralux_package_dir}/irradiation.py"
   DESTINATION "${TERRALUX_PYTHON_DESTINATION}/terralux"
   COMPONENT python)
 

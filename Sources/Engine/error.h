@@ -3,6 +3,7 @@
 // problem and, where there is one, the fix. The VTK adapters turn it into
 // vtkErrorMacro and an empty output.
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -16,4 +17,12 @@ public:
   {
   }
 };
+
+/// A number as a message shows it: shortest form, no trailing zeros (0.5, not 0.500000).
+inline std::string numberText(double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 } // namespace terralux

@@ -17,7 +17,7 @@ void requireRange(double start, double end, double stepMinutes)
   if (!std::isfinite(start) || !std::isfinite(end) || !(end > start))
     throw Error("the end time must come after the start time");
   if (!(stepMinutes > 0.0) || !(stepMinutes <= minutesPerDay))
-    throw Error("the time step is " + std::to_string(stepMinutes) +
+    throw Error("the time step is " + numberText(stepMinutes) +
       " minutes: give a step in (0, 1440] minutes (at most a day)");
   if (end - start > 3653.0)
     throw Error("the time range spans more than ten years: split it into shorter runs");

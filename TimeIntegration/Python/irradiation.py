@@ -1,0 +1,222 @@
+"""Irradiation maps from a DEM: the sun, the CIE sky and interreflection summed over a
+day, a month or a year (Wh/m^2, or kWh/m^2), and hours of direct sun, as a multi-band
+GeoTIFF on the DEM's own grid.
+
+    python3 -m terralux.irradiation DEM.tif -o out.tif --start 2024-06-01 --end 2024-06-30
+        [--step 30] [--linke 3.0] [--reflectance 0.2] [--day-of-year N] [--points | --fast]
+
+The equivalent GRASS call for one day: r.sun elevation=dem aspect=aspect slope=slope
+day=173 step=0.5 linke_value=3.0 albedo_value=0.2 beam_rad=... diff_rad=... refl_rad=...
+glob_rad=... (aspect and slope from r.slope.aspect, whose Horn normals TerraLux takes
+too).
+"""
+import argparse
+import datetime
+import os
+import re
+import sys
+import time
+
+BANDS = ("GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation",
+         "SunshineDuration", "SkyViewFactor")
+ENERGY_BANDS = BANDS[:4]
+PROGRAM = "terralux.irradiation"
+
+
+class InputError(Exception):
+    """Bad input: reported in one line, exit status 1."""
+
+
+def parse_arguments(argv):
+    parser = argparse.ArgumentParser(
+        prog="python3 -m " + PROGRAM,
+        description="Irradiation (Wh/m^2) and sunshine duration over a DEM for a time range: "
+                    "sun with exact shadows, CIE clear sky, interreflection.",
+        epilog="Dates without a time are whole days in --utc-offset (default: the DEM's mean "
+               "solar time to the hour); --end's day is included. Bands: " + ", ".join(BANDS) + ".")
+    parser.add_argument("dem", help="a DEM GDAL reads, georeferenced")
+    parser.add_argument("-o", "--output", required=True, help="the GeoTIFF to write")
+    parser.add_argument("--start", help="first day (YYYY-MM-DD) or instant (ISO 8601)")
+    parser.add_argument("--end", help="last day (included) or instant; default: the start's day")
+    parser.add_argument("--day-of-year", type=int, metavar="N", help="one day, 1..366, of --year (as r.sun's day=)")
+    parser.add_argument("--year", type=int, default=2024, help="the year of --day-of-year (default 2024)")
+    parser.add_argument("--utc-offset", help="time zone of dates without one, e.g. +02:00")
+    parser.add_argument("--step", type=float, default=30.0, help="time step in minutes (default 30)")
+    parser.add_argument("--linke", default="3.0",
+                        help="Linke turbidity: one value, or twelve comma-separated monthly values")
+    parser.add_argument("--reflectance", type=float, default=0.2, help="ground reflectance (albedo), default 0.2")
+    parser.add_argument("--model", choices=("esra", "ineichen-perez"), default="esra",
+                        help="clear-sky model (default esra, as r.sun)")
+    parser.add_argument("--sky-type", type=int, default=12, help="CIE standard general sky, 1..15 (default 12)")
+    parser.add_argument("--tolerance", type=float, default=1e-3, help="radiosity error tolerance (default 1e-3)")
+    mode = parser.add_mutually_exclusive_group()
+    mode.add_argument("--points", dest="points", action="store_true", default=True,
+                      help="evaluate at every post (accurate; default)")
+    mode.add_argument("--fast", dest="points", action="store_false",
+                      help="interpolate sky and reflected light from the solved elements")
+    parser.add_argument("--kwh", action="store_true", help="write kWh/m^2 instead of Wh/m^2")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    return parser.parse_args(argv)
+
+
+def utc_offset_text(minutes):
+    sign = "+" if minutes >= 0 else "-"
+    return "%s%02d:%02d" % (sign, abs(minutes) // 60, abs(minutes) % 60)
+
+
+def time_range(args, longitude):
+    """(start, end) as ISO 8601 with offsets."""
+    if args.utc_offset is not None:
+        if not re.fullmatch(r"[+-]\d\d:?\d\d|Z", args.utc_offset):
+            raise InputError("--utc-offset %r is not +HH:MM or -HH:MM" % args.utc_offset)
+        offset = args.utc_offset
+    else:
+        offset = utc_offset_text(60 * int(round(longitude / 15.0)))
+    if args.day_of_year is not None:
+        if args.start or args.end:
+            raise InputError("give either --day-of-year or --start/--end, not both")
+        days = 366 if (args.year % 4 == 0 and args.year % 100 != 0) or args.year % 400 == 0 else 365
+        if not 1 <= args.day_of_year <= days:
+            raise InputError("--day-of-year %d is not a day of %d (1..%d)" % (args.day_of_year, args.year, days))
+        day = datetime.date(args.year, 1, 1) + datetime.timedelta(days=args.day_of_year - 1)
+        return day.isoformat() + "T00:00:00" + offset, (day + datetime.timedelta(days=1)).isoformat() + "T00:00:00" + offset
+    if not args.start:
+        raise InputError("give --start (and --end) or --day-of-year")
+
+    def instant(text, is_end):
+        if re.fullmatch(r"\d{4}-\d\d-\d\d", text):
+            try:
+                day = datetime.date.fromisoformat(text)
+            except ValueError as error:
+                raise InputError("%r is not a date: %s" % (text, error))
+            if is_end:
+                day += datetime.timedelta(days=1)
+            return day.isoformat() + "T00:00:00" + offset
+        if re.search(r"(Z|[+-]\d\d(:?\d\d)?)$", text.split("T")[-1]):
+            return text
+        return text + offset
+    return instant(args.start, False), instant(args.end or args.start, True)
+
+
+def linke_values(text):
+    try:
+        values = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise InputError("--linke %r: give one number or twelve comma-separated numbers" % text)
+    if len(values) not in (1, 12):
+        raise InputError("--linke takes one value or twelve (one per month), not %d" % len(values))
+    return values * 12 if len(values) == 1 else values
+
+
+def run(args):
+    import vtk  # noqa: F401  (VTK's Python modules before TerraLux's)
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.util.vtkConstants import VTK_STRING
+    from terralux import vtkSolarIrradiation, vtkTerrainRasterWriter, vtkTerrainSource
+
+    if not os.path.isfile(args.dem):
+        raise InputError("no DEM at %s" % args.dem)
+    messages = []  # VTK's errors, kept for one-line messages instead of VTK's own
+
+    def observe(algorithm):
+        @calldata_type(VTK_STRING)  # the error's text as call data
+        def on_error(caller, event, text=None):
+            # VTK's text is "file, line\nclass (address): message"; keep the message.
+            last = str(text or event).strip().splitlines()[-1]
+            messages.append(last.split("): ", 1)[-1])
+        algorithm.AddObserver("ErrorEvent", on_error)
+        # The executive's "returned failure" follows every error: nothing to add.
+        algorithm.GetExecutive().AddObserver("ErrorEvent", lambda caller, event: None)
+        return algorithm
+
+    start_clock = time.perf_counter()
+    terrain = observe(vtkTerrainSource())
+    terrain.SetFileName(args.dem)
+    terrain.Update()
+    if terrain.GetOutput().GetNumberOfPoints() == 0:
+        raise InputError("could not read %s: %s" % (args.dem, messages[-1] if messages else "no terrain"))
+    origin = terrain.GetOutput().GetFieldData().GetArray("GeoOrigin")
+    if origin is None:
+        raise InputError("%s has no georeference (a CRS): TerraLux needs the place to place the sun" % args.dem)
+    longitude = origin.GetComponent(1, 0) if origin.GetNumberOfTuples() == 3 else origin.GetComponent(0, 1)
+    start, end = time_range(args, longitude)
+    if not 0.0 <= args.reflectance < 1.0:
+        raise InputError("--reflectance %g is not in [0, 1)" % args.reflectance)
+    if not 1 <= args.sky_type <= 15:
+        raise InputError("--sky-type %d is not a CIE standard general sky (1..15)" % args.sky_type)
+
+    irradiation = observe(vtkSolarIrradiation())
+    irradiation.SetInputConnection(terrain.GetOutputPort())
+    irradiation.SetStartTime(start)
+    irradiation.SetEndTime(end)
+    irradiation.SetTimeStep(args.step)
+    irradiation.SetMonthlyLinkeTurbidity(linke_values(args.linke))
+    irradiation.SetDefaultReflectance(args.reflectance)
+    irradiation.SetIrradianceModel(0 if args.model == "esra" else 1)
+    irradiation.SetSkyType(args.sky_type)
+    irradiation.SetErrorTolerance(args.tolerance)
+    irradiation.SetEvaluateAtPoints(args.points)
+    irradiation.SetPostNormalsToHorn()  # as r.slope.aspect and gdaldem
+    bar = None
+    if not args.quiet:
+        try:
+            from tqdm import tqdm
+            bar = tqdm(total=100, unit="%", desc="irradiation", leave=False, file=sys.stderr,
+                       bar_format="{desc}: {percentage:3.0f}%|{bar}| {elapsed}")
+            irradiation.AddObserver("ProgressEvent", lambda caller, event: bar.update(
+                round(100 * caller.GetProgress()) - bar.n))
+        except ImportError:
+            bar = None
+    irradiation.Update()
+    if bar is not None:
+        bar.close()
+    result = irradiation.GetOutput()
+    if result.GetNumberOfPoints() == 0:
+        raise InputError(messages[-1] if messages else "the irradiation failed")
+
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    import numpy
+    point_data = result.GetPointData()
+    if args.kwh:
+        for name in ENERGY_BANDS:
+            array = point_data.GetArray(name)
+            values = vtk_to_numpy(array)
+            values /= 1000.0
+            array.GetInformation().Set(array.UNITS_LABEL(), "kWh/m^2")
+            array.Modified()
+    writer = observe(vtkTerrainRasterWriter())
+    writer.SetInputData(result)
+    writer.SetFileName(args.output)
+    for name in BANDS:
+        if point_data.GetArray(name) is not None:
+            writer.AddArrayName(name)
+    if not writer.Write():
+        raise InputError("could not write %s: %s" % (args.output, messages[-1] if messages else ""))
+
+    field = result.GetFieldData()
+    steps = int(field.GetArray("Steps").GetValue(0))
+    hours = field.GetArray("StepHours")
+    daylight = sum(hours.GetValue(k) for k in range(hours.GetNumberOfTuples()))
+    unit = "kWh/m^2" if args.kwh else "Wh/m^2"
+    print("%s: %s to %s, %d daylight steps (%.1f h of sun above the horizon), %.1f s" % (
+        PROGRAM, start, end, steps, daylight, time.perf_counter() - start_clock))
+    for name in BANDS:
+        array = point_data.GetArray(name)
+        if array is not None:
+            mean = float(numpy.nanmean(vtk_to_numpy(array)))
+            print("  mean %-21s %10.3f %s" % (name, mean, unit if name in ENERGY_BANDS else
+                                                 ("h" if name == "SunshineDuration" else "")))
+    print("wrote", args.output)
+
+
+def main(argv=None):
+    args = parse_arguments(sys.argv[1:] if argv is None else argv)
+    try:
+        run(args)
+    except InputError as error:
+        sys.exit("%s: error: %s" % (PROGRAM, error))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
