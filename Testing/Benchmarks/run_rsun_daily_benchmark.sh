@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Daily irradiation against GRASS r.sun's daily mode, in one run on the same DEMs (peer
+# benchmark; needs grass-core, not run by ctest): whole-process time and peak memory of
+# r.sun (day=173, step=0.5 h, Linke 3.0, albedo 0.2, shadows, slope and aspect from
+# r.slope.aspect, 2 threads) and of `python3 -m terralux.irradiation` for the same day at
+# 30-minute steps (Horn normals as r.slope.aspect; --points and --fast), and how their
+# beam and global sums compare post by post (scripts: compare_rasters.py).
+# Usage: Testing/Benchmarks/run_rsun_daily_benchmark.sh [BUILD_DIR] [DEM ...]
+#   default DEMs: Olinda and the 1025^2 fractal (made by make_fractal_dem).
+set -euo pipefail
+repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build_dir="$(cd "${1:-${repo_dir}/build}" && pwd)"
+shift || true
+command -v grass >/dev/null || { echo "needs GRASS GIS: apt-get install grass-core" >&2; exit 2; }
+cmake --build "${build_dir}" --target make_fractal_dem TerraLux::Python >/dev/null 2>&1 || cmake --build "${build_dir}" >/dev/null
+mkdir -p "${build_dir}/bench"
+fractal="${build_dir}/bench/fractal_1025.tif"
+[ -s "${fractal}" ] || "${build_dir}/bin/make_fractal_dem" "${fractal}" 1025 1 30 >/dev/null
+dems=("$@")
+[ "${#dems[@]}" -gt 0 ] || dems=("${repo_dir}/Testing/Data/External/olinda_dem_utm25s.tif" "${fractal}")
+export PYTHONPATH="${build_dir}/lib/python3.11/dist-packages${PYTHONPATH:+:${PYTHONPATH}}"
+work="$(mktemp -d)"
+trap 'rm -rf "${work}"' EXIT
+seconds() { sed -n 's/^elapsed \([0-9.]*\) peak \([0-9]*\)$/\1/p' "$1"; }
+peak_mib() { sed -n 's/^elapsed \([0-9.]*\) peak \([0-9]*\)$/\2/p' "$1" | awk '{printf "%.0f", $1 / 1024}'; }
+for dem in "${dems[@]}"; do
+  name="$(basename "${dem}" .tif)"
+  echo "== ${name}"
+  grass -c "${dem}" "${work}/${name}" -e >/dev/null 2>&1
+  cat > "${work}/${name}.sh" <<GRASS
+set -e
+r.in.gdal -o input="${dem}" output=dem --overwrite --quiet
+g.region raster=dem
+r.slope.aspect elevation=dem slope=slope aspect=aspect --overwrite --quiet
+/usr/bin/time -f "elapsed %e peak %M" -o "${work}/${name}.rsun.time" r.sun elevation=dem slope=slope aspect=aspect \
+  day=173 step=0.5 linke_value=3.0 albedo_value=0.2 beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob \
+  nprocs=2 --overwrite --quiet
+for map in beam glob; do r.out.gdal -c input=\${map} output="${work}/${name}.rsun.\${map}.tif" --overwrite --quiet 2>/dev/null; done
+GRASS
+  grass "${work}/${name}/PERMANENT" --exec bash "${work}/${name}.sh" >/dev/null 2>&1
+  for mode in points fast; do
+    /usr/bin/time -f "elapsed %e peak %M" -o "${work}/${name}.${mode}.time" /usr/bin/python3 -m terralux.irradiation \
+      "${dem}" -o "${work}/${name}.${mode}.tif" --day-of-year 173 --year 2024 --step 30 --linke 3.0 \
+      --reflectance 0.2 "--${mode}" --quiet >/dev/null
+  done
+  rsun="$(seconds "${work}/${name}.rsun.time")"
+  echo "  r.sun daily:              $(printf '%6.1f' "${rsun}") s, $(peak_mib "${work}/${name}.rsun.time") MiB"
+  for mode in points fast; do
+    t="$(seconds "${work}/${name}.${mode}.time")"
+    echo "  terralux.irradiation --${mode}: $(printf '%6.1f' "${t}") s, $(peak_mib "${work}/${name}.${mode}.time") MiB," \
+      "$(awk -v a="${t}" -v b="${rsun}" 'BEGIN { printf "%.2f", a / b }') x r.sun"
+    echo "    beam:   $(/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/compare_rasters.py" "${work}/${name}.${mode}.tif" BeamIrradiation "${work}/${name}.rsun.beam.tif")"
+    echo "    global: $(/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/compare_rasters.py" "${work}/${name}.${mode}.tif" GlobalIrradiation "${work}/${name}.rsun.glob.tif")"
+  done
+done

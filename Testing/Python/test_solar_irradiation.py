@@ -1,0 +1,300 @@
+"""vtkSolarIrradiation and `python3 -m terralux.irradiation`: daily sums judged against
+closed forms on open ground (a one-minute sum of vtkSunSource's beam and diffuse
+irradiance, the almanac's day length), against the sum of vtkHierarchicalRadiosity solves
+at each step, against GRASS r.sun's daily mode where GRASS is installed; instants against
+an independent solve at that instant; bad input and polar night."""
+import datetime
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
+from vtkmodules.vtkFiltersSources import vtkPlaneSource
+
+from terralux import vtkHierarchicalRadiosity, vtkSkySource, vtkSolarIrradiation, vtkSunSource, vtkTerrainSource
+from terralux_testing import OLINDA, ErrorCatcher, scratch_dir
+
+SUMS = ("GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation")
+DAY = ("2024-06-21T00:00:00+01:00", "2024-06-22T00:00:00+01:00")
+OLINDA_DAY = ("2024-06-21T00:00:00-02:00", "2024-06-22T00:00:00-02:00")
+
+
+def values(data, name):
+    return vtk_to_numpy(data.GetPointData().GetArray(name)).astype(float)
+
+
+def field_values(data, name):
+    array = data.GetFieldData().GetArray(name)
+    return [array.GetValue(k) for k in range(array.GetNumberOfTuples())]
+
+
+def open_plane():
+    plane = vtkPlaneSource()
+    plane.SetOrigin(-50.0, -50.0, 0.0)
+    plane.SetPoint1(50.0, -50.0, 0.0)
+    plane.SetPoint2(-50.0, 50.0, 0.0)
+    plane.SetResolution(2, 2)
+    return plane
+
+
+def irradiation(source, start, end, step=30.0, **settings):
+    f = vtkSolarIrradiation()
+    f.SetInputConnection(source.GetOutputPort())
+    f.SetStartTime(start)
+    f.SetEndTime(end)
+    f.SetTimeStep(step)
+    for name, value in settings.items():
+        getattr(f, "Set" + name)(value)
+    return f
+
+
+class OpenGround(unittest.TestCase):
+    """A flat plane at 46.8 N, 8 E on 21 June: no shadow, the whole sky, no reflection."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.filter = irradiation(open_plane(), *DAY, Latitude=46.8, Longitude=8.0)
+        cls.filter.Update()
+        cls.out = cls.filter.GetOutput()
+        # The same day by vtkSunSource minute by minute (a Riemann sum of its own code path).
+        sun = vtkSunSource()
+        sun.SetLatitude(46.8)
+        sun.SetLongitude(8.0)
+        cls.beam = cls.diffuse = cls.day_hours = 0.0
+        start = datetime.datetime(2024, 6, 20, 23, 0, 30)  # the middle of each minute, UTC
+        for minute in range(24 * 60):
+            sun.SetDateTime((start + datetime.timedelta(minutes=minute)).isoformat() + "Z")
+            sun.Update()
+            if sun.GetZenith() < 90.0:
+                cls.day_hours += 1.0 / 60.0
+                cls.beam += sun.GetNormalIrradiance() * math.cos(math.radians(sun.GetZenith())) / 60.0
+                cls.diffuse += sun.GetDiffuseHorizontalIrradiance() / 60.0
+
+    def test_beam_and_sky_are_the_days_irradiance(self):
+        beam, sky = values(self.out, "BeamIrradiation"), values(self.out, "SkyIrradiation")
+        self.assertGreater(self.beam, 5000.0)
+        numpy.testing.assert_allclose(beam, self.beam, rtol=3e-3)
+        numpy.testing.assert_allclose(sky, self.diffuse, rtol=5e-3)
+        numpy.testing.assert_allclose(values(self.out, "ReflectedIrradiation"), 0.0, atol=1e-9)
+        total = beam + sky + values(self.out, "ReflectedIrradiation")
+        numpy.testing.assert_allclose(values(self.out, "GlobalIrradiation"), total, rtol=1e-12)
+        numpy.testing.assert_allclose(values(self.out, "OutgoingIrradiation"), 0.2 * total, rtol=1e-9)
+
+    def test_sunshine_is_the_day_length(self):
+        numpy.testing.assert_allclose(values(self.out, "SunshineDuration"), self.day_hours, atol=2.0 / 60.0)
+        self.assertAlmostEqual(sum(field_values(self.out, "StepHours")), self.day_hours, delta=2.0 / 60.0)
+
+    def test_field_data_describes_the_steps(self):
+        steps = int(field_values(self.out, "Steps")[0])
+        self.assertGreater(steps, 30)
+        for name in ("StepHours", "SunZenith", "SunAzimuth", "SunNormalIrradiance", "DiffuseHorizontalIrradiance"):
+            self.assertEqual(len(field_values(self.out, name)), steps, name)
+        times = self.out.GetFieldData().GetAbstractArray("StepTime")
+        self.assertEqual(times.GetNumberOfValues(), steps)
+        self.assertTrue(times.GetValue(0).startswith("2024-06-21T03:"), times.GetValue(0))  # sunrise, UTC
+        self.assertEqual(self.out.GetPointData().GetArray("GlobalIrradiation").GetInformation().Get(
+            self.out.GetPointData().GetArray("GlobalIrradiation").UNITS_LABEL()), "Wh/m^2")
+
+    def test_time_steps_are_advertised(self):
+        info = self.filter.GetOutputInformation(0)
+        steps = info.Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+        self.assertEqual(len(steps), 49)
+        self.assertAlmostEqual(steps[0], 0.0)
+        self.assertAlmostEqual(steps[-1], 24.0, places=6)
+
+
+class OlindaDay(unittest.TestCase):
+    """The real Olinda DEM on 21 June: sums against the sum of instant solves."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.terrain = vtkTerrainSource()
+        cls.terrain.SetFileName(OLINDA)
+        cls.filter = irradiation(cls.terrain, *OLINDA_DAY)
+        cls.filter.Update()
+        cls.out = cls.filter.GetOutput()
+
+    def instant(self, when):
+        sun = vtkSunSource()
+        sun.SetInputConnection(self.terrain.GetOutputPort())
+        sun.SetDateTime(when)
+        sky = vtkSkySource()
+        sky.SetSunConnection(sun.GetOutputPort())
+        solve = vtkHierarchicalRadiosity()
+        solve.SetInputConnection(self.terrain.GetOutputPort())
+        solve.AddLightConnection(sun.GetOutputPort())
+        solve.AddLightConnection(sky.GetOutputPort(0))
+        solve.Update()
+        return solve.GetOutput()
+
+    def test_sums_are_the_sum_of_instant_solves(self):
+        times = self.out.GetFieldData().GetAbstractArray("StepTime")
+        hours = field_values(self.out, "StepHours")
+        total = {name: 0.0 for name in ("SunIrradiance", "SkyIrradiance", "ReflectedIrradiance")}
+        for k, weight in enumerate(hours):
+            lit = self.instant(times.GetValue(k))
+            for name in total:
+                total[name] = total[name] + weight * values(lit, name)
+        beam, sky = values(self.out, "BeamIrradiation"), values(self.out, "SkyIrradiation")
+        # The same shadow rays: equal to rounding.
+        numpy.testing.assert_allclose(beam, total["SunIrradiance"], rtol=1e-6, atol=1e-6)
+        # Sky and reflected light by other rays (one gather under the cumulative sky
+        # against one per step): equal within the gather's noise, which it holds to
+        # 0.3 % of each point's irradiance (sun and sky), several times that of the sky's.
+        self.assertAlmostEqual(sky.mean() / total["SkyIrradiance"].mean(), 1.0, delta=2e-3)
+        self.assertLess(numpy.sqrt(numpy.mean((sky / total["SkyIrradiance"] - 1.0) ** 2)), 0.02)
+        glob = sum(total.values())
+        self.assertLess(numpy.sqrt(numpy.mean((values(self.out, "GlobalIrradiation") / glob - 1.0) ** 2)), 0.005)
+        reflected = values(self.out, "ReflectedIrradiation")
+        self.assertAlmostEqual(reflected.mean() / total["ReflectedIrradiance"].mean(), 1.0, delta=0.05)
+
+    def test_an_instant_is_the_solve_at_that_instant(self):
+        f = irradiation(self.terrain, *OLINDA_DAY, IntegrateOverTime=False)
+        for hours in (9.25, 12.0, 16.5):  # hours since the start: 09:15, 12:00, 16:30 at -02:00
+            f.UpdateTimeStep(hours)
+            out = f.GetOutput()
+            when = "2024-06-21T%02d:%02d:00-02:00" % (int(hours), round(60 * (hours % 1)))
+            reference = self.instant(when)
+            for name in ("Irradiance", "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance"):
+                ours, theirs = values(out, name), values(reference, name)
+                self.assertLess(abs(ours.mean() / theirs.mean() - 1.0), 1e-3 if name != "ReflectedIrradiance" else 0.02,
+                                (hours, name))
+            numpy.testing.assert_allclose(values(out, "SunIrradiance"), values(reference, "SunIrradiance"),
+                                          rtol=1e-6, atol=1e-6)
+            self.assertIsNone(out.GetPointData().GetArray("SunshineDuration"))
+
+    def test_shadows_shorten_sunshine(self):
+        sunshine = values(self.out, "SunshineDuration")
+        day = sum(field_values(self.out, "StepHours"))
+        self.assertLessEqual(sunshine.max(), day + 1e-9)
+        self.assertLess(sunshine.min(), day - 1.0)  # steep slopes lose hours
+
+    def test_input_is_not_modified(self):
+        grid = self.terrain.GetOutput()
+        for name in SUMS + ("SunshineDuration",):
+            self.assertIsNone(grid.GetPointData().GetArray(name), name)
+
+    @unittest.skipUnless(shutil.which("grass"), "GRASS GIS (grass-core) is not installed")
+    def test_beam_agrees_with_grass_r_sun_daily(self):
+        work = tempfile.mkdtemp(prefix="terralux-rsun-")
+        subprocess.run(["grass", "-c", OLINDA, os.path.join(work, "loc"), "-e"], check=True, capture_output=True)
+        script = os.path.join(work, "job.sh")
+        with open(script, "w") as job:
+            job.write("set -e\nr.in.gdal -o input=%s output=dem --quiet\ng.region raster=dem\n"
+                      "r.slope.aspect elevation=dem slope=slope aspect=aspect --quiet\n"
+                      "r.sun elevation=dem slope=slope aspect=aspect day=173 step=0.5 linke_value=3.0 "
+                      "albedo_value=0.2 beam_rad=beam --quiet\n"
+                      "r.out.gdal -c input=beam output=%s/beam.tif --quiet\n" % (OLINDA, work))
+        subprocess.run(["grass", os.path.join(work, "loc", "PERMANENT"), "--exec", "bash", script],
+                       check=True, capture_output=True)
+        from osgeo import gdal
+        dataset = gdal.Open(os.path.join(work, "beam.tif"))  # held: its bands die with it
+        peer = dataset.GetRasterBand(1).ReadAsArray().astype(float)
+        shutil.rmtree(work, ignore_errors=True)
+        f = irradiation(self.terrain, *OLINDA_DAY)
+        f.SetPostNormalsToHorn()  # r.slope.aspect's
+        f.Update()
+        ours = values(f.GetOutput(), "BeamIrradiation").reshape(111, 111)[::-1, :]  # grid rows run south to north
+        inner = (slice(1, -1), slice(1, -1))  # r.slope.aspect has no slope on the border
+        relative = ours[inner] / peer[inner] - 1.0
+        self.assertLess(abs(ours[inner].mean() / peer[inner].mean() - 1.0), 0.005)
+        self.assertLess(numpy.sqrt(numpy.mean(relative ** 2)), 0.01)
+
+
+class PolarAndBadInput(unittest.TestCase):
+    def test_polar_night_is_zero_not_an_error(self):
+        f = irradiation(open_plane(), "2024-12-20T00:00:00Z", "2024-12-23T00:00:00Z", Latitude=80.0, Longitude=10.0)
+        errors = ErrorCatcher(f)
+        f.Update()
+        self.assertEqual(errors.text(), "")
+        out = f.GetOutput()
+        self.assertEqual(out.GetNumberOfPoints(), 9)
+        for name in SUMS + ("SunshineDuration",):
+            numpy.testing.assert_array_equal(values(out, name), 0.0)
+        self.assertEqual(field_values(out, "Steps"), [0.0])
+
+    def test_polar_day_has_24_hours_of_sun(self):
+        f = irradiation(open_plane(), "2024-06-21T00:00:00Z", "2024-06-22T00:00:00Z", Latitude=80.0, Longitude=10.0)
+        f.Update()
+        numpy.testing.assert_allclose(values(f.GetOutput(), "SunshineDuration"), 24.0, atol=1e-6)
+
+    def test_bad_ranges_are_refused(self):
+        cases = [
+            (("2024-06-22T00:00:00Z", "2024-06-21T00:00:00Z", 30.0), "end time must come after"),
+            (("2024-06-21T00:00:00Z", "2024-06-22T00:00:00Z", 0.0), "time step"),
+            (("2024-06-21T00:00:00Z", "2024-06-22T00:00:00Z", 1441.0), "time step"),
+            (("2024-06-21T00:00:00Z", "2024-06-22T00:00:00Z", float("nan")), "TimeStep"),
+            (("2000-01-01T00:00:00Z", "2012-01-01T00:00:00Z", 60.0), "ten years"),
+            (("2024-06-21", "2024-06-22T00:00:00Z", 30.0), "ISO 8601"),
+        ]
+        for (start, end, step), expected in cases:
+            f = irradiation(open_plane(), start, end, step)
+            errors = ErrorCatcher(f)
+            f.Update()
+            self.assertEqual(f.GetOutput().GetNumberOfPoints(), 0, expected)
+            self.assertIn(expected, errors.text())
+
+    def test_bad_turbidity_and_place_are_refused(self):
+        for settings, expected in (({"LinkeTurbidity": 40.0}, "Linke"), ({"Latitude": 95.0}, "atitude")):
+            f = irradiation(open_plane(), *DAY, **settings)
+            errors = ErrorCatcher(f)
+            f.Update()
+            self.assertEqual(f.GetOutput().GetNumberOfPoints(), 0, expected)
+            self.assertIn(expected, errors.text())
+
+
+class Command(unittest.TestCase):
+    """python3 -m terralux.irradiation as a GIS user runs it."""
+
+    def run_command(self, *arguments):
+        return subprocess.run([sys.executable, "-m", "terralux.irradiation", *arguments],
+                              capture_output=True, text=True, cwd=self.work)
+
+    def setUp(self):
+        self.work = scratch_dir()
+
+    def test_help_writes_nothing(self):
+        result = self.run_command("--help")
+        self.assertEqual(result.returncode, 0)
+        self.assertIn("--day-of-year", result.stdout)
+        self.assertEqual(os.listdir(self.work), [])
+
+    def test_bad_input_is_one_line(self):
+        for arguments in ((OLINDA, "-o", "x.tif", "--start", "2024-06-02", "--end", "2024-06-01"),
+                          (OLINDA, "-o", "x.tif", "--day-of-year", "400"),
+                          (OLINDA, "-o", "x.tif", "--start", "2024-06-01", "--linke", "3,4"),
+                          ("missing.tif", "-o", "x.tif", "--day-of-year", "1")):
+            result = self.run_command(*arguments, "--quiet")
+            self.assertEqual(result.returncode, 1, arguments)
+            self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+            self.assertIn("error:", result.stderr)
+            self.assertFalse(os.path.exists(os.path.join(self.work, "x.tif")))
+
+    def test_a_day_as_a_geotiff(self):
+        from osgeo import gdal
+        result = self.run_command(OLINDA, "-o", "day.tif", "--day-of-year", "173", "--fast")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("daylight steps", result.stdout)
+        kwh = self.run_command(OLINDA, "-o", "day_kwh.tif", "--day-of-year", "173", "--fast", "--kwh", "--quiet")
+        self.assertEqual(kwh.returncode, 0, kwh.stderr)
+        wh, k = gdal.Open(os.path.join(self.work, "day.tif")), gdal.Open(os.path.join(self.work, "day_kwh.tif"))
+        names = [wh.GetRasterBand(b).GetDescription() for b in range(1, wh.RasterCount + 1)]
+        self.assertEqual(names, ["GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation",
+                                 "SunshineDuration", "SkyViewFactor"])
+        self.assertEqual((wh.RasterXSize, wh.RasterYSize), (111, 111))
+        self.assertEqual(wh.GetRasterBand(1).GetUnitType(), "Wh/m^2")
+        self.assertEqual(k.GetRasterBand(1).GetUnitType(), "kWh/m^2")
+        self.assertEqual(wh.GetRasterBand(5).GetUnitType(), "h")
+        a, b = wh.GetRasterBand(1).ReadAsArray(), k.GetRasterBand(1).ReadAsArray()
+        numpy.testing.assert_allclose(b * 1000.0, a, rtol=1e-5)
+        self.assertGreater(float(a.mean()), 4000.0)
+
+
+if __name__ == "__main__":
+    unittest.main()
