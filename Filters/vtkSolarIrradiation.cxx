@@ -17,11 +17,13 @@
 #include "vtkStringArray.h"
 
 #include "cie_sky.h"
+#include "perez_sky.h"
 #include "cumulative_sky.h"
 #include "date_time.h"
 #include "error.h"
 #include "finite_parameters.h"
 #include "solar_steps.h"
+#include "weather_file.h"
 
 #include <chrono>
 #include <cmath>
@@ -91,6 +93,8 @@ struct vtkSolarIrradiation::Internals
   double RequestedHours = 0.0;            // UPDATE_TIME_STEP, with IntegrateOverTime off
   bool Integrated = true;
   double SecondsSteps = 0.0;
+  bool Weather = false;
+  terralux::WeatherSummary WeatherCounts;
 };
 
 //------------------------------------------------------------------------------
@@ -106,6 +110,7 @@ vtkSolarIrradiation::vtkSolarIrradiation()
   , IrradianceModel(ESRA)
   , SkyType(12)
   , SkyLevels(7)
+  , WeatherFileName(nullptr)
   , DeltaT(69.0)
   , Internal(new Internals)
 {
@@ -121,6 +126,7 @@ vtkSolarIrradiation::~vtkSolarIrradiation()
 {
   this->SetStartTime(nullptr);
   this->SetEndTime(nullptr);
+  this->SetWeatherFileName(nullptr);
   delete this->Internal;
 }
 
@@ -212,32 +218,54 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
   const double startDay = terralux::DateTime::parse(this->StartTime ? this->StartTime : "").julianDay();
   const double endDay = terralux::DateTime::parse(this->EndTime ? this->EndTime : "").julianDay();
   auto& steps = this->Internal->Steps;
-  steps = terralux::daylightSteps(startDay, endDay, this->TimeStep, site); // validates the range too
   this->Internal->Integrated = this->IntegrateOverTime != 0;
+  this->Internal->Weather = this->WeatherFileName && *this->WeatherFileName;
   scene.SunshineDuration = this->Internal->Integrated;
+  double from = startDay, to = endDay;
   if (!this->Internal->Integrated)
   {
+    terralux::stepInstants(startDay, endDay, this->TimeStep); // validates the range
     const double hours = this->Internal->RequestedHours;
     if (!std::isfinite(hours))
       throw terralux::Error("the requested time step is not a finite number of hours");
-    steps.assign(1, terralux::solarStepAt(startDay + std::min(std::max(hours, 0.0), (endDay - startDay) * 24.0) / 24.0, site));
+    from = startDay + std::min(std::max(hours, 0.0), (endDay - startDay) * 24.0) / 24.0;
+    to = from + 1.0 / 1440.0; // the minute from the instant: its weather hour, its sun
+  }
+  if (this->Internal->Weather)
+  {
+    const terralux::WeatherFile weather = terralux::readWeatherFile(this->WeatherFileName);
+    const double km = terralux::distanceKm(weather.latitudeDeg, weather.longitudeDeg, place[0], place[1]);
+    if (km > 50.0)
+      vtkWarningMacro("The weather file " << this->WeatherFileName << " is " << km
+        << " km from the place (" << place[0] << ", " << place[1] << "): its sky may not be this place's.");
+    steps = terralux::weatherSteps(weather, from, to, site, &this->Internal->WeatherCounts);
+  }
+  else if (this->Internal->Integrated)
+  {
+    steps = terralux::daylightSteps(startDay, endDay, this->TimeStep, site); // validates the range too
+  }
+  else
+  {
+    steps.assign(1, terralux::solarStepAt(from, site));
   }
 
   // Each step's sun (irradiance x hours: Wh/m^2) and sky into the cumulative sky. An
   // instant counts one hour with no duration, so its values stay W/m^2.
-  terralux::CumulativeSky sky(this->SkyLevels, 1);
+  terralux::CumulativeSky sky(this->SkyLevels);
   for (const terralux::SolarStep& step : steps)
   {
     const double weight = this->Internal->Integrated ? step.hours : 1.0;
     const terralux::Direction toward =
       terralux::directionFromZenithAzimuth(step.position.zenithDeg * degree, step.position.azimuthDeg * degree);
-    if (step.clearSky.directNormalWm2 > 0.0)
-      scene.Suns.push_back({ terralux::Vec3(toward[0], toward[1], toward[2]), terralux::uniformSpectrum(step.clearSky.directNormalWm2 * weight),
+    if (step.irradiance.directNormalWm2 > 0.0)
+      scene.Suns.push_back({ terralux::Vec3(toward[0], toward[1], toward[2]), terralux::uniformSpectrum(step.irradiance.directNormalWm2 * weight),
         this->Internal->Integrated ? step.hours : 0.0 });
-    if (step.clearSky.diffuseHorizontalWm2 > 0.0)
-      sky.add(terralux::SkyHierarchy(terralux::CieGeneralSky(this->SkyType, toward),
-                step.clearSky.diffuseHorizontalWm2, this->SkyLevels),
-        weight);
+    if (step.irradiance.diffuseHorizontalWm2 > 0.0 && this->Internal->Weather)
+      sky.add(terralux::PerezSky(toward, step.irradiance.directNormalWm2, step.irradiance.diffuseHorizontalWm2,
+                step.extraterrestrialWm2),
+        toward, step.irradiance.diffuseHorizontalWm2, weight);
+    else if (step.irradiance.diffuseHorizontalWm2 > 0.0)
+      sky.add(terralux::CieGeneralSky(this->SkyType, toward), toward, step.irradiance.diffuseHorizontalWm2, weight);
     if (this->GetAbortExecute())
       break;
   }
@@ -273,6 +301,13 @@ void vtkSolarIrradiation::FinishOutputs(vtkDataObject* output, vtkPolyData* leaf
     renameSums(leafMesh);
   }
   vtkFieldData* fieldData = output->GetFieldData();
+  auto addValue = [&](const char* name, double value) {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(name);
+    array->InsertNextValue(value);
+    fieldData->AddArray(array);
+  };
+  addValue("Steps", static_cast<double>(steps.size()));
   auto perStep = [&](const char* name, auto value) {
     vtkNew<vtkDoubleArray> array;
     array->SetName(name);
@@ -280,10 +315,6 @@ void vtkSolarIrradiation::FinishOutputs(vtkDataObject* output, vtkPolyData* leaf
       array->InsertNextValue(value(step));
     fieldData->AddArray(array);
   };
-  vtkNew<vtkDoubleArray> count;
-  count->SetName("Steps");
-  count->InsertNextValue(static_cast<double>(steps.size()));
-  fieldData->AddArray(count);
   vtkNew<vtkStringArray> times;
   times->SetName("StepTime");
   for (const terralux::SolarStep& step : steps)
@@ -292,13 +323,15 @@ void vtkSolarIrradiation::FinishOutputs(vtkDataObject* output, vtkPolyData* leaf
   perStep("StepHours", [](const terralux::SolarStep& s) { return s.hours; });
   perStep("SunZenith", [](const terralux::SolarStep& s) { return s.position.zenithDeg; });
   perStep("SunAzimuth", [](const terralux::SolarStep& s) { return s.position.azimuthDeg; });
-  perStep("SunNormalIrradiance", [](const terralux::SolarStep& s) { return s.clearSky.directNormalWm2; });
+  perStep("SunNormalIrradiance", [](const terralux::SolarStep& s) { return s.irradiance.directNormalWm2; });
   perStep(
-    "DiffuseHorizontalIrradiance", [](const terralux::SolarStep& s) { return s.clearSky.diffuseHorizontalWm2; });
-  vtkNew<vtkDoubleArray> seconds;
-  seconds->SetName("SecondsSteps");
-  seconds->InsertNextValue(this->Internal->SecondsSteps);
-  fieldData->AddArray(seconds);
+    "DiffuseHorizontalIrradiance", [](const terralux::SolarStep& s) { return s.irradiance.diffuseHorizontalWm2; });
+  addValue("SecondsSteps", this->Internal->SecondsSteps);
+  if (this->Internal->Weather)
+  {
+    addValue("WeatherHours", this->Internal->WeatherCounts.hours);
+    addValue("UnlitDirectIrradiation", this->Internal->WeatherCounts.unlitDirectWh);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -320,5 +353,6 @@ void vtkSolarIrradiation::PrintSelf(ostream& os, vtkIndent indent)
   os << "\n";
   os << indent << "SkyType: " << this->SkyType << "\n";
   os << indent << "SkyLevels: " << this->SkyLevels << "\n";
+  os << indent << "WeatherFileName: " << (this->WeatherFileName ? this->WeatherFileName : "(none)") << "\n";
   os << indent << "DeltaT: " << this->DeltaT << "\n";
 }

@@ -42,10 +42,16 @@
  * arrays) of the instant the pipeline asks for (UPDATE_TIME_STEP; StartTime when none
  * is asked), so a ParaView user can scrub through the day.
  *
+ * With a WeatherFileName (EPW or TMY3) the steps are the file's hours and the sky the
+ * Perez all-weather sky of each hour's direct and diffuse irradiance (field data
+ * `WeatherHours`, and `UnlitDirectIrradiation`: the file's direct Wh/m^2 in hours SPA
+ * has the sun below the horizon, left out).
+ *
  * Where the sun never rises in the range (polar night) the sums are zero and
  * SunshineDuration is 0; that is not an error. Refused with an error naming the fix,
  * outputs empty: a time that does not parse, an end not after the start, a step not
- * in (0, 1440] minutes, a range over ten years, a place SPA refuses, and everything
+ * in (0, 1440] minutes, a range over ten years, a place SPA refuses, a weather file
+ * with missing or garbled fields or the wrong number of rows, and everything
  * vtkHierarchicalRadiosity refuses.
  *
  * @sa vtkHierarchicalRadiosity vtkSunSource vtkSkySource
@@ -163,6 +169,20 @@ public:
 
   ///@{
   /**
+   * Set/Get a weather file: an EnergyPlus EPW or a TMY3 CSV, whose hourly direct normal
+   * and diffuse horizontal irradiance drive the Perez all-weather sky instead of the
+   * clear sky (TimeStep, IrradianceModel, the Linke turbidity and SkyType are then
+   * unused). Each hour of the file (its own local standard time; its month, day and
+   * hour placed in each year StartTime .. EndTime spans) is a step, its lit part
+   * evaluated at its middle with the hour's energy kept. A file more than 50 km from
+   * the place warns. Default is nullptr: clear skies.
+   */
+  vtkSetStringMacro(WeatherFileName);
+  vtkGetStringMacro(WeatherFileName);
+  ///@}
+
+  ///@{
+  /**
    * Set/Get TT - UT in seconds for SPA. Default is 69.
    */
   vtkSetMacro(DeltaT, double);
@@ -192,6 +212,7 @@ protected:
   double MonthlyLinkeTurbidity[12];
   int SkyType;
   int SkyLevels;
+  char* WeatherFileName;
   double DeltaT;
 
 private:

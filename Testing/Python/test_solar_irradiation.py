@@ -207,6 +207,137 @@ class OlindaDay(unittest.TestCase):
         self.assertLess(numpy.sqrt(numpy.mean(relative ** 2)), 0.01)
 
 
+# A year of weather at Olinda made in code (no weather file ships with Debian): each
+# hour the ESRA clear sky of vtkSunSource at the hour's middle, and every third day
+# overcast (no direct light, the diffuse light a third of the clear sky's global).
+OLINDA_PLACE = (-8.0, -34.85)
+
+
+def synthetic_weather_rows():
+    sun = vtkSunSource()
+    sun.SetLatitude(OLINDA_PLACE[0])
+    sun.SetLongitude(OLINDA_PLACE[1])
+    rows = []
+    start = datetime.datetime(2023, 1, 1)
+    for hour in range(8760):
+        local_end = start + datetime.timedelta(hours=hour + 1)  # the hour ending, UTC-3 standard time
+        middle = local_end - datetime.timedelta(minutes=30) + datetime.timedelta(hours=3)
+        sun.SetDateTime(middle.isoformat() + "Z")
+        sun.Update()
+        dni, dhi = sun.GetNormalIrradiance(), sun.GetDiffuseHorizontalIrradiance()
+        if (hour // 24) % 3 == 2:
+            glob = dni * max(0.0, math.cos(math.radians(sun.GetZenith()))) + dhi
+            dni, dhi = 0.0, glob / 3.0
+        end_day = local_end - datetime.timedelta(hours=1)  # hour 24 belongs to its own day
+        rows.append((end_day.month, end_day.day, (hour % 24) + 1, dni, dhi))
+    return rows
+
+
+def write_epw(path, rows, latitude=OLINDA_PLACE[0], longitude=OLINDA_PLACE[1], drop=0, garble=None):
+    with open(path, "w") as epw:
+        epw.write("LOCATION,Olinda,PE,BRA,TerraLux test,000000,%.3f,%.3f,-3.0,10.0\n" % (latitude, longitude))
+        for name in ("DESIGN CONDITIONS,0", "TYPICAL/EXTREME PERIODS,0", "GROUND TEMPERATURES,0",
+                     "HOLIDAYS/DAYLIGHT SAVINGS,No,0,0,0", "COMMENTS 1,synthetic", "COMMENTS 2,",
+                     "DATA PERIODS,1,1,Data,Sunday,1/1,12/31"):
+            epw.write(name + "\n")
+        for k, (month, day, hour, dni, dhi) in enumerate(rows[:len(rows) - drop]):
+            fields = [2023, month, day, hour, 60, "A7A7", 25.0, 20.0, 75, 101300, 0, 0, 400,
+                      "%.1f" % (dni * 0 + dhi), "%.1f" % dni, "%.1f" % dhi] + [0] * 19
+            if garble and k == garble[0]:
+                fields[garble[1]] = garble[2]
+            epw.write(",".join(str(f) for f in fields) + "\n")
+
+
+def write_tmy3(path, rows):
+    with open(path, "w") as tmy:
+        tmy.write("000000,\"OLINDA\",PE,-3.0,%.3f,%.3f,10\n" % OLINDA_PLACE)
+        tmy.write("Date (MM/DD/YYYY),Time (HH:MM),ETR (W/m^2),ETRN (W/m^2),GHI (W/m^2),GHI source,"
+                  "GHI uncert (%),DNI (W/m^2),DNI source,DNI uncert (%),DHI (W/m^2),DHI source,DHI uncert (%)\n")
+        for month, day, hour, dni, dhi in rows:
+            tmy.write("%02d/%02d/2023,%02d:00,0,0,0,1,0,%.1f,1,0,%.1f,1,0\n" % (month, day, hour, dni, dhi))
+
+
+class Weather(unittest.TestCase):
+    """Sums driven by an hourly weather file (EPW, TMY3) and the Perez sky."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.work = scratch_dir()
+        cls.rows = synthetic_weather_rows()
+        cls.epw = os.path.join(cls.work, "olinda.epw")
+        write_epw(cls.epw, cls.rows)
+        cls.plane = open_plane()
+
+    def run_weather(self, path, start="2024-03-01T00:00:00-03:00", end="2024-03-04T00:00:00-03:00", **settings):
+        f = irradiation(self.plane, start, end, Latitude=OLINDA_PLACE[0], Longitude=OLINDA_PLACE[1],
+                        WeatherFileName=path, **settings)
+        errors = ErrorCatcher(f)
+        f.Update()
+        return f.GetOutput(), errors
+
+    def test_the_files_energy_reaches_open_ground(self):
+        out, errors = self.run_weather(self.epw)
+        self.assertEqual(errors.text(), "")
+        # 1-3 March: days 59..61 of the file's year; 2 March is overcast ((day // 3) % ... as made).
+        hours = [r for r in self.rows if r[0] == 3 and r[1] in (1, 2, 3)]
+        sun = vtkSunSource()
+        sun.SetLatitude(OLINDA_PLACE[0])
+        sun.SetLongitude(OLINDA_PLACE[1])
+        beam = 0.0
+        for month, day, hour, dni, dhi in hours:
+            sun.SetDateTime("2024-%02d-%02dT%02d:30:00-03:00" % (month, day, hour - 1))
+            sun.Update()
+            beam += dni * max(0.0, math.cos(math.radians(sun.GetZenith())))
+        diffuse = sum(r[4] for r in hours)
+        numpy.testing.assert_allclose(values(out, "BeamIrradiation"), beam, rtol=0.01)
+        numpy.testing.assert_allclose(values(out, "SkyIrradiation"), diffuse, rtol=0.01)
+        self.assertEqual(field_values(out, "WeatherHours"), [72.0])
+        # Overcast hours bring no sunshine: two clear days' worth.
+        day = sum(field_values(out, "StepHours")) / 3.0
+        overcast_days = sum(1 for d in (1, 2, 3) if all(r[3] == 0.0 for r in hours if r[1] == d))
+        numpy.testing.assert_allclose(values(out, "SunshineDuration"), (3 - overcast_days) * day, atol=0.1)
+
+    def test_tmy3_gives_what_epw_gives(self):
+        tmy = os.path.join(self.work, "olinda_tmy3.csv")
+        write_tmy3(tmy, self.rows)
+        a, _ = self.run_weather(self.epw)
+        b, errors = self.run_weather(tmy)
+        self.assertEqual(errors.text(), "")
+        numpy.testing.assert_allclose(values(b, "GlobalIrradiation"), values(a, "GlobalIrradiation"), rtol=1e-9)
+
+    def test_a_far_away_file_warns(self):
+        far = os.path.join(self.work, "far.epw")
+        write_epw(far, self.rows, latitude=-8.0, longitude=-36.0)  # about 125 km west
+        f = irradiation(self.plane, "2024-03-01T00:00:00-03:00", "2024-03-02T00:00:00-03:00",
+                        Latitude=OLINDA_PLACE[0], Longitude=OLINDA_PLACE[1], WeatherFileName=far)
+        warnings = []
+        f.AddObserver("WarningEvent", lambda caller, event: warnings.append(event))
+        f.Update()
+        self.assertEqual(len(warnings), 1)
+        self.assertGreater(f.GetOutput().GetNumberOfPoints(), 0)
+
+    def test_bad_files_are_refused(self):
+        cases = {
+            "missing.epw": ("cannot open", None),
+            "short.epw": ("8760", dict(drop=1)),
+            "text.epw": ("is not a number", dict(garble=(100, 14, "abc"))),
+            "gap.epw": ("missing (9999)", dict(garble=(200, 15, "9999"))),
+            "negative.epw": ("negative", dict(garble=(300, 14, "-5"))),
+            "month.epw": ("out of range", dict(garble=(400, 1, "13"))),
+        }
+        for name, (expected, damage) in cases.items():
+            path = os.path.join(self.work, name)
+            if damage is not None:
+                write_epw(path, self.rows, **damage)
+            out, errors = self.run_weather(path)
+            self.assertEqual(out.GetNumberOfPoints(), 0, name)
+            self.assertIn(expected, errors.text(), name)
+        with open(os.path.join(self.work, "cut.csv"), "w") as cut:
+            cut.write("000000,OLINDA,PE,-3.0,-8.0,-34.85,10\nDate (MM/DD/YYYY),Time (HH:MM),DNI (W/m^2)\n")
+        out, errors = self.run_weather(os.path.join(self.work, "cut.csv"))
+        self.assertIn("no column 'DHI (", errors.text())
+
+
 class PolarAndBadInput(unittest.TestCase):
     def test_polar_night_is_zero_not_an_error(self):
         f = irradiation(open_plane(), "2024-12-20T00:00:00Z", "2024-12-23T00:00:00Z", Latitude=80.0, Longitude=10.0)

@@ -2,26 +2,83 @@
 
 #include "error.h"
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
 namespace terralux
 {
-CumulativeSky::CumulativeSky(int finestLevel, int bands)
-  : Level(finestLevel)
-  , Bands(bands)
+namespace
 {
+// 3-point Gauss-Legendre on [-1, 1].
+const double gaussNodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
+const double gaussWeights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+const double nearPeakCosine = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+} // namespace
+
+CumulativeSky::CumulativeSky(int finestLevel)
+  : Level(finestLevel)
+{
+  if (finestLevel < 1 || finestLevel > 10)
+    throw Error("a cumulative sky's level must be in 1..10");
   const std::size_t side = static_cast<std::size_t>(SkyHierarchy::cellsPerSide(finestLevel));
-  this->Sums.assign(side * side * static_cast<std::size_t>(bands), 0.0);
+  this->Sums.assign(side * side, 0.0);
+  this->Integrals.assign(side * side, 0.0);
 }
 
-void CumulativeSky::add(const SkyHierarchy& sky, double hours)
+void CumulativeSky::add(const SkyModel& model, const Direction& peak, double diffuseHorizontalWm2, double hours)
 {
-  if (sky.finestLevel() != this->Level || sky.bands() != this->Bands)
-    throw Error("a cumulative sky sums skies of one level and number of bands");
+  if (!(diffuseHorizontalWm2 >= 0.0) || !std::isfinite(diffuseHorizontalWm2) || !(hours >= 0.0) ||
+    !std::isfinite(hours))
+    throw Error("a sky is added with a finite diffuse irradiance >= 0 and hours >= 0");
   const int side = SkyHierarchy::cellsPerSide(this->Level);
-  for (int iu = 0; iu < side; ++iu)
+  // Integrals over dOmega = ds dv (s = sin u), and each row's horizontal share.
+  std::vector<double> rowHorizontal(static_cast<std::size_t>(side), 0.0);
+  tbb::parallel_for(0, side, [&](int iu) {
+    const SkyPatch row{ this->Level, iu, 0 };
+    const double s0 = std::sin(row.u0()), s1 = std::sin(row.u1());
+    double horizontal = 0.0;
     for (int iv = 0; iv < side; ++iv)
-      for (int band = 0; band < this->Bands; ++band)
-        this->Sums[(static_cast<std::size_t>(iu) * side + iv) * this->Bands + band] +=
-          hours * sky.radiance(SkyPatch{ this->Level, iu, iv }, band);
+    {
+      const SkyPatch cell{ this->Level, iu, iv };
+      const double v0 = cell.v0(), v1 = cell.v1();
+      const Direction centre = cell.direction();
+      const bool nearPeak = centre[0] * peak[0] + centre[1] * peak[1] + centre[2] * peak[2] > nearPeakCosine;
+      const int points = nearPeak ? 3 : 1;
+      double integral = 0.0;
+      for (int a = 0; a < points; ++a)
+      {
+        const double s = 0.5 * (s0 + s1) + (nearPeak ? 0.5 * (s1 - s0) * gaussNodes[a] : 0.0);
+        const double u = std::asin(std::clamp(s, 0.0, 1.0));
+        for (int b = 0; b < points; ++b)
+        {
+          const double v = 0.5 * (v0 + v1) + (nearPeak ? 0.5 * (v1 - v0) * gaussNodes[b] : 0.0);
+          const double weight = (s1 - s0) * (v1 - v0) * (nearPeak ? 0.25 * gaussWeights[a] * gaussWeights[b] : 1.0);
+          const double value = weight * model.relativeRadiance(directionFromSkyParameters(u, v));
+          integral += value;
+          horizontal += value * s;
+        }
+      }
+      this->Integrals[static_cast<std::size_t>(iu) * side + iv] = integral;
+    }
+    rowHorizontal[static_cast<std::size_t>(iu)] = horizontal;
+  });
+  double modelHorizontal = 0.0;
+  for (double value : rowHorizontal)
+    modelHorizontal += value;
+  if (!(modelHorizontal > 0.0) || !std::isfinite(modelHorizontal))
+    throw Error("the sky model gives no light on a horizontal plane; check its parameters");
+  const double scale = hours * diffuseHorizontalWm2 / modelHorizontal;
+  for (int iu = 0; iu < side; ++iu)
+  {
+    const double omega = SkyPatch{ this->Level, iu, 0 }.solidAngle();
+    for (int iv = 0; iv < side; ++iv)
+    {
+      const std::size_t k = static_cast<std::size_t>(iu) * side + iv;
+      this->Sums[k] += scale * this->Integrals[k] / omega;
+    }
+  }
   ++this->Steps;
 }
 
@@ -29,6 +86,6 @@ std::unique_ptr<SkyHierarchy> CumulativeSky::hierarchy() const
 {
   if (this->Steps == 0)
     return nullptr;
-  return std::make_unique<SkyHierarchy>(SkyHierarchy::fromCellAverages(this->Level, this->Bands, this->Sums));
+  return std::make_unique<SkyHierarchy>(SkyHierarchy::fromCellAverages(this->Level, 1, this->Sums));
 }
 } // namespace terralux

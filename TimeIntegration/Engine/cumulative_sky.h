@@ -14,18 +14,22 @@ namespace terralux
 class CumulativeSky
 {
 public:
-  /// Sums skies of this finest level and number of bands.
-  CumulativeSky(int finestLevel, int bands);
-  /// Adds `sky` (same level and bands) for `hours`. Throws Error on a mismatch.
-  void add(const SkyHierarchy& sky, double hours);
+  /// Sums one-band skies of this finest level.
+  explicit CumulativeSky(int finestLevel);
+  /// Adds `model`, scaled to give diffuseHorizontalWm2 on a horizontal plane, for
+  /// `hours`. Cell integrals take 3 x 3 Gauss points (as SkyHierarchy's) within 25
+  /// degrees of `peak` (the sun: the circumsolar brightening) and the cell's centre
+  /// elsewhere, where radiance varies slowly across a cell; a year of hourly skies
+  /// costs seconds, not minutes. Rows of cells in parallel, summed in a fixed order.
+  void add(const SkyModel& model, const Direction& peak, double diffuseHorizontalWm2, double hours);
   /// The sum as a sky hierarchy (radiance x hours, Wh/m^2/sr); null when nothing was added.
   std::unique_ptr<SkyHierarchy> hierarchy() const;
   int steps() const { return this->Steps; }
 
 private:
   int Level;
-  int Bands;
   int Steps = 0;
-  std::vector<double> Sums; // finest cells, (iu * side + iv) * bands + band
+  std::vector<double> Sums;      // finest cells, iu * side + iv
+  std::vector<double> Integrals; // the current model's, same order
 };
 } // namespace terralux

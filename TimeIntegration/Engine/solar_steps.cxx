@@ -59,7 +59,7 @@ SolarStep solarStepAt(double julianDay, const SolarSite& site)
   step.extraterrestrialWm2 = site.solarConstantWm2 / (r * r);
   // The month of the site's mean solar time: a day's turbidity, not UTC's.
   const int month = monthOfJulianDay(julianDay + site.position.longitudeDeg / 360.0);
-  step.clearSky = clearSkyIrradiance(site.model, step.position.zenithDeg, step.position.geometricZenithDeg,
+  step.irradiance = clearSkyIrradiance(site.model, step.position.zenithDeg, step.position.geometricZenithDeg,
     site.position.heightM, site.linkeByMonth[month - 1], step.extraterrestrialWm2);
   return step;
 }
@@ -81,36 +81,42 @@ std::vector<double> stepInstants(double startJulianDay, double endJulianDay, dou
   return instants;
 }
 
+bool shrinkToDaylight(double& a, double& b, const SolarSite& site)
+{
+  const double mid = 0.5 * (a + b);
+  const bool upAtA = sunUp(a, site), upAtB = sunUp(b, site);
+  if (!upAtA && !upAtB)
+  {
+    if (!sunUp(mid, site)) // night (or a sun that rises and sets inside the step's halves: too short to count)
+      return false;
+    const double rise = horizonCrossing(a, mid, false, site);
+    b = horizonCrossing(mid, b, true, site);
+    a = rise;
+  }
+  else if (!upAtA)
+  {
+    a = horizonCrossing(a, b, false, site); // sunrise
+  }
+  else if (!upAtB)
+  {
+    b = horizonCrossing(a, b, true, site); // sunset
+  }
+  return b > a;
+}
+
 std::vector<SolarStep> daylightSteps(
   double startJulianDay, double endJulianDay, double stepMinutes, const SolarSite& site)
 {
   const std::vector<double> instants = stepInstants(startJulianDay, endJulianDay, stepMinutes);
   std::vector<SolarStep> steps;
-  bool upAtStart = sunUp(instants.front(), site);
   for (std::size_t k = 0; k + 1 < instants.size(); ++k)
   {
     double a = instants[k], b = instants[k + 1];
-    const double mid = 0.5 * (a + b);
-    const bool upAtA = upAtStart, upAtB = sunUp(b, site), upAtMid = sunUp(mid, site);
-    upAtStart = upAtB;
-    if (!upAtA && !upAtB)
-    {
-      if (!upAtMid) // night (or a sun that rises and sets inside the step's halves: too short to count)
-        continue;
-      a = horizonCrossing(a, mid, false, site);
-      b = horizonCrossing(mid, b, true, site);
-    }
-    else if (!upAtA)
-    {
-      a = horizonCrossing(a, b, false, site); // sunrise
-    }
-    else if (!upAtB)
-    {
-      b = horizonCrossing(a, b, true, site); // sunset
-    }
+    if (!shrinkToDaylight(a, b, site))
+      continue;
     SolarStep step = solarStepAt(0.5 * (a + b), site);
     step.hours = (b - a) * 24.0;
-    if (step.hours > 0.0 && step.position.zenithDeg < 90.0)
+    if (step.position.zenithDeg < 90.0)
       steps.push_back(step);
   }
   return steps;

@@ -30,7 +30,9 @@ struct SolarStep
   double hours = 0.0;     ///< the time it stands for
   SolarPosition position;
   double extraterrestrialWm2 = 0.0;
-  ClearSkyIrradiance clearSky; ///< zero while the apparent sun is below the horizon
+  /// Direct normal and diffuse horizontal irradiance: the clear sky, or a weather
+  /// file's; zero while the apparent sun is below the horizon.
+  ClearSkyIrradiance irradiance;
 };
 
 /// Sun and clear sky at one instant (hours 0).
@@ -42,6 +44,10 @@ SolarStep solarStepAt(double julianDay, const SolarSite& site);
 /// (0, 1440] minutes, a range of more than ten years or a site SPA refuses.
 std::vector<SolarStep> daylightSteps(
   double startJulianDay, double endJulianDay, double stepMinutes, const SolarSite& site);
+
+/// Shrinks [a, b] (Julian days) to the part where the apparent sun is above the
+/// horizon, by bisection on its crossings; false where that part is empty.
+bool shrinkToDaylight(double& a, double& b, const SolarSite& site);
 
 /// The instants that bound the intervals of that range: start, start + step, ..., end.
 std::vector<double> stepInstants(double startJulianDay, double endJulianDay, double stepMinutes);

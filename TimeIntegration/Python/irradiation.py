@@ -3,7 +3,8 @@ day, a month or a year (Wh/m^2, or kWh/m^2), and hours of direct sun, as a multi
 GeoTIFF on the DEM's own grid.
 
     python3 -m terralux.irradiation DEM.tif -o out.tif --start 2024-06-01 --end 2024-06-30
-        [--step 30] [--linke 3.0] [--reflectance 0.2] [--day-of-year N] [--points | --fast]
+        [--step 30] [--linke 3.0] [--reflectance 0.2] [--weather FILE.epw] [--day-of-year N]
+        [--points | --fast] [--kwh]
 
 The equivalent GRASS call for one day: r.sun elevation=dem aspect=aspect slope=slope
 day=173 step=0.5 linke_value=3.0 albedo_value=0.2 beam_rad=... diff_rad=... refl_rad=...
@@ -48,6 +49,9 @@ def parse_arguments(argv):
     parser.add_argument("--model", choices=("esra", "ineichen-perez"), default="esra",
                         help="clear-sky model (default esra, as r.sun)")
     parser.add_argument("--sky-type", type=int, default=12, help="CIE standard general sky, 1..15 (default 12)")
+    parser.add_argument("--weather", metavar="FILE",
+                        help="EnergyPlus EPW or TMY3 CSV: its hourly direct and diffuse irradiance and the "
+                             "Perez sky instead of the clear sky (default range: the whole --year)")
     parser.add_argument("--tolerance", type=float, default=1e-3, help="radiosity error tolerance (default 1e-3)")
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument("--points", dest="points", action="store_true", default=True,
@@ -80,6 +84,8 @@ def time_range(args, longitude):
             raise InputError("--day-of-year %d is not a day of %d (1..%d)" % (args.day_of_year, args.year, days))
         day = datetime.date(args.year, 1, 1) + datetime.timedelta(days=args.day_of_year - 1)
         return day.isoformat() + "T00:00:00" + offset, (day + datetime.timedelta(days=1)).isoformat() + "T00:00:00" + offset
+    if not args.start and args.weather:
+        return "%d-01-01T00:00:00%s" % (args.year, offset), "%d-01-01T00:00:00%s" % (args.year + 1, offset)
     if not args.start:
         raise InputError("give --start (and --end) or --day-of-year")
 
@@ -157,6 +163,10 @@ def run(args):
     irradiation.SetErrorTolerance(args.tolerance)
     irradiation.SetEvaluateAtPoints(args.points)
     irradiation.SetPostNormalsToHorn()  # as r.slope.aspect and gdaldem
+    if args.weather:
+        if not os.path.isfile(args.weather):
+            raise InputError("no weather file at %s" % args.weather)
+        irradiation.SetWeatherFileName(args.weather)
     bar = None
     if not args.quiet:
         try:
