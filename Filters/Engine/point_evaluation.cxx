@@ -113,7 +113,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
 
 Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours) const
 {
-  return directSunlight(point, normal, this->Suns, *this->Rays, sunlitHours);
+  return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
 }
 
 void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,

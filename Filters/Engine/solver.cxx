@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -108,7 +109,7 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
   // would hide it, and inside the scene steep slopes that face it are shadowed anyway;
   // it gets no element and no links (they would only refine toward edge slopes).
   if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
-    this->Suns.push_back(this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
+    this->PointSuns.push_back(this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
@@ -620,8 +621,43 @@ std::size_t HierarchicalRadiosity::restrictTerrainMeshes()
   }
 }
 
+void HierarchicalRadiosity::mergeSuns()
+{
+  this->Suns = this->PointSuns;
+  if (this->PointSuns.size() <= maximumSolveSuns)
+    return;
+  constexpr double degree = 3.14159265358979323846 / 180.0;
+  struct Merged
+  {
+    Spectrum flux{};
+    Vec3 direction{ 0.0 };
+    double duration = 0.0;
+  };
+  std::map<std::pair<int, int>, Merged> bins; // ordered: the same suns in the same order every run
+  for (const HElement* element : this->PointSuns)
+  {
+    const auto& sun = static_cast<const SunElement&>(*element);
+    const Vec3& d = sun.direction();
+    const double altitude = std::asin(std::min(1.0, d.z));
+    const double azimuth = std::atan2(d.x, d.y) + 3.14159265358979323846;
+    const double azimuthWidth = mergedSunDegrees * degree / std::max(std::cos(altitude), 0.05);
+    Merged& bin = bins[{ static_cast<int>(altitude / (mergedSunDegrees * degree)),
+      static_cast<int>(azimuth / azimuthWidth) }];
+    const Spectrum flux = sun.emittance();
+    for (int band = 0; band < maxBands; ++band)
+      bin.flux[band] += flux[band];
+    bin.direction += largestBand(flux) * d;
+    bin.duration += sun.duration();
+  }
+  this->Suns.clear();
+  for (const auto& entry : bins)
+    this->Suns.push_back(this->Store->make<SunElement>(
+      0, glm::normalize(entry.second.direction), entry.second.flux, entry.second.duration));
+}
+
 bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
 {
+  this->mergeSuns();
   this->Stats.referencePowerW = this->referencePower();
   this->Gather->prepareSuns();
   std::vector<std::pair<HElement*, Link>> pending;

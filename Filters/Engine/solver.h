@@ -145,6 +145,13 @@ private:
   /// Whether refinement may still create elements.
   bool mayGrow();
   double referencePower() const;
+  /// The hierarchy's suns: the added ones, or, beyond maximumSolveSuns (the sun
+  /// positions of a month or a year), those within the same few degrees of the sky
+  /// merged into one (flux-weighted direction, summed flux). Light from surfaces varies
+  /// slowly with the sun's direction, and sunlight at points still takes every sun.
+  void mergeSuns();
+  static constexpr std::size_t maximumSolveSuns = 64;
+  static constexpr double mergedSunDegrees = 2.0;
   OracleSettings oracleSettings() const;
 
   RadiosityOptions Options;
@@ -156,7 +163,8 @@ private:
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on
   Cluster* RootCluster = nullptr;
-  std::vector<HElement*> Suns;
+  std::vector<HElement*> PointSuns; // every sun added: direct sunlight at points
+  std::vector<HElement*> Suns;      // the hierarchy's: PointSuns, or them merged (mergeSuns)
   HElement* SkyRoot = nullptr;
   const SkyHierarchy* Sky = nullptr;
   double SceneArea = 0.0;
