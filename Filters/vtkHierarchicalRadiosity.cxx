@@ -255,6 +255,11 @@ int vtkHierarchicalRadiosity::Solve(
     throw terralux::Error("no light source: connect a vtkSunSource or vtkSkySource with "
                           "AddLightConnection(), or give an EmissionArrayName");
   }
+  if (this->GetAbortExecute()) // asked while the lights were made (vtkSolarIrradiation's steps)
+  {
+    vtkWarningMacro("Aborted.");
+    return 1;
+  }
   terralux::RadiosityOptions options;
   options.errorTolerance = this->ErrorTolerance;
   options.minimumElementArea = this->MinimumElementArea;

@@ -252,8 +252,11 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
   // Each step's sun (irradiance x hours: Wh/m^2) and sky into the cumulative sky. An
   // instant counts one hour with no duration, so its values stay W/m^2.
   terralux::CumulativeSky sky(this->SkyLevels);
-  for (const terralux::SolarStep& step : steps)
+  for (std::size_t k = 0; k < steps.size(); ++k)
   {
+    const terralux::SolarStep& step = steps[k];
+    if (k % 64 == 0)
+      this->UpdateProgress(0.1 * static_cast<double>(k) / static_cast<double>(steps.size()));
     const double weight = this->Internal->Integrated ? step.hours : 1.0;
     const terralux::Direction toward =
       terralux::directionFromZenithAzimuth(step.position.zenithDeg * degree, step.position.azimuthDeg * degree);

@@ -355,6 +355,23 @@ class PolarAndBadInput(unittest.TestCase):
         f.Update()
         numpy.testing.assert_allclose(values(f.GetOutput(), "SunshineDuration"), 24.0, atol=1e-6)
 
+    def test_progress_runs_through_the_steps_and_abort_stops_them(self):
+        f = irradiation(open_plane(), "2024-01-01T00:00:00Z", "2024-03-01T00:00:00Z", Latitude=46.8, Longitude=8.0)
+        seen = []
+
+        def on_progress(caller, event):
+            seen.append(caller.GetProgress())
+            if caller.GetProgress() > 0.02:
+                caller.SetAbortExecute(1)
+        f.AddObserver("ProgressEvent", on_progress)
+        warnings = []
+        f.AddObserver("WarningEvent", lambda caller, event: warnings.append(event))
+        f.Update()
+        self.assertGreater(len([p for p in seen if 0.0 < p < 0.1]), 3)  # the steps report as they go
+        self.assertEqual(len(warnings), 1)  # "Aborted."
+        self.assertEqual(f.GetOutput().GetNumberOfPoints(), 0)
+        self.assertLess(max(seen), 0.1)  # stopped between steps, before the solve
+
     def test_bad_ranges_are_refused(self):
         cases = [
             (("2024-06-22T00:00:00Z", "2024-06-21T00:00:00Z", 30.0), "end time must come after"),

@@ -31,5 +31,6 @@ private:
   int Steps = 0;
   std::vector<double> Sums;      // finest cells, iu * side + iv
   std::vector<double> Integrals; // the current model's, same order
+  std::vector<Direction> Centres; // each cell's centre (in s = sin u and v), same order
 };
 } // namespace terralux
