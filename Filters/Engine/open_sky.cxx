@@ -2,6 +2,8 @@
 
 #include "sky_patch_element.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -77,11 +79,80 @@ void OpenSky::accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, 
   omega += projected;
 }
 
-void OpenSky::irradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const
+void OpenSky::exactIrradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const
 {
   irradiance = {};
   projectedSolidAngle = 0.0;
   this->accumulate(0, 0, 0, n, irradiance, projectedSolidAngle);
+}
+
+namespace
+{
+// The upper hemisphere on the diamond |a| + |b| <= 1 of the square [-1, 1]^2 (the
+// octahedral map): n / (|x| + |y| + z). The map folds along a = 0 and b = 0, lines of
+// the table's grid, so no cell straddles a fold; cells that reach past the diamond's
+// border (the horizon) are not read.
+void toSquare(const Vec3& n, double& a, double& b)
+{
+  const double scale = 1.0 / (std::abs(n.x) + std::abs(n.y) + n.z);
+  a = n.x * scale;
+  b = n.y * scale;
+}
+
+Vec3 fromSquare(double a, double b)
+{
+  return glm::normalize(Vec3(a, b, std::max(0.0, 1.0 - std::abs(a) - std::abs(b))));
+}
+
+constexpr int tableValues = maxBands + 1;
+} // namespace
+
+void OpenSky::tabulate(int side)
+{
+  const int vertices = side + 1;
+  std::vector<double> table(static_cast<std::size_t>(vertices) * vertices * tableValues);
+  tbb::parallel_for(0, vertices, [&](int row) {
+    for (int column = 0; column < vertices; ++column)
+    {
+      Spectrum e;
+      double omega;
+      this->exactIrradiance(fromSquare(-1.0 + 2.0 * column / side, -1.0 + 2.0 * row / side), e, omega);
+      double* out = &table[(static_cast<std::size_t>(row) * vertices + column) * tableValues];
+      for (int band = 0; band < maxBands; ++band)
+        out[band] = e[band];
+      out[maxBands] = omega;
+    }
+  });
+  this->Table = std::move(table);
+  this->TableSide = side;
+}
+
+void OpenSky::irradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const
+{
+  // Normals whose cell reaches the horizon, and those below it, are computed exactly.
+  double a = 0.0, b = 0.0;
+  if (n.z > 0.0)
+    toSquare(n, a, b);
+  const int side = this->TableSide, vertices = side + 1;
+  if (side == 0 || !(n.z > 0.0) || std::abs(a) + std::abs(b) > 1.0 - 6.0 / std::max(side, 1))
+  {
+    this->exactIrradiance(n, irradiance, projectedSolidAngle);
+    return;
+  }
+  const double x = std::clamp(0.5 * (a + 1.0) * side, 0.0, static_cast<double>(side));
+  const double y = std::clamp(0.5 * (b + 1.0) * side, 0.0, static_cast<double>(side));
+  const int column = std::min(static_cast<int>(x), side - 1), row = std::min(static_cast<int>(y), side - 1);
+  const double fx = x - column, fy = y - row;
+  const double* v00 = &this->Table[(static_cast<std::size_t>(row) * vertices + column) * tableValues];
+  const double* v10 = v00 + tableValues;
+  const double* v01 = v00 + static_cast<std::size_t>(vertices) * tableValues;
+  const double* v11 = v01 + tableValues;
+  double values[tableValues];
+  for (int k = 0; k < tableValues; ++k)
+    values[k] = (1.0 - fy) * ((1.0 - fx) * v00[k] + fx * v10[k]) + fy * ((1.0 - fx) * v01[k] + fx * v11[k]);
+  for (int band = 0; band < maxBands; ++band)
+    irradiance[band] = values[band];
+  projectedSolidAngle = values[maxBands];
 }
 
 Spectrum OpenSky::radiance(const Vec3& d) const

@@ -92,6 +92,9 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
 
   const auto start = std::chrono::steady_clock::now();
   this->Rays = std::make_unique<Visibility>(scene);
+  this->PointCount = scene.points.size();
+  for (const TerrainGrid* terrain : scene.terrains)
+    this->PointCount += static_cast<std::size_t>(terrain->postsX()) * terrain->postsY();
   this->Gather = std::make_unique<FinalGather>(*this->Rays, this->Roots, this->TerrainRoots, this->Suns);
   this->Stats.secondsVisibilityBuild = secondsSince(start);
 }
@@ -658,6 +661,10 @@ void HierarchicalRadiosity::mergeSuns()
 bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
 {
   this->mergeSuns();
+  // Many points to evaluate: the open sky of each point's plane from a table over
+  // normals (16,641 exact evaluations) rather than one exact evaluation per point.
+  if (this->SkyAtPoints && this->Options.gatherSamples > 0 && this->PointCount > openSkyTablePoints)
+    this->SkyAtPoints->tabulate(128);
   this->Stats.referencePowerW = this->referencePower();
   this->Gather->prepareSuns();
   std::vector<std::pair<HElement*, Link>> pending;

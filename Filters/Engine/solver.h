@@ -172,6 +172,8 @@ private:
   std::size_t StoredLinks = 0;   // links held by elements
   std::size_t PendingLinks = 0;  // links refine() holds while it runs
   std::size_t Degenerate = 0;
+  std::size_t PointCount = 0; // points and terrain posts the outputs may evaluate
+  static constexpr std::size_t openSkyTablePoints = 200000;
   RadiosityStatistics Stats;
 };
 } // namespace terralux
