@@ -23,6 +23,7 @@ packages=(
   time                              # /usr/bin/time -v for the benchmarks
   clang libclang-rt-14-dev          # the sanitizer build and its libFuzzer targets
   python3-matplotlib                # plots: the examples and the accuracy report
+  python3-tqdm                      # the irradiation command's progress bar
 )
 
 sudo_cmd=()

@@ -175,6 +175,24 @@ class OlindaDay(unittest.TestCase):
         self.assertLessEqual(sunshine.max(), day + 1e-9)
         self.assertLess(sunshine.min(), day - 1.0)  # steep slopes lose hours
 
+    def test_a_long_range_is_the_sum_of_its_parts(self):
+        # 12 days at hourly steps: about 150 suns, which the hierarchy merges within 2
+        # degrees of the sky; in parts of 3 days (about 40 suns) nothing is merged.
+        def run(start, end):
+            f = irradiation(self.terrain, start, end, 60.0)
+            f.Update()
+            return f.GetOutput()
+        whole = run("2024-03-01T00:00:00-03:00", "2024-03-13T00:00:00-03:00")
+        parts = [run("2024-03-%02dT00:00:00-03:00" % d, "2024-03-%02dT00:00:00-03:00" % (d + 3)) for d in (1, 4, 7, 10)]
+        self.assertGreater(field_values(whole, "Steps")[0], 64)
+        for name, tolerance in (("BeamIrradiation", 1e-9), ("SunshineDuration", 1e-9), ("SkyIrradiation", 3e-3),
+                                ("ReflectedIrradiation", 0.03)):
+            total = sum(values(part, name) for part in parts)
+            if tolerance < 1e-6:  # the same suns, ray for ray
+                numpy.testing.assert_allclose(values(whole, name), total, rtol=tolerance, atol=1e-6, err_msg=name)
+            else:
+                self.assertAlmostEqual(values(whole, name).mean() / total.mean(), 1.0, delta=tolerance, msg=name)
+
     def test_input_is_not_modified(self):
         grid = self.terrain.GetOutput()
         for name in SUMS + ("SunshineDuration",):
