@@ -357,12 +357,7 @@ int vtkHierarchicalRadiosity::Solve(
   const double secondsPoints =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
   vtkFieldData* fieldData = output->GetFieldData();
-  auto addValue = [&](const char* name, double value) {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(name);
-    array->InsertNextValue(value);
-    fieldData->AddArray(array);
-  };
+  auto addValue = [&](const char* name, double value) { vtkRadiosityOutputs::AddFieldValue(fieldData, name, value); };
   addValue("Elements", static_cast<double>(stats.elements));
   addValue("Links", static_cast<double>(stats.links));
   addValue("Rays", static_cast<double>(solver->raysCast())); // the solve's and the points'

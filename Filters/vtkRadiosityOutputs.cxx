@@ -4,6 +4,7 @@
 #include "vtkCellData.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -607,4 +608,12 @@ void vtkRadiosityOutputs::BuildLinks(const terralux::HierarchicalRadiosity& solv
   output->GetCellData()->AddArray(power);
   output->GetCellData()->AddArray(sender);
   output->GetCellData()->AddArray(senderLevel);
+}
+
+void vtkRadiosityOutputs::AddFieldValue(vtkFieldData* fieldData, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fieldData->AddArray(array);
 }

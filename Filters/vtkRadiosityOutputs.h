@@ -5,6 +5,7 @@
 #define vtkRadiosityOutputs_h
 
 class vtkDataSet;
+class vtkFieldData;
 class vtkPolyData;
 class vtkRadiosityScene;
 
@@ -35,6 +36,8 @@ struct vtkRadiosityOutputs
   static void BuildLeafMesh(
     const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output);
   static void BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output);
+  /// Adds a one-value double array to field data (counts, seconds).
+  static void AddFieldValue(vtkFieldData* fieldData, const char* name, double value);
 };
 
 #endif

@@ -11,6 +11,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkRadiosityOutputs.h"
 #include "vtkRadiosityScene.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -304,12 +305,7 @@ void vtkSolarIrradiation::FinishOutputs(vtkDataObject* output, vtkPolyData* leaf
     renameSums(leafMesh);
   }
   vtkFieldData* fieldData = output->GetFieldData();
-  auto addValue = [&](const char* name, double value) {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(name);
-    array->InsertNextValue(value);
-    fieldData->AddArray(array);
-  };
+  auto addValue = [&](const char* name, double value) { vtkRadiosityOutputs::AddFieldValue(fieldData, name, value); };
   addValue("Steps", static_cast<double>(steps.size()));
   auto perStep = [&](const char* name, auto value) {
     vtkNew<vtkDoubleArray> array;

@@ -15,8 +15,6 @@ constexpr double halfPi = pi / 2.0;
 constexpr double twoPi = 2.0 * pi;
 
 // 3-point Gauss-Legendre on [-1, 1]: exact for polynomials of degree 5.
-const double gaussNodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
-const double gaussWeights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
 } // namespace
 
 double SkyTexture::sample(double compassAzimuthRad, double altitudeRad, int band) const
@@ -105,34 +103,18 @@ SkyHierarchy::SkyHierarchy(
   std::vector<double> horizontalWeighted(this->Bands, 0.0);
   double modelHorizontal = 0.0;
   for (int iu = 0; iu < side; ++iu)
-  {
-    const SkyPatch row{ finestLevel, iu, 0 };
-    const double s0 = std::sin(row.u0()), s1 = std::sin(row.u1());
     for (int iv = 0; iv < side; ++iv)
-    {
-      const SkyPatch cell{ finestLevel, iu, iv };
-      const double v0 = cell.v0(), v1 = cell.v1();
-      for (int a = 0; a < 3; ++a)
-      {
-        const double s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * gaussNodes[a];
-        const double u = std::asin(std::clamp(s, 0.0, 1.0));
-        for (int b = 0; b < 3; ++b)
+      forCellGaussPoints(SkyPatch{ finestLevel, iu, iv }, [&](const Direction& d, double weight, double s, double u,
+                                                            double v) {
+        const double relative = model.relativeRadiance(d);
+        modelHorizontal += weight * relative * s;
+        for (int band = 0; band < this->Bands; ++band)
         {
-          const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * gaussNodes[b];
-          const double weight = 0.25 * (s1 - s0) * (v1 - v0) * gaussWeights[a] * gaussWeights[b];
-          const double relative = model.relativeRadiance(directionFromSkyParameters(u, v));
-          modelHorizontal += weight * relative * s;
-          for (int band = 0; band < this->Bands; ++band)
-          {
-            const double modulation = texture ? texture->sample(std::fmod(v + pi, twoPi), u, band) : 1.0;
-            modelIntegral[(static_cast<std::size_t>(iu) * side + iv) * this->Bands + band] +=
-              weight * relative * modulation;
-            horizontalWeighted[band] += weight * relative * modulation * s;
-          }
+          const double modulation = texture ? texture->sample(std::fmod(v + pi, twoPi), u, band) : 1.0;
+          modelIntegral[(static_cast<std::size_t>(iu) * side + iv) * this->Bands + band] += weight * relative * modulation;
+          horizontalWeighted[band] += weight * relative * modulation * s;
         }
-      }
-    }
-  }
+      });
   if (!(modelHorizontal > 0.0) || !std::isfinite(modelHorizontal))
   {
     throw Error("the sky model gives no light on a horizontal plane; check its parameters");

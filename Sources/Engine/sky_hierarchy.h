@@ -9,6 +9,8 @@
 
 #include "sky_model.h"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace terralux
@@ -53,6 +55,27 @@ struct SkyPatch
 
 /// Unit ENU vector toward altitude u and azimuth v (westward from south), radians.
 Direction directionFromSkyParameters(double u, double v);
+
+/// Calls f(direction, weight, s, u, v) at the 3 x 3 Gauss-Legendre points of a cell over
+/// (s = sin u, v), where dOmega = ds dv: the weights sum to the cell's solid angle, and
+/// the rule is exact for radiance polynomial of degree 5 in s and v.
+template <class F>
+void forCellGaussPoints(const SkyPatch& cell, F&& f)
+{
+  constexpr double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
+  constexpr double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
+  const double s0 = std::sin(cell.u0()), s1 = std::sin(cell.u1()), v0 = cell.v0(), v1 = cell.v1();
+  for (int a = 0; a < 3; ++a)
+  {
+    const double s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * nodes[a];
+    const double u = std::asin(std::min(1.0, std::max(0.0, s)));
+    for (int b = 0; b < 3; ++b)
+    {
+      const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * nodes[b];
+      f(directionFromSkyParameters(u, v), 0.25 * (s1 - s0) * (v1 - v0) * weights[a] * weights[b], s, u, v);
+    }
+  }
+}
 
 /// dE = R S Omega L: receiver factor R (cosine for a surface, 1 for a cluster) and
 /// scale factor S (1 for a surface, 1/4 for a cluster), paper sections 3 and 5.1.

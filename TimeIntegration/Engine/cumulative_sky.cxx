@@ -11,9 +11,6 @@ namespace terralux
 {
 namespace
 {
-// 3-point Gauss-Legendre on [-1, 1].
-const double gaussNodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
-const double gaussWeights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
 const double nearPeakCosine = std::cos(25.0 * 3.14159265358979323846 / 180.0);
 } // namespace
 
@@ -64,22 +61,12 @@ void CumulativeSky::add(const SkyModel& model, const Direction& peak, double dif
         horizontal += value * 0.5 * (s0 + s1);
         continue;
       }
-      const SkyPatch cell{ this->Level, iu, iv };
-      const double v0 = cell.v0(), v1 = cell.v1();
       double integral = 0.0;
-      for (int a = 0; a < 3; ++a)
-      {
-        const double s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * gaussNodes[a];
-        const double u = std::asin(std::clamp(s, 0.0, 1.0));
-        for (int b = 0; b < 3; ++b)
-        {
-          const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * gaussNodes[b];
-          const double weight = 0.25 * (s1 - s0) * (v1 - v0) * gaussWeights[a] * gaussWeights[b];
-          const double value = weight * model.relativeRadiance(directionFromSkyParameters(u, v));
-          integral += value;
-          horizontal += value * s;
-        }
-      }
+      forCellGaussPoints(SkyPatch{ this->Level, iu, iv }, [&](const Direction& d, double weight, double s, double, double) {
+        const double value = weight * model.relativeRadiance(d);
+        integral += value;
+        horizontal += value * s;
+      });
       this->Integrals[k] = integral;
     }
     rowHorizontal[static_cast<std::size_t>(iu)] = horizontal;

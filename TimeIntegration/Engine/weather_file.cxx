@@ -92,18 +92,25 @@ void requireHours(const WeatherFile& weather, const std::string& path)
       " hourly rows: a year has 8760 (8784 in a leap year)");
 }
 
+// The site's fields, in the columns its format puts them.
+void readSite(const FileReader& reader, const std::vector<std::string>& fields, std::size_t latitude,
+  std::size_t longitude, std::size_t timeZone, std::size_t elevation, WeatherFile& weather)
+{
+  weather.latitudeDeg = reader.number(fields, latitude, "latitude");
+  weather.longitudeDeg = reader.number(fields, longitude, "longitude");
+  weather.utcOffsetHours = reader.number(fields, timeZone, "time zone");
+  weather.elevationM = reader.number(fields, elevation, "elevation");
+  if (std::abs(weather.latitudeDeg) > 90.0 || std::abs(weather.longitudeDeg) > 180.0 ||
+    std::abs(weather.utcOffsetHours) > 14.0)
+    reader.fail("the site's latitude, longitude or time zone is out of range");
+}
+
 WeatherFile readEpw(FileReader& reader, const std::vector<std::string>& location)
 {
   WeatherFile weather;
   weather.format = "EPW";
   // LOCATION,city,state,country,source,WMO,latitude,longitude,time zone,elevation
-  weather.latitudeDeg = reader.number(location, 6, "latitude");
-  weather.longitudeDeg = reader.number(location, 7, "longitude");
-  weather.utcOffsetHours = reader.number(location, 8, "time zone");
-  weather.elevationM = reader.number(location, 9, "elevation");
-  if (std::abs(weather.latitudeDeg) > 90.0 || std::abs(weather.longitudeDeg) > 180.0 ||
-    std::abs(weather.utcOffsetHours) > 14.0)
-    reader.fail("the LOCATION's latitude, longitude or time zone is out of range");
+  readSite(reader, location, 6, 7, 8, 9, weather);
   std::string line;
   for (int k = 0; k < 7; ++k) // DESIGN CONDITIONS .. DATA PERIODS
     if (!reader.next(line))
@@ -132,13 +139,7 @@ WeatherFile readTmy3(FileReader& reader, const std::vector<std::string>& site)
   WeatherFile weather;
   weather.format = "TMY3";
   // USAF,name,state,time zone,latitude,longitude,elevation
-  weather.utcOffsetHours = reader.number(site, 3, "time zone");
-  weather.latitudeDeg = reader.number(site, 4, "latitude");
-  weather.longitudeDeg = reader.number(site, 5, "longitude");
-  weather.elevationM = reader.number(site, 6, "elevation");
-  if (std::abs(weather.latitudeDeg) > 90.0 || std::abs(weather.longitudeDeg) > 180.0 ||
-    std::abs(weather.utcOffsetHours) > 14.0)
-    reader.fail("the site's latitude, longitude or time zone is out of range");
+  readSite(reader, site, 4, 5, 3, 6, weather);
   std::string line;
   if (!reader.next(line))
     reader.fail("no column names (TMY3's second line)");
