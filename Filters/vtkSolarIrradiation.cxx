@@ -262,7 +262,8 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
     const terralux::Direction toward =
       terralux::directionFromZenithAzimuth(step.position.zenithDeg * degree, step.position.azimuthDeg * degree);
     if (step.irradiance.directNormalWm2 > 0.0)
-      scene.Suns.push_back({ terralux::Vec3(toward[0], toward[1], toward[2]), terralux::uniformSpectrum(step.irradiance.directNormalWm2 * weight),
+      scene.Suns.push_back({ terralux::Vec3(toward[0], toward[1], toward[2]),
+        terralux::uniformSpectrum(step.irradiance.directNormalWm2 * weight),
         this->Internal->Integrated ? step.hours : 0.0 });
     if (step.irradiance.diffuseHorizontalWm2 > 0.0 && this->Internal->Weather)
       sky.add(terralux::PerezSky(toward, step.irradiance.directNormalWm2, step.irradiance.diffuseHorizontalWm2,
