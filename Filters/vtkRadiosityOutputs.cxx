@@ -299,39 +299,63 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   const vtkIdType count = input.data->GetNumberOfPoints();
   std::vector<std::vector<Side>> sides(count);
   const auto& roots = solver.polygonRoots();
+  // Point `point` of the surface of `root`, on its leaf `leaf`, joins the side of its
+  // orientation.
+  auto addToSide = [&](vtkIdType point, const terralux::PolygonElement* root, const terralux::PolygonElement* leaf) {
+    const Vec3 n = root->normal();
+    Side* side = nullptr;
+    for (Side& candidate : sides[point])
+      if (glm::dot(glm::normalize(candidate.normalSum), n) > sameSide)
+        side = &candidate;
+    if (!side)
+    {
+      sides[point].emplace_back();
+      side = &sides[point].back();
+      side->leaf = leaf;
+    }
+    else if (!terrainGrid && leaf != side->leaf &&
+      std::find(side->otherLeaves.begin(), side->otherLeaves.end(), leaf) == side->otherLeaves.end())
+    {
+      side->otherLeaves.push_back(leaf);
+    }
+    side->normalSum += root->area() * n;
+    side->area += root->area();
+    if (!evaluateAtPoints)
+    {
+      accumulate(side->leafSum, valuesOf(*leaf), leaf->area());
+      side->skyView += leaf->SkyViewFactor * leaf->area();
+      side->leafWeight += leaf->area();
+    }
+  };
+  // The largest part of each cell (a polygon is split into triangles), for vertices
+  // that only its degenerate parts reach.
+  std::unordered_map<std::int64_t, std::size_t> largestPart;
   for (std::size_t k = 0; k < roots.size(); ++k)
   {
     const terralux::ScenePolygon& polygon = scene.Scene.polygons[k];
     if (!roots[k] || polygon.owner != index)
       continue;
+    auto found = largestPart.find(polygon.cell);
+    if (found == largestPart.end() || roots[found->second]->area() < roots[k]->area())
+      largestPart[polygon.cell] = k;
+    for (int c = 0; c < polygon.vertexCount; ++c)
+      addToSide(polygon.vertices[c] - input.firstPoint, roots[k],
+        leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]));
+  }
+  // A vertex of a cell with area that only a zero-area part of it reaches (a spike of
+  // a concave polygon, whose ear clipping left a degenerate triangle) takes the value of
+  // the cell's largest part at the vertex, from the leaf nearest to it.
+  for (std::size_t k = 0; k < roots.size(); ++k)
+  {
+    const terralux::ScenePolygon& polygon = scene.Scene.polygons[k];
+    const auto part = roots[k] || polygon.owner != index ? largestPart.end() : largestPart.find(polygon.cell);
+    if (part == largestPart.end())
+      continue;
     for (int c = 0; c < polygon.vertexCount; ++c)
     {
       const vtkIdType point = polygon.vertices[c] - input.firstPoint;
-      const terralux::PolygonElement* leaf = leafAtCorner(roots[k], scene.Scene.points[polygon.vertices[c]]);
-      const Vec3 n = roots[k]->normal();
-      Side* side = nullptr;
-      for (Side& candidate : sides[point])
-        if (glm::dot(glm::normalize(candidate.normalSum), n) > sameSide)
-          side = &candidate;
-      if (!side)
-      {
-        sides[point].emplace_back();
-        side = &sides[point].back();
-        side->leaf = leaf;
-      }
-      else if (!terrainGrid && leaf != side->leaf &&
-        std::find(side->otherLeaves.begin(), side->otherLeaves.end(), leaf) == side->otherLeaves.end())
-      {
-        side->otherLeaves.push_back(leaf);
-      }
-      side->normalSum += roots[k]->area() * n;
-      side->area += roots[k]->area();
-      if (!evaluateAtPoints)
-      {
-        accumulate(side->leafSum, valuesOf(*leaf), leaf->area());
-        side->skyView += leaf->SkyViewFactor * leaf->area();
-        side->leafWeight += leaf->area();
-      }
+      if (sides[point].empty())
+        addToSide(point, roots[part->second], roots[part->second]->leafHolding(scene.Scene.points[polygon.vertices[c]]));
     }
   }
   // Points on no polygon (no-data posts, loose vertices) have no value: NaN.

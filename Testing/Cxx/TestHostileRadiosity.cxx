@@ -460,6 +460,34 @@ TEST(HostileRadiosity, FuzzFindingsStayFixed)
     ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
     EXPECT_GT(radiosity->GetLeafMeshOutput()->GetNumberOfCells(), 0);
   }
+  // A quad whose first vertex is a spike on the line of two others: ear clipping leaves
+  // it only a zero-area triangle. It takes the quad's value there, not NaN.
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble(); // the fuzzer's own points (denormals included)
+    points->InsertNextPoint(1.0682006905399515e-255, 0.06103515625, 1.0674197922632749e-255);
+    points->InsertNextPoint(1.3908197025675319e-309, 0.00732421875, 0);
+    points->InsertNextPoint(0.625, 0.0042724609375, 0.46875);
+    points->InsertNextPoint(5.0058479970112312e-247, 0.0152587890625, 0);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType quad[4] = { 0, 1, 2, 3 };
+    cells->InsertNextCell(4, quad);
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetPolys(cells);
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputData(data);
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    vtkNew<MessageCatcher> messages;
+    ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+    vtkDataArray* irradiance =
+      vtkPolyData::SafeDownCast(radiosity->GetOutput())->GetPointData()->GetArray("Irradiance");
+    for (vtkIdType k = 0; k < 4; ++k)
+    {
+      EXPECT_TRUE(std::isfinite(irradiance->GetComponent(k, 0))) << k;
+      EXPECT_GT(irradiance->GetComponent(k, 0), 0.0) << k;
+    }
+  }
 }
 
 TEST(HostileRadiosity, SunBelowTheHorizonCostsNothing)

@@ -61,6 +61,15 @@ public:
       this->fail(std::string(name) + " '" + fields[index] + "' is not a number");
     return value;
   }
+  /// A whole number in [low, high] (checked before the conversion: a garbled 1e30 is no int).
+  int integer(const std::vector<std::string>& fields, std::size_t index, const char* name, int low, int high) const
+  {
+    const double value = this->number(fields, index, name);
+    if (!(value >= low && value <= high) || value != std::floor(value))
+      this->fail(std::string(name) + " '" + fields[index] + "' is out of range (" + std::to_string(low) + ".." +
+        std::to_string(high) + ")");
+    return static_cast<int>(value);
+  }
   double irradiance(const std::vector<std::string>& fields, std::size_t index, const char* name) const
   {
     const double value = this->number(fields, index, name);
@@ -123,9 +132,9 @@ WeatherFile readEpw(FileReader& reader, const std::vector<std::string>& location
     if (fields.size() < 16)
       reader.fail("a data row has " + std::to_string(fields.size()) + " fields; EPW rows have 35");
     WeatherRecord record;
-    record.month = static_cast<int>(reader.number(fields, 1, "month"));
-    record.day = static_cast<int>(reader.number(fields, 2, "day"));
-    record.hour = static_cast<int>(reader.number(fields, 3, "hour"));
+    record.month = reader.integer(fields, 1, "month", 1, 12);
+    record.day = reader.integer(fields, 2, "day", 1, 31);
+    record.hour = reader.integer(fields, 3, "hour", 1, 24);
     reader.checkDate(record.month, record.day, record.hour);
     record.directNormalWh = reader.irradiance(fields, 14, "direct normal radiation");
     record.diffuseHorizontalWh = reader.irradiance(fields, 15, "diffuse horizontal radiation");
