@@ -25,7 +25,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 using terralux_test::MessageCatcher;
 using terralux_test::runPipeline;
@@ -34,6 +36,23 @@ using terralux_test::uniformSky;
 
 namespace
 {
+// Polygons of double-precision points (denormals kept), as a fuzzer would give them.
+vtkSmartPointer<vtkPolyData> polygons(
+  const std::vector<std::array<double, 3>>& corners, const std::vector<std::vector<vtkIdType>>& cells)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : corners)
+    points->InsertNextPoint(p.data());
+  vtkNew<vtkCellArray> polys;
+  for (const auto& cell : cells)
+    polys->InsertNextCell(static_cast<vtkIdType>(cell.size()), cell.data());
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  data->SetPolys(polys);
+  return data;
+}
+
 vtkSmartPointer<vtkPolyData> square(double size, int resolution = 1, double z = 0.0)
 {
   vtkNew<vtkPlaneSource> source;
@@ -438,20 +457,8 @@ TEST(HostileRadiosity, FuzzFindingsStayFixed)
   }
   // Corners a denormal apart: the leaf mesh's T-vertex walk ends (it recursed forever).
   {
-    vtkNew<vtkPoints> points;
-    points->InsertNextPoint(0, 0, 0);
-    points->InsertNextPoint(4, 0, 0);
-    points->InsertNextPoint(0, 4, 0);
-    points->InsertNextPoint(0, 1e-322, 0);
-    points->InsertNextPoint(4, 4, 0);
-    vtkNew<vtkCellArray> cells;
-    const vtkIdType a[3] = { 0, 1, 2 }, b[3] = { 3, 1, 4 }, c[3] = { 1, 4, 2 };
-    cells->InsertNextCell(3, a);
-    cells->InsertNextCell(3, b);
-    cells->InsertNextCell(3, c);
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetPolys(cells);
+    const auto data = polygons({ { 0, 0, 0 }, { 4, 0, 0 }, { 0, 4, 0 }, { 0, 1e-322, 0 }, { 4, 4, 0 } },
+      { { 0, 1, 2 }, { 3, 1, 4 }, { 1, 4, 2 } });
     vtkNew<vtkHierarchicalRadiosity> radiosity;
     radiosity->SetInputData(data);
     radiosity->AddLightConnection(sky->GetOutputPort(0));
@@ -463,18 +470,11 @@ TEST(HostileRadiosity, FuzzFindingsStayFixed)
   // A quad whose first vertex is a spike on the line of two others: ear clipping leaves
   // it only a zero-area triangle. It takes the quad's value there, not NaN.
   {
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble(); // the fuzzer's own points (denormals included)
-    points->InsertNextPoint(1.0682006905399515e-255, 0.06103515625, 1.0674197922632749e-255);
-    points->InsertNextPoint(1.3908197025675319e-309, 0.00732421875, 0);
-    points->InsertNextPoint(0.625, 0.0042724609375, 0.46875);
-    points->InsertNextPoint(5.0058479970112312e-247, 0.0152587890625, 0);
-    vtkNew<vtkCellArray> cells;
-    const vtkIdType quad[4] = { 0, 1, 2, 3 };
-    cells->InsertNextCell(4, quad);
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetPolys(cells);
+    const auto data = polygons({ { 1.0682006905399515e-255, 0.06103515625, 1.0674197922632749e-255 },
+                                 { 1.3908197025675319e-309, 0.00732421875, 0 },
+                                 { 0.625, 0.0042724609375, 0.46875 },
+                                 { 5.0058479970112312e-247, 0.0152587890625, 0 } },
+      { { 0, 1, 2, 3 } });
     vtkNew<vtkHierarchicalRadiosity> radiosity;
     radiosity->SetInputData(data);
     radiosity->AddLightConnection(sky->GetOutputPort(0));
