@@ -1,30 +1,63 @@
 // Writes a fractal DEM GeoTIFF: make_fractal_dem OUT.tif [N=4097] [SEED=1] [SPACING=30]
 #include "fractal_dem.h"
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
+
+namespace
+{
+const char* const usage = "usage: make_fractal_dem OUT.tif [N=4097] [SEED=1] [SPACING_M=30]\n"
+                          "  an N x N fractal DEM (N = 2^k + 1; UTM 32N, 1500 m relief), seeded, as a float32 GeoTIFF\n";
+
+// The whole argument as a number, or false.
+bool parse(const char* text, double& value)
+{
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(text, &end);
+  return end != text && *end == '\0' && errno == 0;
+}
+} // namespace
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  if (argc >= 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0))
   {
-    std::cerr << "usage: make_fractal_dem OUT.tif [N=4097] [SEED=1] [SPACING_M=30]\n";
+    std::cout << usage; // and no file
+    return 0;
+  }
+  if (argc < 2 || argc > 5)
+  {
+    std::cerr << usage;
     return 2;
   }
-  const int n = argc > 2 ? std::atoi(argv[2]) : 4097;
-  const unsigned seed = argc > 3 ? static_cast<unsigned>(std::atoi(argv[3])) : 1u;
-  const double spacing = argc > 4 ? std::atof(argv[4]) : 30.0;
+  if (argv[1][0] == '-')
+  {
+    std::cerr << "make_fractal_dem: unknown option " << argv[1] << "\n" << usage;
+    return 2;
+  }
+  double n = 4097, seed = 1, spacing = 30.0;
+  if ((argc > 2 && !parse(argv[2], n)) || (argc > 3 && !parse(argv[3], seed)) ||
+    (argc > 4 && !parse(argv[4], spacing)) || !(n >= 3 && n <= 32767 && n == static_cast<int>(n)) ||
+    !(seed >= 0 && seed <= 4294967295.0) || !(spacing > 0 && spacing < 1e6))
+  {
+    std::cerr << "make_fractal_dem: N must be a whole number in 3..32767, SEED in 0..2^32-1, SPACING_M in (0, 1e6)\n"
+              << usage;
+    return 2;
+  }
   try
   {
-    const auto heights = terralux_bench::fractalHeights(n, seed, 0.55, 1500.0);
-    terralux_bench::writeGeoTiff(argv[1], n, heights, spacing, 300000.0, 5200000.0);
+    const auto heights = terralux_bench::fractalHeights(static_cast<int>(n), static_cast<unsigned>(seed), 0.55, 1500.0);
+    terralux_bench::writeGeoTiff(argv[1], static_cast<int>(n), heights, spacing, 300000.0, 5200000.0);
   }
   catch (const std::exception& error)
   {
     std::cerr << "make_fractal_dem: " << error.what() << "\n";
     return 1;
   }
-  std::cout << "wrote " << argv[1] << ": " << n << " x " << n << " float32 posts at " << spacing
-            << " m, seed " << seed << "\n";
+  std::cout << "wrote " << argv[1] << ": " << n << " x " << n << " float32 posts at " << spacing << " m, seed "
+            << seed << "\n";
   return 0;
 }
