@@ -4,6 +4,8 @@
 // from each external source, then refine -> gather -> push/pull until radiosity
 // converges. Gather and ray casting run in parallel (TBB); element creation is
 // sequential, so results are identical for any thread count.
+// The phases live in files of their own: refinement.cxx, push_pull.cxx (gather and
+// push-pull), point_evaluation.cxx (values at the points users read).
 
 #include "bf_oracle.h"
 #include "helement.h"
