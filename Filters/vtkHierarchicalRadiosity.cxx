@@ -34,19 +34,9 @@ std::vector<vtkDataSet*> inputDataSets(vtkInformationVector* port)
   std::vector<vtkDataSet*> result;
   for (int k = 0; k < port->GetNumberOfInformationObjects(); ++k)
   {
-    vtkDataObject* data = port->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT());
-    if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-    {
-      vtkSmartPointer<vtkCompositeDataIterator> it;
-      it.TakeReference(composite->NewIterator());
-      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-        if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
-          result.push_back(dataSet);
-    }
-    else if (auto* dataSet = vtkDataSet::SafeDownCast(data))
-    {
-      result.push_back(dataSet);
-    }
+    const std::vector<vtkDataSet*> dataSets =
+      vtkRadiosityScene::DataSetsOf(port->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()));
+    result.insert(result.end(), dataSets.begin(), dataSets.end());
   }
   return result;
 }

@@ -35,7 +35,7 @@ using terralux::Spectrum;
 using terralux::Vec3;
 
 // The five output quantities of a leaf: global, sun, sky, reflected irradiance, radiosity.
-constexpr int quantities = 5;
+constexpr int quantities = vtkRadiosityOutputs::Quantities;
 const char* const quantityNames[quantities] = { "Irradiance", "SunIrradiance", "SkyIrradiance",
   "ReflectedIrradiance", "Radiosity" };
 using Values = std::array<Spectrum, quantities>;
@@ -632,6 +632,11 @@ void vtkRadiosityOutputs::BuildLinks(const terralux::HierarchicalRadiosity& solv
   output->GetCellData()->AddArray(power);
   output->GetCellData()->AddArray(sender);
   output->GetCellData()->AddArray(senderLevel);
+}
+
+const char* vtkRadiosityOutputs::QuantityName(int quantity)
+{
+  return quantityNames[quantity];
 }
 
 void vtkRadiosityOutputs::AddFieldValue(vtkFieldData* fieldData, const char* name, double value)

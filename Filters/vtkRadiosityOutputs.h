@@ -16,6 +16,11 @@ class HierarchicalRadiosity;
 
 struct vtkRadiosityOutputs
 {
+  /// The point arrays of each solve, in order: global, sun, sky and reflected
+  /// irradiance, radiosity.
+  static constexpr int Quantities = 5;
+  static const char* QuantityName(int quantity);
+
   /// How output 0's point arrays are made.
   struct PointOptions
   {

@@ -2,6 +2,8 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -10,6 +12,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
+#include "vtkSmartPointer.h"
 #include "vtkSMPTools.h"
 #include "vtkStructuredGrid.h"
 #include "vtkUnsignedCharArray.h"
@@ -444,4 +447,22 @@ void vtkRadiosityScene::AddSky(int level, int bands, std::vector<double> average
   }
   this->Sky = std::make_unique<terralux::SkyHierarchy>(
     terralux::SkyHierarchy::fromCellAverages(this->SkyLevel, this->SkyBands, this->SkyAverages));
+}
+
+std::vector<vtkDataSet*> vtkRadiosityScene::DataSetsOf(vtkDataObject* data)
+{
+  std::vector<vtkDataSet*> result;
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+        result.push_back(dataSet);
+  }
+  else if (auto* dataSet = vtkDataSet::SafeDownCast(data))
+  {
+    result.push_back(dataSet);
+  }
+  return result;
 }

@@ -19,6 +19,10 @@ class vtkDataSet;
 class vtkRadiosityScene
 {
 public:
+  /// A data set itself, or the leaf data sets of a composite in its order (null and
+  /// non-data-set blocks left out).
+  static std::vector<vtkDataSet*> DataSetsOf(vtkDataObject* data);
+
   struct Input
   {
     vtkDataSet* data;

@@ -1,7 +1,5 @@
 #include "vtkSolarIrradiation.h"
 
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
@@ -13,16 +11,15 @@
 #include "vtkPolyData.h"
 #include "vtkRadiosityOutputs.h"
 #include "vtkRadiosityScene.h"
-#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
 #include "cie_sky.h"
-#include "perez_sky.h"
 #include "cumulative_sky.h"
 #include "date_time.h"
 #include "error.h"
 #include "finite_parameters.h"
+#include "perez_sky.h"
 #include "solar_steps.h"
 #include "weather_file.h"
 
@@ -36,19 +33,17 @@ namespace
 {
 constexpr double degree = 3.14159265358979323846 / 180.0;
 
-// vtkHierarchicalRadiosity's names of instants and the sums' names.
-const char* const instantNames[] = { "Irradiance", "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance",
-  "Radiosity" };
-const char* const sumNames[] = { "GlobalIrradiation", "BeamIrradiation", "SkyIrradiation",
-  "ReflectedIrradiation", "OutgoingIrradiation" };
+// The sums' names, in the order of vtkRadiosityOutputs' quantities.
+const char* const sumNames[vtkRadiosityOutputs::Quantities] = { "GlobalIrradiation", "BeamIrradiation",
+  "SkyIrradiation", "ReflectedIrradiation", "OutgoingIrradiation" };
 
 // The sums' names and units (vtkDataArray::UNITS_LABEL, which vtkTerrainRasterWriter
 // writes into the GeoTIFF's bands).
 void renameSums(vtkDataSet* data)
 {
   vtkPointData* pointData = data->GetPointData();
-  for (int k = 0; k < 5; ++k)
-    if (vtkDataArray* array = pointData->GetArray(instantNames[k]))
+  for (int k = 0; k < vtkRadiosityOutputs::Quantities; ++k)
+    if (vtkDataArray* array = pointData->GetArray(vtkRadiosityOutputs::QuantityName(k)))
     {
       array->SetName(sumNames[k]);
       array->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), "Wh/m^2");
@@ -73,16 +68,11 @@ bool geoOrigin(vtkInformationVector* port, double place[3])
   for (int k = 0; k < port->GetNumberOfInformationObjects(); ++k)
   {
     vtkDataObject* data = port->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT());
-    if (fromData(data))
+    if (fromData(data)) // a composite's own field data first, then its blocks'
       return true;
-    if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-    {
-      vtkSmartPointer<vtkCompositeDataIterator> it;
-      it.TakeReference(composite->NewIterator());
-      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-        if (fromData(it->GetCurrentDataObject()))
-          return true;
-    }
+    for (vtkDataSet* block : vtkRadiosityScene::DataSetsOf(data))
+      if (fromData(block))
+        return true;
   }
   return false;
 }
@@ -92,9 +82,7 @@ struct vtkSolarIrradiation::Internals
 {
   std::vector<terralux::SolarStep> Steps; // of the last solve
   double RequestedHours = 0.0;            // UPDATE_TIME_STEP, with IntegrateOverTime off
-  bool Integrated = true;
   double SecondsSteps = 0.0;
-  bool Weather = false;
   terralux::WeatherSummary WeatherCounts;
 };
 
@@ -137,12 +125,6 @@ void vtkSolarIrradiation::SetLinkeTurbidity(double value)
   const double monthly[12] = { value, value, value, value, value, value, value, value, value, value, value,
     value };
   this->SetMonthlyLinkeTurbidity(monthly);
-}
-
-//------------------------------------------------------------------------------
-int vtkSolarIrradiation::FillInputPortInformation(int port, vtkInformation* info)
-{
-  return this->Superclass::FillInputPortInformation(port, info);
 }
 
 //------------------------------------------------------------------------------
@@ -219,11 +201,10 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
   const double startDay = terralux::DateTime::parse(this->StartTime ? this->StartTime : "").julianDay();
   const double endDay = terralux::DateTime::parse(this->EndTime ? this->EndTime : "").julianDay();
   auto& steps = this->Internal->Steps;
-  this->Internal->Integrated = this->IntegrateOverTime != 0;
-  this->Internal->Weather = this->WeatherFileName && *this->WeatherFileName;
-  scene.SunshineDuration = this->Internal->Integrated;
+  const bool integrated = this->IntegrateOverTime != 0, weather = this->UsesWeatherFile();
+  scene.SunshineDuration = integrated;
   double from = startDay, to = endDay;
-  if (!this->Internal->Integrated)
+  if (!integrated)
   {
     terralux::stepInstants(startDay, endDay, this->TimeStep); // validates the range
     const double hours = this->Internal->RequestedHours;
@@ -232,16 +213,16 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
     from = startDay + std::min(std::max(hours, 0.0), (endDay - startDay) * 24.0) / 24.0;
     to = from + 1.0 / 1440.0; // the minute from the instant: its weather hour, its sun
   }
-  if (this->Internal->Weather)
+  if (weather)
   {
-    const terralux::WeatherFile weather = terralux::readWeatherFile(this->WeatherFileName);
-    const double km = terralux::distanceKm(weather.latitudeDeg, weather.longitudeDeg, place[0], place[1]);
+    const terralux::WeatherFile file = terralux::readWeatherFile(this->WeatherFileName);
+    const double km = terralux::distanceKm(file.latitudeDeg, file.longitudeDeg, place[0], place[1]);
     if (km > 50.0)
       vtkWarningMacro("The weather file " << this->WeatherFileName << " is " << km
         << " km from the place (" << place[0] << ", " << place[1] << "): its sky may not be this place's.");
-    steps = terralux::weatherSteps(weather, from, to, site, &this->Internal->WeatherCounts);
+    steps = terralux::weatherSteps(file, from, to, site, &this->Internal->WeatherCounts);
   }
-  else if (this->Internal->Integrated)
+  else if (integrated)
   {
     steps = terralux::daylightSteps(startDay, endDay, this->TimeStep, site); // validates the range too
   }
@@ -258,14 +239,14 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
     const terralux::SolarStep& step = steps[k];
     if (k % 64 == 0)
       this->UpdateProgress(0.1 * static_cast<double>(k) / static_cast<double>(steps.size()));
-    const double weight = this->Internal->Integrated ? step.hours : 1.0;
+    const double weight = integrated ? step.hours : 1.0;
     const terralux::Direction toward =
       terralux::directionFromZenithAzimuth(step.position.zenithDeg * degree, step.position.azimuthDeg * degree);
     if (step.irradiance.directNormalWm2 > 0.0)
       scene.Suns.push_back({ terralux::Vec3(toward[0], toward[1], toward[2]),
         terralux::uniformSpectrum(step.irradiance.directNormalWm2 * weight),
-        this->Internal->Integrated ? step.hours : 0.0 });
-    if (step.irradiance.diffuseHorizontalWm2 > 0.0 && this->Internal->Weather)
+        integrated ? step.hours : 0.0 });
+    if (step.irradiance.diffuseHorizontalWm2 > 0.0 && weather)
       sky.add(terralux::PerezSky(toward, step.irradiance.directNormalWm2, step.irradiance.diffuseHorizontalWm2,
                 step.extraterrestrialWm2),
         toward, step.irradiance.diffuseHorizontalWm2, weight);
@@ -289,20 +270,10 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
 void vtkSolarIrradiation::FinishOutputs(vtkDataObject* output, vtkPolyData* leafMesh)
 {
   const auto& steps = this->Internal->Steps;
-  if (this->Internal->Integrated)
+  if (this->IntegrateOverTime)
   {
-    if (auto* composite = vtkCompositeDataSet::SafeDownCast(output))
-    {
-      vtkSmartPointer<vtkCompositeDataIterator> it;
-      it.TakeReference(composite->NewIterator());
-      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-        if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
-          renameSums(dataSet);
-    }
-    else if (auto* dataSet = vtkDataSet::SafeDownCast(output))
-    {
+    for (vtkDataSet* dataSet : vtkRadiosityScene::DataSetsOf(output))
       renameSums(dataSet);
-    }
     renameSums(leafMesh);
   }
   vtkFieldData* fieldData = output->GetFieldData();
@@ -327,7 +298,7 @@ void vtkSolarIrradiation::FinishOutputs(vtkDataObject* output, vtkPolyData* leaf
   perStep(
     "DiffuseHorizontalIrradiance", [](const terralux::SolarStep& s) { return s.irradiance.diffuseHorizontalWm2; });
   addValue("SecondsSteps", this->Internal->SecondsSteps);
-  if (this->Internal->Weather)
+  if (this->UsesWeatherFile())
   {
     addValue("WeatherHours", this->Internal->WeatherCounts.hours);
     addValue("UnlitDirectIrradiation", this->Internal->WeatherCounts.unlitDirectWh);

@@ -195,10 +195,10 @@ protected:
   vtkSolarIrradiation();
   ~vtkSolarIrradiation() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   bool AddLights(vtkInformationVector** inputVector, vtkRadiosityScene& scene) override;
   void FinishOutputs(vtkDataObject* output, vtkPolyData* leafMesh) override;
+  bool UsesWeatherFile() const { return this->WeatherFileName && *this->WeatherFileName; }
 
   char* StartTime;
   char* EndTime;

@@ -168,7 +168,6 @@ void HierarchicalRadiosity::mergeSuns()
   {
     Spectrum flux{};
     Vec3 direction{ 0.0 };
-    double duration = 0.0;
   };
   std::map<std::pair<int, int>, Merged> bins; // ordered: the same suns in the same order every run
   for (const HElement* element : this->PointSuns)
@@ -184,12 +183,11 @@ void HierarchicalRadiosity::mergeSuns()
     for (int band = 0; band < maxBands; ++band)
       bin.flux[band] += flux[band];
     bin.direction += largestBand(flux) * d;
-    bin.duration += sun.duration();
   }
   this->Suns.clear();
   for (const auto& entry : bins)
-    this->Suns.push_back(this->Store->make<SunElement>(
-      0, glm::normalize(entry.second.direction), entry.second.flux, entry.second.duration));
+    this->Suns.push_back(
+      this->Store->make<SunElement>(0, glm::normalize(entry.second.direction), entry.second.flux));
 }
 
 bool HierarchicalRadiosity::solve(RadiosityProgress* progress)

@@ -14,8 +14,6 @@
 
 #include "terrain_grid.h"
 
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkFieldData.h"
@@ -42,23 +40,6 @@ using terralux::Vec3;
 
 namespace
 {
-// The leaf data sets of a scene's geometry, in the filter's order.
-std::vector<vtkDataSet*> leavesOf(vtkDataObject* data)
-{
-  std::vector<vtkDataSet*> result;
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-      if (auto* d = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
-        result.push_back(d);
-  }
-  else if (auto* d = vtkDataSet::SafeDownCast(data))
-    result.push_back(d);
-  return result;
-}
-
 struct ReferencePoint
 {
   double used = 0, sunFacing = 0, sun = 0, sky = 0, skyError = 0, reflected = 0, reflectedError = 0, global = 0,
@@ -96,7 +77,7 @@ struct ScenePoints
 
 void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
 {
-  for (vtkDataSet* data : leavesOf(input.geometry))
+  for (vtkDataSet* data : vtkRadiosityScene::DataSetsOf(input.geometry))
     out.scene.AddDataSet(data, input.reflectance, nullptr, input.emissionArray, true);
   for (const auto& light : input.lights)
     out.scene.AddLight(light);
@@ -331,7 +312,7 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   const double wall = seconds(start);
 
   std::vector<double> value[4], ref[4], refError[4];
-  for (vtkDataSet* data : leavesOf(radiosity->GetOutput()))
+  for (vtkDataSet* data : vtkRadiosityScene::DataSetsOf(radiosity->GetOutput()))
   {
     const char* names[4] = { "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance", "Irradiance" };
     for (int c = 0; c < 4; ++c)
