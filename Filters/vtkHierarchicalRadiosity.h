@@ -250,6 +250,16 @@ public:
    */
   void AddLightConnection(vtkAlgorithmOutput* output) { this->AddInputConnection(1, output); }
 
+  ///@{
+  /**
+   * Remove every connection of the geometry port (0) or the light port (1), the other
+   * port kept (RemoveAllInputs() clears both); ParaView's repeatable inputs reset
+   * each port with these.
+   */
+  void RemoveAllGeometryConnections() { this->RemoveAllInputConnections(0); }
+  void RemoveAllLightConnections() { this->RemoveAllInputConnections(1); }
+  ///@}
+
   /**
    * Output 0: the input geometry with the point arrays (its type, or a multiblock).
    */
