@@ -6,7 +6,9 @@
 # as they are. Only the shared libraries those tools need that are missing here are
 # installed, after checking that installing them removes nothing.
 #
-# Usage: cmake/build-paraview-plugin.sh [--test]
+# Usage: cmake/build-paraview-plugin.sh [--test] [--gui]
+#   --test  run the plugin's tests (pvpython, pvbatch) after the build
+#   --gui   also install the Qt libraries the ParaView GUI (prefix/usr/bin/paraview) needs
 #   TERRALUX_PARAVIEW_BUILD_DIR  plugin build folder (default: <repo>/build-paraview)
 #   TERRALUX_BUILD_DIR           the plain-VTK build the tests compare with
 #                                (default: <repo>/build)
@@ -17,7 +19,14 @@ build_dir="${TERRALUX_PARAVIEW_BUILD_DIR:-${repo_dir}/build-paraview}"
 vtk_build_dir="${TERRALUX_BUILD_DIR:-${repo_dir}/build}"
 prefix="${build_dir}/prefix"
 run_tests=0
-[ "${1:-}" = "--test" ] && run_tests=1
+with_gui=0
+for argument in "$@"; do
+  case "${argument}" in
+    --test) run_tests=1 ;;
+    --gui) with_gui=1 ;;
+    *) echo "usage: $0 [--test] [--gui]" >&2; exit 2 ;;
+  esac
+done
 
 sudo_cmd=()
 if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
@@ -47,14 +56,16 @@ if [ ! -f "${stamp}" ]; then
 fi
 
 # 2. The libraries pvpython and pvbatch need: paraview's own library dependencies,
-# without the Qt GUI and the Python web stack the headless tools do not load.
+# without the Python web stack and (unless --gui) the Qt GUI, which the headless
+# tools do not load.
 needed=()
 deps="$(apt-cache show "paraview=${version}" | sed -n 's/^Depends: //p' | head -n 1)"
 IFS=',' read -ra alternatives <<< "${deps}"
 for alt in "${alternatives[@]}"; do
   pkg="$(echo "${alt}" | sed 's/|.*//; s/(.*)//; s/ //g')"
   case "${pkg}" in
-    libqt5*|qt*|python3-autobahn|python3-twisted|python3-six|tclsh) continue ;;
+    libqt5*) [ "${with_gui}" = 1 ] || continue ;;
+    python3-autobahn|python3-twisted|python3-six|tclsh) continue ;;
   esac
   if ! dpkg-query -W -f='${Status}' "${pkg}" 2>/dev/null | grep -q "install ok installed"; then
     needed+=("${pkg}")
