@@ -125,6 +125,25 @@ class OlindaRadiosity(unittest.TestCase):
         mean_difference = sum(abs(svf_fast.GetValue(k) - svf_exact.GetValue(k)) for k in range(n)) / n
         self.assertLess(mean_difference, 0.02)
 
+    def test_ports_cleared_one_at_a_time(self):
+        # ParaView's repeatable inputs reset one port and connect it again.
+        r = vtkHierarchicalRadiosity()
+        r.AddInputConnection(self.terrain.GetOutputPort())
+        r.AddInputConnection(self.terrain.GetOutputPort())
+        r.AddLightConnection(self.sun.GetOutputPort())
+        r.AddLightConnection(self.sky.GetOutputPort(0))
+        r.RemoveAllGeometryConnections()
+        self.assertEqual((r.GetNumberOfInputConnections(0), r.GetNumberOfInputConnections(1)), (0, 2))
+        r.AddInputConnection(self.terrain.GetOutputPort())
+        r.RemoveAllLightConnections()
+        self.assertEqual((r.GetNumberOfInputConnections(0), r.GetNumberOfInputConnections(1)), (1, 0))
+        r.AddLightConnection(self.sun.GetOutputPort())
+        r.SetErrorTolerance(1e-2)
+        r.Update()
+        data = r.GetOutput().GetPointData()
+        self.assertIsNotNone(data.GetArray("SunIrradiance"))
+        self.assertIsNone(data.GetArray("SkyViewFactor"))  # the sky is gone
+
     def test_no_light_is_an_error(self):
         dark = vtkHierarchicalRadiosity()
         dark.SetInputConnection(self.terrain.GetOutputPort())
