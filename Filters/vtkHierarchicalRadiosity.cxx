@@ -138,13 +138,26 @@ vtkTypeBool vtkHierarchicalRadiosity::ProcessRequest(
   {
     return this->RequestData(request, inputVector, outputVector);
   }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    // A terrain's piece (an MPI rank's, a stream's) is a sub-extent of output 0.
+    vtkInformation* info = outputVector->GetInformationObject(0);
+    if (inputVector[0]->GetNumberOfInformationObjects() == 1 &&
+      info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      info->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+  }
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
   {
-    // The whole scene and whole sky are needed whatever extent is asked of output 0.
+    // The whole scene and whole sky are needed whatever piece is asked of output 0:
+    // every piece solves the same scene (the same hierarchy, deterministically) and
+    // evaluates its own posts.
     for (int port = 0; port < this->GetNumberOfInputPorts(); ++port)
       for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
       {
         vtkInformation* info = inputVector[port]->GetInformationObject(k);
+        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
         if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
           info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
             info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
@@ -202,9 +215,28 @@ int vtkHierarchicalRadiosity::RequestData(
     links->Initialize();
   };
   clearOutputs();
+  // Pieces: a terrain's piece is the sub-extent asked of output 0; other geometry is
+  // not split, piece 0 carries it and the leaf mesh and links, the others are empty.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  const int piece = pieces > 1 ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) : 0;
+  int extent[6];
+  const bool terrainPiece = pieces > 1 && vtkStructuredGrid::SafeDownCast(output) &&
+    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
+  if (terrainPiece)
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  }
+  else if (piece > 0)
+  {
+    return 1;
+  }
   try
   {
-    const int status = this->Solve(inputVector, output, leafMesh, links);
+    PieceRequest request{ terrainPiece ? extent : nullptr, piece == 0 };
+    const int status = this->Solve(inputVector, request, output, leafMesh, links);
     if (status == 0)
       clearOutputs();
     return status;
@@ -227,8 +259,8 @@ int vtkHierarchicalRadiosity::RequestData(
 }
 
 //------------------------------------------------------------------------------
-int vtkHierarchicalRadiosity::Solve(
-  vtkInformationVector** inputVector, vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links)
+int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const PieceRequest& piece,
+  vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links)
 {
   terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
     { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
@@ -342,7 +374,17 @@ int vtkHierarchicalRadiosity::Solve(
   {
     auto* dataSet = vtkDataSet::SafeDownCast(output);
     dataSet->ShallowCopy(scene.Inputs[0].data);
-    vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
+    if (piece.extent)
+    {
+      const int* e = piece.extent;
+      std::copy(e, e + 4, pointOptions.posts);
+      vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
+      vtkRadiosityOutputs::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), e);
+    }
+    else
+    {
+      vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
+    }
   }
   const double secondsPoints =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
@@ -363,8 +405,11 @@ int vtkHierarchicalRadiosity::Solve(
   addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
   addValue("RaysPoints", static_cast<double>(solver->raysCast() - stats.rays));
 
-  vtkRadiosityOutputs::BuildLeafMesh(*solver, this->NumberOfBands, scene.Sky != nullptr, leafMesh);
-  vtkRadiosityOutputs::BuildLinks(*solver, links);
+  if (piece.withMeshAndLinks)
+  {
+    vtkRadiosityOutputs::BuildLeafMesh(*solver, this->NumberOfBands, scene.Sky != nullptr, leafMesh);
+    vtkRadiosityOutputs::BuildLinks(*solver, links);
+  }
   this->FinishOutputs(output, leafMesh);
   this->UpdateProgress(1.0);
   return 1;

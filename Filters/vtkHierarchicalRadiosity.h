@@ -283,8 +283,16 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  // What of the outputs a piece holds: a terrain's sub-extent (grid indices; nullptr:
+  // the whole input), and whether the leaf mesh and the links (piece 0's).
+  struct PieceRequest
+  {
+    const int* extent;
+    bool withMeshAndLinks;
+  };
   // RequestData's work; throws terralux::Error on bad input.
-  int Solve(vtkInformationVector** inputVector, vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links);
+  int Solve(vtkInformationVector** inputVector, const PieceRequest& piece, vtkDataObject* output,
+    vtkPolyData* leafMesh, vtkPolyData* links);
   // The solve's light sources: those on input port 1 (a subclass may make its own, as
   // vtkSolarIrradiation makes a time range's suns and cumulative sky). Throws
   // terralux::Error on bad input; returns false where there is no light at all.

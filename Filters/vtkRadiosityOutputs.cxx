@@ -19,6 +19,7 @@
 #include "cluster.h"
 #include "polygon_element.h"
 #include "sky_patch_element.h"
+#include "geo_transform.h"
 #include "solver.h"
 #include "terrain_mesh.h"
 #include "terrain_patch.h"
@@ -182,14 +183,20 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
   {
     const terralux::TerrainGrid& grid = root->grid();
     const int nx = grid.postsX(), ny = grid.postsY();
+    // The posts asked for: all, or a piece's.
+    const int i0 = options.allPosts() ? 0 : std::max(0, options.posts[0]);
+    const int i1 = options.allPosts() ? nx - 1 : std::min(nx - 1, options.posts[1]);
+    const int j0 = options.allPosts() ? 0 : std::max(0, options.posts[2]);
+    const int j1 = options.allPosts() ? ny - 1 : std::min(ny - 1, options.posts[3]);
+    auto asked = [&](int i, int j) { return i >= i0 && i <= i1 && j >= j0 && j <= j1; };
     auto normalAt = [&](int i, int j) { return options.hornNormals ? grid.hornNormal(i, j) : grid.postNormal(i, j); };
     if (evaluateAtPoints)
     {
       // Every post evaluated at itself from its most lit leaf, with the normal of the
       // cells around it, in parallel.
-      vtkSMPTools::For(0, ny, [&](vtkIdType first, vtkIdType last) {
+      vtkSMPTools::For(j0, j1 + 1, [&](vtkIdType first, vtkIdType last) {
         for (int j = static_cast<int>(first); j < last; ++j)
-          for (int i = 0; i < nx; ++i)
+          for (int i = i0; i <= i1; ++i)
           {
             if (!grid.postUsed(i, j))
               continue;
@@ -225,7 +232,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
             for (int i = static_cast<int>(std::ceil(r.u0)); i <= static_cast<int>(std::floor(r.u1)); ++i)
             {
               const bool border = i == r.u0 || i == r.u1 || j == r.v0 || j == r.v1;
-              if (!grid.postUsed(i, j) || (border && root->leafHolding(i, j) != &leaf))
+              if (!asked(i, j) || !grid.postUsed(i, j) || (border && root->leafHolding(i, j) != &leaf))
                 continue;
               mesh.interpolate(static_cast<std::size_t>(k), vertexValues, valueComponents, i, j, flat);
               Values v{};
@@ -637,6 +644,34 @@ void vtkRadiosityOutputs::BuildLinks(const terralux::HierarchicalRadiosity& solv
 const char* vtkRadiosityOutputs::QuantityName(int quantity)
 {
   return quantityNames[quantity];
+}
+
+void vtkRadiosityOutputs::CropToPiece(vtkStructuredGrid* terrain, const int extent[6])
+{
+  int whole[6];
+  terrain->GetExtent(whole);
+  if (std::equal(extent, extent + 6, whole))
+    return;
+  terrain->Crop(extent);
+  vtkFieldData* fieldData = terrain->GetFieldData();
+  vtkDataArray* transform = fieldData->GetArray("GeoTransform");
+  if (!transform || transform->GetNumberOfValues() != 6)
+    return;
+  terralux::GeoTransform wholeTransform;
+  for (int k = 0; k < 6; ++k)
+    wholeTransform.coefficients[k] = transform->GetComponent(k, 0);
+  const terralux::GeoTransform piece = wholeTransform.pieceOf(
+    extent[0] - whole[0], extent[2] - whole[2], extent[3] - whole[2], whole[3] - whole[2] + 1);
+  vtkNew<vtkDoubleArray> pieceTransform;
+  pieceTransform->SetName("GeoTransform");
+  for (double c : piece.coefficients)
+    pieceTransform->InsertNextValue(c);
+  fieldData->AddArray(pieceTransform);
+  vtkNew<vtkIntArray> rasterSize;
+  rasterSize->SetName("RasterSize");
+  rasterSize->InsertNextValue(extent[1] - extent[0] + 1);
+  rasterSize->InsertNextValue(extent[3] - extent[2] + 1);
+  fieldData->AddArray(rasterSize);
 }
 
 void vtkRadiosityOutputs::AddFieldValue(vtkFieldData* fieldData, const char* name, double value)

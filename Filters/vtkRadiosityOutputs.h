@@ -8,6 +8,7 @@ class vtkDataSet;
 class vtkFieldData;
 class vtkPolyData;
 class vtkRadiosityScene;
+class vtkStructuredGrid;
 
 namespace terralux
 {
@@ -28,6 +29,10 @@ struct vtkRadiosityOutputs
     bool evaluateAtPoints = true;
     bool hornNormals = false; ///< terrain posts take Horn's 3 x 3 normal, else the area-weighted one
     bool sunshine = false;    ///< add SunshineDuration: the hours of the suns that reach each point
+    /// The terrain posts evaluated, grid indices i0, i1, j0, j1 (a piece); the others
+    /// stay NaN. Default: all.
+    int posts[4] = { 0, -1, 0, -1 };
+    bool allPosts() const { return this->posts[1] < this->posts[0]; }
   };
   /// Adds Irradiance, SunIrradiance, SkyIrradiance, ReflectedIrradiance and Radiosity
   /// (SkyViewFactor for a terrain lit by a sky, SunshineDuration if asked) to `output`, a shallow copy of
@@ -41,6 +46,9 @@ struct vtkRadiosityOutputs
   static void BuildLeafMesh(
     const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output);
   static void BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output);
+  /// Crops a terrain to the piece `extent` (grid indices) and makes its georeference
+  /// field data (GeoTransform, RasterSize) describe the piece.
+  static void CropToPiece(vtkStructuredGrid* terrain, const int extent[6]);
   /// Adds a one-value double array to field data (counts, seconds).
   static void AddFieldValue(vtkFieldData* fieldData, const char* name, double value);
 };

@@ -131,9 +131,10 @@ void vtkSolarIrradiation::SetLinkeTurbidity(double value)
 vtkTypeBool vtkSolarIrradiation::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()) &&
+    !this->RequestInformation(request, inputVector, outputVector))
   {
-    return this->RequestInformation(request, inputVector, outputVector);
+    return 0;
   }
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {

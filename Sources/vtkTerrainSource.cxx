@@ -2,11 +2,13 @@
 
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
+#include "vtkExtentTranslator.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -28,6 +30,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 #include <limits>
 #include <memory>
 
@@ -248,19 +252,41 @@ int vtkTerrainSource::RequestInformation(
     catch (const terralux::Error&)
     {
     }
+    // Pieces (MPI ranks, streaming) read their own window of the raster.
+    outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
   }
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
   return 1;
 }
 
 //------------------------------------------------------------------------------
-bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
+bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output)
 {
   RasterRequest request;
   this->ResolveRasterRequest(request);
   const terralux::RasterInfo& info = request.raster->info();
-  const int nx = request.nx;
-  const int ny = request.ny;
+  // The whole grid fixes the frame and the row order; the piece is what is read.
+  const int wholeNx = request.nx;
+  const int wholeNy = request.ny;
+  const terralux::GeoTransform wholeTransform =
+    info.geoTransform.window(request.window.col0, request.window.row0, this->Stride);
+  const bool rowsReversed = wholeTransform.gridRow(0, wholeNy) != 0;
+  if (extent[1] < extent[0] || extent[3] < extent[2])
+  {
+    return true; // an empty piece (more pieces than rows): nothing to read
+  }
+  if (extent[0] < 0 || extent[1] >= wholeNx || extent[2] < 0 || extent[3] >= wholeNy || extent[0] > extent[1] ||
+    extent[2] > extent[3])
+  {
+    throw terralux::Error("the requested extent lies outside the DEM's " + std::to_string(wholeNx) + " x " +
+      std::to_string(wholeNy) + " posts");
+  }
+  const int nx = extent[1] - extent[0] + 1;
+  const int ny = extent[3] - extent[2] + 1;
+  const int firstRow = wholeTransform.firstRasterRow(extent[2], extent[3], wholeNy);
+  const terralux::PixelWindow whole = request.window;
+  const terralux::PixelWindow piece{ whole.col0 + extent[0] * this->Stride, whole.row0 + firstRow * this->Stride,
+    (nx - 1) * this->Stride + 1, (ny - 1) * this->Stride + 1 };
   const vtkIdType count = static_cast<vtkIdType>(nx) * ny;
   if (request.clipped)
   {
@@ -282,7 +308,7 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
     return work(vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
   };
   std::size_t valid = withHeights(
-    [&](auto* heights) { return request.raster->read(request.window, this->Stride, heights); });
+    [&](auto* heights) { return request.raster->read(piece, this->Stride, heights); });
   const vtkIdType implausible = withHeights([&](auto* heights) { return dropImplausibleHeights(heights, count); });
   valid -= static_cast<std::size_t>(implausible);
   if (implausible > 0)
@@ -308,17 +334,32 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   terralux::GridGeoreference grid;
   grid.nx = nx;
   grid.ny = ny;
-  grid.geoTransform =
-    info.geoTransform.window(request.window.col0, request.window.row0, this->Stride);
+  grid.geoTransform = wholeTransform;
+  grid.col0 = extent[0];
+  grid.row0 = firstRow;
 
   auto ghosts = vtkSmartPointer<vtkUnsignedCharArray>::New();
   ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
   ghosts->SetNumberOfTuples(count);
   double lowest = 0.0;
-  terralux::GridCentre centre;
-  withHeights([&](const auto* heights) {
-    lowest = blankNoDataPosts(heights, count, ghosts);
-    centre = terralux::findGridCentre(nx, ny, heights);
+  withHeights([&](const auto* heights) { lowest = blankNoDataPosts(heights, count, ghosts); });
+  // The frame origin is the whole grid's centre, whichever piece this is: the posts
+  // around it are read on their own (the whole grid only if they are no data).
+  std::vector<double> wholeHeights;
+  const int pieceFirstCol = extent[0];
+  const terralux::GridCentre wholeCentre = terralux::findGridCentre(wholeNx, wholeNy, [&](int i, int row) {
+    if (i >= pieceFirstCol && i < pieceFirstCol + nx && row >= firstRow && row < firstRow + ny)
+    {
+      const vtkIdType k = (i - pieceFirstCol) + static_cast<vtkIdType>(row - firstRow) * nx;
+      return withHeights([&](const auto* heights) { return static_cast<double>(heights[k]); });
+    }
+    if (wholeHeights.empty())
+    {
+      wholeHeights.resize(static_cast<std::size_t>(wholeNx) * wholeNy);
+      request.raster->read(whole, this->Stride, wholeHeights.data());
+      dropImplausibleHeights(wholeHeights.data(), static_cast<vtkIdType>(wholeHeights.size()));
+    }
+    return wholeHeights[static_cast<std::size_t>(row) * wholeNx + i];
   });
 
   vtkFieldData* fieldData = output->GetFieldData();
@@ -329,8 +370,8 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
                         << "' has no coordinate reference system: its map coordinates are taken "
                            "as local metres. Assign a CRS (gdal_edit.py -a_srs) to georeference it.");
     double mapOrigin[3];
-    grid.geoTransform.pixelToMap(centre.col, centre.row, mapOrigin[0], mapOrigin[1]);
-    mapOrigin[2] = centre.heightM;
+    wholeTransform.pixelToMap(wholeCentre.col, wholeCentre.row, mapOrigin[0], mapOrigin[1]);
+    mapOrigin[2] = wholeCentre.heightM;
     placement = std::make_unique<terralux::TerrainPlacement>(
       grid, terralux::LocalPoint{ mapOrigin[0], mapOrigin[1], mapOrigin[2] });
     vtkTerraLuxFieldData::AddVector(fieldData, "LocalOrigin", mapOrigin, 3);
@@ -342,7 +383,7 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
     if (!this->UseGeoOrigin)
     {
       origin = terralux::geodeticOfPixel(
-        grid.geoTransform, projection, centre.col, centre.row, centre.heightM);
+        wholeTransform, projection, wholeCentre.col, wholeCentre.row, wholeCentre.heightM);
     }
     const terralux::LocalFrame frame(origin);
     placement = std::make_unique<terralux::TerrainPlacement>(grid, projection, frame);
@@ -351,7 +392,6 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   }
 
   // Raster order -> grid order (GeoTransform::gridRow): reversed for north-up rasters.
-  const bool rowsReversed = grid.geoTransform.gridRow(0, ny) != 0;
   vtkNew<vtkPoints> points;
   points->SetDataType(this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
   points->SetNumberOfPoints(count);
@@ -370,13 +410,23 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   });
   if (rowsReversed)
     flipRows(ghosts->GetPointer(0), nx, ny);
+  // A piece's ghost posts (shared with its neighbours) are duplicates.
+  bool anyGhost = valid < static_cast<std::size_t>(count);
+  for (int j = extent[2]; j <= extent[3]; ++j)
+    for (int i = extent[0]; i <= extent[1]; ++i)
+      if (i < pieceExtent[0] || i > pieceExtent[1] || j < pieceExtent[2] || j > pieceExtent[3])
+      {
+        unsigned char& ghost = ghosts->GetPointer(0)[(i - extent[0]) + static_cast<vtkIdType>(j - extent[2]) * nx];
+        ghost |= vtkDataSetAttributes::DUPLICATEPOINT;
+        anyGhost = true;
+      }
   this->UpdateProgress(0.9);
 
-  output->SetDimensions(nx, ny, 1);
+  output->SetExtent(const_cast<int*>(extent));
   output->SetPoints(points);
   output->GetPointData()->AddArray(elevation);
   output->GetPointData()->SetScalars(elevation);
-  if (valid < static_cast<std::size_t>(count))
+  if (anyGhost)
   {
     output->GetPointData()->AddArray(ghosts);
   }
@@ -385,7 +435,9 @@ bool vtkTerrainSource::ReadRaster(vtkStructuredGrid* output)
   crs->SetName("CRS");
   crs->InsertNextValue(info.crsWkt);
   fieldData->AddArray(crs);
-  vtkTerraLuxFieldData::AddVector(fieldData, "GeoTransform", grid.geoTransform.coefficients.data(), 6);
+  // The georeference of this piece (of the whole grid when unsplit).
+  const terralux::GeoTransform pieceTransform = wholeTransform.pieceOf(extent[0], extent[2], extent[3], wholeNy);
+  vtkTerraLuxFieldData::AddVector(fieldData, "GeoTransform", pieceTransform.coefficients.data(), 6);
   auto rasterSize = vtkSmartPointer<vtkIntArray>::New();
   rasterSize->SetName("RasterSize");
   rasterSize->InsertNextValue(nx);
@@ -535,7 +587,38 @@ int vtkTerrainSource::RequestData(
   bool ok = false;
   try
   {
-    ok = input ? this->ConvertHeightField(input, output) : this->ReadRaster(output);
+    if (input)
+    {
+      ok = this->ConvertHeightField(input, output);
+    }
+    else
+    {
+      // The piece asked for (UPDATE_EXTENT, ghost posts included) and the same piece
+      // without ghost levels, which its posts beyond are marked against.
+      vtkInformation* outInfo = outputVector->GetInformationObject(0);
+      int whole[6], extent[6], pieceExtent[6];
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+      std::copy(whole, whole + 6, extent);
+      std::copy(whole, whole + 6, pieceExtent);
+      if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+      {
+        outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+      }
+      const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+        ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+        : 1;
+      if (pieces > 1 && !std::equal(extent, extent + 6, whole))
+      {
+        vtkNew<vtkExtentTranslator> translator;
+        translator->PieceToExtentThreadSafe(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
+          pieces, 0, whole, pieceExtent, vtkExtentTranslator::BLOCK_MODE, 0);
+      }
+      else
+      {
+        std::copy(extent, extent + 6, pieceExtent);
+      }
+      ok = this->ReadRaster(extent, pieceExtent, output);
+    }
   }
   catch (const terralux::Error& error)
   {

@@ -183,7 +183,9 @@ private:
 
   struct RasterRequest;
   void ResolveRasterRequest(RasterRequest& request); // throws terralux::Error
-  bool ReadRaster(vtkStructuredGrid* output);
+  // Reads the posts of `extent` (grid indices within the whole extent; a piece, ghost
+  // posts included) with the ghost posts outside `pieceExtent` marked duplicate.
+  bool ReadRaster(const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output);
   bool ConvertHeightField(vtkImageData* input, vtkStructuredGrid* output);
 };
 

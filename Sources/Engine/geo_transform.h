@@ -33,5 +33,13 @@ struct GeoTransform
   /// transform's pixel (col0 + i*stride, row0 + j*stride) is centred, with pixels
   /// stride times larger, so a raster written with it lands on the same posts.
   GeoTransform window(int col0, int row0, int stride) const;
+
+  /// First raster row of the grid rows [j0, j1] of a grid of `rows` rows (gridRow's
+  /// inverse for a block of rows).
+  int firstRasterRow(int j0, int j1, int rows) const { return gridRow(0, rows) != 0 ? rows - 1 - j1 : j0; }
+  /// Geotransform of the piece [i0, ...] x [j0, j1] (grid indices) of a grid of `rows`
+  /// rows that this transform georeferences. The piece's transform gives the whole
+  /// grid's back as window(-i0, -firstRasterRow(j0, j1, rows), 1).
+  GeoTransform pieceOf(int i0, int j0, int j1, int rows) const { return window(i0, firstRasterRow(j0, j1, rows), 1); }
 };
 } // namespace terralux

@@ -13,8 +13,7 @@
 
 namespace terralux
 {
-template <typename HeightT>
-GridCentre findGridCentre(int nx, int ny, const HeightT* heights)
+GridCentre findGridCentre(int nx, int ny, const std::function<double(int, int)>& at)
 {
   GridCentre centre;
   const double ci = 0.5 * (nx - 1);
@@ -28,7 +27,6 @@ GridCentre findGridCentre(int nx, int ny, const HeightT* heights)
   const int j1 = std::min(j0 + 1, ny - 1);
   const double fi = ci - i0;
   const double fj = cj - j0;
-  auto at = [&](int i, int j) { return static_cast<double>(heights[static_cast<std::size_t>(j) * nx + i]); };
   const double h00 = at(i0, j0), h10 = at(i1, j0), h01 = at(i0, j1), h11 = at(i1, j1);
   if (std::isfinite(h00) && std::isfinite(h10) && std::isfinite(h01) && std::isfinite(h11))
   {
@@ -56,8 +54,6 @@ GridCentre findGridCentre(int nx, int ny, const HeightT* heights)
   return centre;
 }
 
-template GridCentre findGridCentre<float>(int, int, const float*);
-template GridCentre findGridCentre<double>(int, int, const double*);
 
 TerrainPlacement::TerrainPlacement(
   const GridGeoreference& grid, const MapProjection& projection, const LocalFrame& frame)
@@ -102,7 +98,7 @@ void TerrainPlacement::place(const HeightT* heights, double holeHeightM, PointT*
     {
       for (int i = 0; i < nx; ++i)
       {
-        this->Grid.geoTransform.pixelToMap(i + 0.5, row + 0.5, x[i], y[i]);
+        this->Grid.geoTransform.pixelToMap(this->Grid.col0 + i + 0.5, this->Grid.row0 + row + 0.5, x[i], y[i]);
       }
       if (projection)
       {

@@ -15,6 +15,7 @@
 #include "map_projection.h"
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 
 namespace terralux
@@ -24,8 +25,13 @@ struct GridGeoreference
 {
   int nx = 0;
   int ny = 0;
-  /// Pixel (i, row) of this transform is centred on post (i, row), raster order.
+  /// Pixel (col0 + i, row0 + row) of this transform is centred on post (i, row),
+  /// raster order.
   GeoTransform geoTransform;
+  /// Where the posts start in geoTransform's pixels: a piece of a larger grid keeps
+  /// the whole grid's transform, so its posts are placed bit for bit as there.
+  int col0 = 0;
+  int row0 = 0;
 };
 
 /// Fractional raster position of the grid centre and the ground height there.
@@ -36,11 +42,19 @@ struct GridCentre
   double heightM = 0.0;
 };
 
-/// Centre of the grid and its ground height: bilinear between the surrounding
-/// posts when all are valid, else the nearest valid post. Heights are raster
-/// order with NaN for no data; throws Error when no post is valid.
+/// Centre of the grid and its ground height: bilinear between the four posts around
+/// it when all are valid, else the nearest valid post (only then are other posts
+/// asked for). heightAt(i, row) is raster order, NaN for no data; throws Error
+/// when no post is valid.
+GridCentre findGridCentre(int nx, int ny, const std::function<double(int, int)>& heightAt);
+/// The same over nx x ny heights in raster order.
 template <typename HeightT>
-GridCentre findGridCentre(int nx, int ny, const HeightT* heights);
+GridCentre findGridCentre(int nx, int ny, const HeightT* heights)
+{
+  return findGridCentre(nx, ny, [&](int i, int row) {
+    return static_cast<double>(heights[static_cast<std::size_t>(row) * nx + i]);
+  });
+}
 
 /// Geodetic position of a fractional raster position (pixel-corner convention).
 GeodeticPoint geodeticOfPixel(
