@@ -47,6 +47,13 @@
  * `Sender` (0 a surface or cluster, 1 a sky patch, 2 the sun) and `SenderLevel`, as in
  * the paper's Fig. 9.
  *
+ * Pieces (MPI ranks through VTK's parallel pipeline, streaming): every piece solves the
+ * whole scene (its inputs are asked for whole; the solve is deterministic, so every
+ * rank holds the same hierarchy) and evaluates output 0's point values only at its own
+ * posts: a terrain's piece is the sub-extent asked of output 0, bit for bit that part of
+ * the one-piece result, with GeoTransform and RasterSize of the piece. Other geometry is
+ * not split: piece 0 carries it; the leaf mesh and links are piece 0's.
+ *
  * Refused with an error naming the fix, outputs empty: NaN or infinite parameters;
  * cells whose point ids are out of range; structured grids whose dimensions do not
  * match their points; ghost arrays of the wrong size; NaN coordinates in used cells;

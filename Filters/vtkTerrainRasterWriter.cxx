@@ -4,11 +4,16 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTerrainPieces.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "error.h"
@@ -22,8 +27,10 @@ vtkStandardNewMacro(vtkTerrainRasterWriter);
 
 namespace
 {
-const char* const radiosityArrays[] = { "Irradiance", "SunIrradiance", "SkyIrradiance",
-  "ReflectedIrradiance", "Radiosity", "SkyViewFactor" };
+// What vtkHierarchicalRadiosity and vtkSolarIrradiation compute, in that order.
+const char* const radiosityArrays[] = { "Irradiance", "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance",
+  "Radiosity", "GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation",
+  "OutgoingIrradiation", "SunshineDuration", "SkyViewFactor" };
 
 // The array's own units (vtkDataArray::UNITS_LABEL, as vtkSolarIrradiation sets
 // them), else those of the known names.
@@ -100,104 +107,151 @@ int vtkTerrainRasterWriter::RequestData(
 }
 
 //------------------------------------------------------------------------------
+vtkTypeBool vtkTerrainRasterWriter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // Under MPI each rank asks for its own piece; WriteData assembles them on rank 0.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()) && controller &&
+    controller->GetNumberOfProcesses() > 1)
+  {
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), controller->GetLocalProcessId());
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), controller->GetNumberOfProcesses());
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    return 1;
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
 void vtkTerrainRasterWriter::WriteData()
 {
-  auto* grid = vtkStructuredGrid::SafeDownCast(this->GetInput());
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   try
   {
     if (!this->FileName || !*this->FileName)
     {
       throw terralux::Error("no file name: call SetFileName()");
     }
-    if (!grid)
+    if (controller && controller->GetNumberOfProcesses() > 1)
     {
-      throw terralux::Error("the input must be a vtkStructuredGrid from vtkTerrainSource");
-    }
-    vtkFieldData* fieldData = grid->GetFieldData();
-    vtkDataArray* geoTransform = fieldData->GetArray("GeoTransform");
-    vtkDataArray* rasterSize = fieldData->GetArray("RasterSize");
-    int dims[3];
-    grid->GetDimensions(dims);
-    if (!geoTransform || geoTransform->GetNumberOfValues() != 6 || !rasterSize ||
-      rasterSize->GetNumberOfValues() != 2)
-    {
-      throw terralux::Error("the input has no raster georeference (field data GeoTransform and "
-                            "RasterSize): write grids that come from vtkTerrainSource");
-    }
-    if (rasterSize->GetComponent(0, 0) != dims[0] || rasterSize->GetComponent(1, 0) != dims[1] || dims[2] != 1)
-    {
-      throw terralux::Error("the grid's dimensions no longer match its RasterSize field data");
-    }
-    terralux::RasterGrid raster;
-    raster.width = dims[0];
-    raster.height = dims[1];
-    for (int k = 0; k < 6; ++k)
-      raster.geoTransform.coefficients[k] = geoTransform->GetComponent(k, 0);
-    if (auto* crs = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray("CRS")))
-    {
-      raster.crsWkt = crs->GetNumberOfValues() > 0 ? crs->GetValue(0) : "";
-    }
-    vtkDataArray* noData = fieldData->GetArray("NoDataValue");
-    raster.noData = noData ? noData->GetComponent(0, 0) : this->NoDataValue;
-
-    std::vector<std::string> names = this->ArrayNames;
-    vtkPointData* pointData = grid->GetPointData();
-    if (names.empty())
-    {
-      for (const char* name : radiosityArrays)
-        if (pointData->GetArray(name))
-          names.emplace_back(name);
-      if (names.empty())
+      // Collective: every rank sends its piece, rank 0 writes the whole grid.
+      vtkSmartPointer<vtkImageData> whole =
+        vtkTerrainPieces::GatherToRoot(controller, vtkDataSet::SafeDownCast(this->GetInput()), 0);
+      if (controller->GetLocalProcessId() != 0)
       {
-        for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
-        {
-          const char* name = pointData->GetArrayName(k);
-          if (name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
-            names.emplace_back(name);
-        }
+        this->Succeeded = true;
+        return;
       }
+      if (!whole)
+      {
+        throw terralux::Error("no rank has a terrain piece with vtkTerrainSource's georeference to write");
+      }
+      this->WriteGrid(whole);
     }
-    vtkUnsignedCharArray* ghosts = grid->GetPointGhostArray();
-    std::vector<terralux::RasterBand> bands;
-    for (const std::string& name : names)
+    else
     {
-      vtkDataArray* array = pointData->GetArray(name.c_str());
-      if (!array)
+      auto* grid = vtkStructuredGrid::SafeDownCast(this->GetInput());
+      if (!grid)
       {
-        throw terralux::Error("the input has no point array '" + name + "' to write");
+        throw terralux::Error("the input must be a vtkStructuredGrid from vtkTerrainSource");
       }
-      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-      {
-        terralux::RasterBand band;
-        band.description = array->GetNumberOfComponents() == 1 ? name : name + "[" + std::to_string(c) + "]";
-        band.unit = unitOf(array, name);
-        band.values.resize(static_cast<std::size_t>(dims[0]) * dims[1]);
-        for (int row = 0; row < dims[1]; ++row)
-          for (int col = 0; col < dims[0]; ++col)
-          {
-            // Raster row -> grid j as vtkTerrainSource laid it (reversed for north-up).
-            const vtkIdType point = col + static_cast<vtkIdType>(raster.geoTransform.gridRow(row, dims[1])) * dims[0];
-            double value = array->GetComponent(point, c);
-            const bool hidden = ghosts && (ghosts->GetValue(point) & vtkDataSetAttributes::HIDDENPOINT);
-            // Float32 holds magnitudes up to about 3.4e38; beyond is no data, not inf.
-            if (hidden || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
-            {
-              value = raster.noData;
-              raster.hasNoData = true;
-            }
-            band.values[static_cast<std::size_t>(row) * dims[0] + col] = static_cast<float>(value);
-          }
-        bands.push_back(std::move(band));
-      }
+      this->WriteGrid(grid);
     }
-    raster.hasNoData = raster.hasNoData || noData != nullptr;
-    terralux::writeGeoTiff(this->FileName, raster, bands);
     this->Succeeded = true;
   }
   catch (const terralux::Error& error)
   {
     vtkErrorMacro(<< error.what());
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainRasterWriter::WriteGrid(vtkDataSet* grid)
+{
+  vtkFieldData* fieldData = grid->GetFieldData();
+  vtkDataArray* geoTransform = fieldData->GetArray("GeoTransform");
+  vtkDataArray* rasterSize = fieldData->GetArray("RasterSize");
+  int dims[3] = { 0, 0, 0 };
+  if (auto* structured = vtkStructuredGrid::SafeDownCast(grid))
+    structured->GetDimensions(dims);
+  else if (auto* image = vtkImageData::SafeDownCast(grid))
+    image->GetDimensions(dims);
+  if (!geoTransform || geoTransform->GetNumberOfValues() != 6 || !rasterSize ||
+    rasterSize->GetNumberOfValues() != 2)
+  {
+    throw terralux::Error("the input has no raster georeference (field data GeoTransform and "
+                          "RasterSize): write grids that come from vtkTerrainSource");
+  }
+  if (rasterSize->GetComponent(0, 0) != dims[0] || rasterSize->GetComponent(1, 0) != dims[1] || dims[2] != 1)
+  {
+    throw terralux::Error("the grid's dimensions no longer match its RasterSize field data");
+  }
+  terralux::RasterGrid raster;
+  raster.width = dims[0];
+  raster.height = dims[1];
+  for (int k = 0; k < 6; ++k)
+    raster.geoTransform.coefficients[k] = geoTransform->GetComponent(k, 0);
+  if (auto* crs = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray("CRS")))
+  {
+    raster.crsWkt = crs->GetNumberOfValues() > 0 ? crs->GetValue(0) : "";
+  }
+  vtkDataArray* noData = fieldData->GetArray("NoDataValue");
+  raster.noData = noData ? noData->GetComponent(0, 0) : this->NoDataValue;
+
+  std::vector<std::string> names = this->ArrayNames;
+  vtkPointData* pointData = grid->GetPointData();
+  if (names.empty())
+  {
+    for (const char* name : radiosityArrays)
+      if (pointData->GetArray(name))
+        names.emplace_back(name);
+    if (names.empty())
+    {
+      for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
+      {
+        const char* name = pointData->GetArrayName(k);
+        if (name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
+          names.emplace_back(name);
+      }
+    }
+  }
+  vtkUnsignedCharArray* ghosts = grid->GetPointGhostArray();
+  std::vector<terralux::RasterBand> bands;
+  for (const std::string& name : names)
+  {
+    vtkDataArray* array = pointData->GetArray(name.c_str());
+    if (!array)
+    {
+      throw terralux::Error("the input has no point array '" + name + "' to write");
+    }
+    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+    {
+      terralux::RasterBand band;
+      band.description = array->GetNumberOfComponents() == 1 ? name : name + "[" + std::to_string(c) + "]";
+      band.unit = unitOf(array, name);
+      band.values.resize(static_cast<std::size_t>(dims[0]) * dims[1]);
+      for (int row = 0; row < dims[1]; ++row)
+        for (int col = 0; col < dims[0]; ++col)
+        {
+          // Raster row -> grid j as vtkTerrainSource laid it (reversed for north-up).
+          const vtkIdType point = col + static_cast<vtkIdType>(raster.geoTransform.gridRow(row, dims[1])) * dims[0];
+          double value = array->GetComponent(point, c);
+          const bool hidden = ghosts && (ghosts->GetValue(point) & vtkDataSetAttributes::HIDDENPOINT);
+          // Float32 holds magnitudes up to about 3.4e38; beyond is no data, not inf.
+          if (hidden || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
+          {
+            value = raster.noData;
+            raster.hasNoData = true;
+          }
+          band.values[static_cast<std::size_t>(row) * dims[0] + col] = static_cast<float>(value);
+        }
+      bands.push_back(std::move(band));
+    }
+  }
+  raster.hasNoData = raster.hasNoData || noData != nullptr;
+  terralux::writeGeoTiff(this->FileName, raster, bands);
 }
 
 //------------------------------------------------------------------------------

@@ -11,6 +11,11 @@
  * set (W/m^2 for irradiance and radiosity, m for Elevation). Blanked (no-data) posts and
  * NaN values are written as the no-data value.
  *
+ * Under MPI (a vtkMultiProcessController with more than one process as the global
+ * controller), Write() is collective: each rank asks its input for its own piece (piece
+ * = rank), the pieces go to rank 0, which writes the one GeoTIFF of the whole grid. A
+ * piece written alone (one process) is a GeoTIFF of that piece.
+ *
  * @sa vtkTerrainSource vtkHierarchicalRadiosity
  */
 
@@ -19,6 +24,8 @@
 
 #include "TerraLuxFiltersModule.h" // For export macro
 #include "vtkWriter.h"
+
+class vtkDataSet;
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -42,7 +49,9 @@ public:
   /**
    * Choose the point arrays to write, in band order. With none chosen (the default),
    * the radiosity arrays present are written (Irradiance, SunIrradiance, SkyIrradiance,
-   * ReflectedIrradiance, Radiosity, SkyViewFactor), else every numeric point array.
+   * ReflectedIrradiance, Radiosity; vtkSolarIrradiation's GlobalIrradiation,
+   * BeamIrradiation, SkyIrradiation, ReflectedIrradiation, OutgoingIrradiation,
+   * SunshineDuration; SkyViewFactor), else every numeric point array.
    */
   void AddArrayName(const char* name);
   void RemoveAllArrayNames();
@@ -63,8 +72,12 @@ protected:
   ~vtkTerrainRasterWriter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void WriteData() override;
+  // Writes a whole terrain grid (a vtkStructuredGrid, or pieces assembled as a
+  // vtkImageData); throws terralux::Error.
+  void WriteGrid(vtkDataSet* grid);
 
   char* FileName;
   double NoDataValue;

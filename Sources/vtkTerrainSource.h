@@ -50,6 +50,13 @@
  * Subsetting is done by GDAL without reading the whole raster: a pixel window, a
  * geographic box, and a stride that keeps every k-th post.
  *
+ * Pieces (MPI ranks, streaming): the source produces sub-extents, so a piece request
+ * (UPDATE_PIECE_NUMBER, UPDATE_NUMBER_OF_PIECES, ghost levels) reads only that block of
+ * the raster. A piece's posts are bit for bit the whole grid's (the frame origin is the
+ * whole grid's centre); its ghost posts are marked DUPLICATEPOINT in vtkGhostType; its
+ * GeoTransform and RasterSize describe the piece; its no-data posts sit at the lowest
+ * valid height of the piece.
+ *
  * @warning DEM heights are taken as heights above the WGS84 ellipsoid; geoid
  * undulation (SRTM heights are above EGM96) shifts the whole scene by tens of metres
  * at most, and its variation across a DEM is small.

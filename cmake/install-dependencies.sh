@@ -24,6 +24,7 @@ packages=(
   clang libclang-rt-14-dev          # the sanitizer build and its libFuzzer targets
   python3-matplotlib                # plots: the examples and the accuracy report
   python3-tqdm                      # the irradiation command's progress bar
+  openmpi-bin python3-mpi4py        # MPI runs through VTK's parallel pipeline (mpirun)
 )
 
 sudo_cmd=()

@@ -1,0 +1,23 @@
+// Assembles a terrain split into pieces (one per MPI rank, VTK extents of one whole
+// grid) on one rank, for writers that write one file (private to TerraLux::Filters).
+#ifndef vtkTerrainPieces_h
+#define vtkTerrainPieces_h
+
+#include "vtkSmartPointer.h"
+
+class vtkDataSet;
+class vtkImageData;
+class vtkMultiProcessController;
+
+struct vtkTerrainPieces
+{
+  /// Collective over `controller`: every rank gives its piece (a vtkStructuredGrid with
+  /// vtkTerrainSource's georeference field data, or nullptr where it has none). On
+  /// `root` returns the whole grid, a vtkImageData over the union of the pieces'
+  /// extents with their point arrays (posts no piece has: NaN, and blanked), their
+  /// field data and the whole grid's GeoTransform and RasterSize; nullptr elsewhere,
+  /// and on root when no rank had a georeferenced piece.
+  static vtkSmartPointer<vtkImageData> GatherToRoot(vtkMultiProcessController* controller, vtkDataSet* piece, int root);
+};
+
+#endif

@@ -1,0 +1,95 @@
+"""Compares what mpi_pipeline.py wrote under different numbers of ranks with the run
+of the first folder (1 rank): every point array of the .pvts pieces put together, and
+every band and the georeference of the GeoTIFFs assembled on rank 0, within 1e-6
+relative.
+
+  /usr/bin/python3 compare_runs.py ONE_RANK_DIR OTHER_DIR...
+"""
+import os
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLPStructuredGridReader
+
+import terralux
+
+RELATIVE_TOLERANCE = 1e-6
+OUTPUTS = ("instant", "series")
+
+
+def pieces(path):
+    reader = vtkXMLPStructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    arrays = {}
+    pd = data.GetPointData()
+    for k in range(pd.GetNumberOfArrays()):
+        if pd.GetArrayName(k) != "vtkGhostType":
+            arrays[pd.GetArrayName(k)] = vtk_to_numpy(pd.GetArray(k)).astype(float)
+    return data.GetExtent(), arrays
+
+
+def bands(path):
+    """Each band of a GeoTIFF (vtkTerrainSource reads any band as Elevation)."""
+    result, band = [], 1
+    while True:
+        reader = terralux.vtkTerrainSource()
+        reader.SetFileName(path)
+        reader.SetBand(band)
+        reader.GlobalWarningDisplayOff()
+        reader.Update()
+        data = reader.GetOutput()
+        if data.GetNumberOfPoints() == 0:
+            return result
+        transform = data.GetFieldData().GetArray("GeoTransform")
+        result.append((tuple(transform.GetValue(k) for k in range(6)),
+                       vtk_to_numpy(data.GetPointData().GetArray("Elevation")).astype(float)))
+        band += 1
+
+
+def relative_difference(a, b):
+    finite = np.isfinite(b)
+    if not np.array_equal(np.isfinite(a), finite):
+        return float("inf")
+    scale = max(np.abs(b[finite]).max(), 1e-30) if finite.any() else 1.0
+    return float(np.abs(a[finite] - b[finite]).max() / scale) if finite.any() else 0.0
+
+
+def main(reference_dir, other_dirs):
+    failures = []
+    for name in OUTPUTS:
+        extent, expected = pieces(os.path.join(reference_dir, name + ".pvts"))
+        expected_bands = bands(os.path.join(reference_dir, name + ".tif"))
+        if not expected or not expected_bands:
+            failures.append("%s: the one-rank run wrote nothing" % name)
+            continue
+        for other in other_dirs:
+            got_extent, got = pieces(os.path.join(other, name + ".pvts"))
+            if got_extent != extent or sorted(got) != sorted(expected):
+                failures.append("%s in %s: extent %s, arrays %s (one rank: %s, %s)"
+                                % (name, other, got_extent, sorted(got), extent, sorted(expected)))
+                continue
+            worst = max(relative_difference(got[a], expected[a]) for a in expected)
+            got_bands = bands(os.path.join(other, name + ".tif"))
+            if len(got_bands) != len(expected_bands):
+                failures.append("%s.tif in %s: %d bands, not %d" % (name, other, len(got_bands), len(expected_bands)))
+                continue
+            for (transform, values), (want_transform, want_values) in zip(got_bands, expected_bands):
+                if not np.allclose(transform, want_transform, rtol=1e-12, atol=1e-9):
+                    failures.append("%s.tif in %s: GeoTransform %s, not %s" % (name, other, transform, want_transform))
+                worst = max(worst, relative_difference(values, want_values))
+            print("%s, %s: %d arrays, %d bands, largest relative difference %.1e"
+                  % (name, other, len(expected), len(expected_bands), worst))
+            if worst > RELATIVE_TOLERANCE:
+                failures.append("%s in %s differs by %.2e relative" % (name, other, worst))
+    if failures:
+        sys.exit("FAIL: " + "; ".join(failures))
+    print("OK")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    main(sys.argv[1], sys.argv[2:])
