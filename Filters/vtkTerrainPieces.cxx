@@ -11,11 +11,13 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "geo_transform.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -32,24 +34,41 @@ bool transformOf(vtkDataSet* data, terralux::GeoTransform& transform)
   return true;
 }
 
-// What a piece sends: its extent, point arrays and numeric field data, no points
-// (the legacy format the controller sends data sets in does not keep strings with
-// spaces, as the CRS's WKT; the root takes those from its own piece).
-vtkSmartPointer<vtkImageData> packetOf(vtkDataSet* piece)
+// What a piece sends: a table of its point arrays (one row per post) with its numeric
+// field data and its extent (`PieceExtent`), no points. A table, because the legacy
+// format the controller sends data sets in keeps neither an image's extent in
+// ParaView (its images are uniform grids, which it cannot write) nor strings with
+// spaces (the CRS's WKT: the root takes that from its own piece).
+vtkSmartPointer<vtkTable> packetOf(vtkDataSet* piece)
 {
-  auto packet = vtkSmartPointer<vtkImageData>::New();
+  auto packet = vtkSmartPointer<vtkTable>::New();
   auto* grid = vtkStructuredGrid::SafeDownCast(piece);
   terralux::GeoTransform unused;
   if (!grid || grid->GetNumberOfPoints() == 0 || !transformOf(grid, unused))
     return packet; // empty
-  packet->SetExtent(grid->GetExtent());
-  packet->GetPointData()->ShallowCopy(grid->GetPointData());
+  vtkPointData* pointData = grid->GetPointData();
+  for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
+    if (vtkDataArray* array = pointData->GetArray(k); array && array->GetName())
+      packet->AddColumn(array);
   vtkFieldData* fieldData = grid->GetFieldData();
   for (int k = 0; k < fieldData->GetNumberOfArrays(); ++k)
     if (vtkDataArray* array = fieldData->GetArray(k))
       packet->GetFieldData()->AddArray(array);
+  vtkNew<vtkIntArray> extent;
+  extent->SetName("PieceExtent");
+  for (int k = 0; k < 6; ++k)
+    extent->InsertNextValue(grid->GetExtent()[k]);
+  packet->GetFieldData()->AddArray(extent);
   return packet;
 }
+
+// A received piece: its extent and its arrays.
+struct Piece
+{
+  int extent[6];
+  vtkTable* table;
+  vtkDataArray* column(const char* name) const { return vtkDataArray::SafeDownCast(this->table->GetColumnByName(name)); }
+};
 } // namespace
 
 vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
@@ -60,16 +79,24 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
   if (controller->GetLocalProcessId() != root)
     return nullptr;
 
-  std::vector<vtkImageData*> pieces;
+  std::vector<Piece> pieces;
   for (const auto& object : received)
-    if (auto* image = vtkImageData::SafeDownCast(object); image && image->GetNumberOfPoints() > 0)
-      pieces.push_back(image);
+  {
+    auto* table = vtkTable::SafeDownCast(object);
+    vtkDataArray* extent = table ? table->GetFieldData()->GetArray("PieceExtent") : nullptr;
+    if (!extent || extent->GetNumberOfValues() != 6 || table->GetNumberOfRows() == 0)
+      continue;
+    Piece piece{ {}, table };
+    for (int k = 0; k < 6; ++k)
+      piece.extent[k] = static_cast<int>(extent->GetComponent(k, 0));
+    pieces.push_back(piece);
+  }
   if (pieces.empty())
     return nullptr;
   int whole[6] = { VTK_INT_MAX, VTK_INT_MIN, VTK_INT_MAX, VTK_INT_MIN, 0, 0 };
-  for (vtkImageData* p : pieces)
+  for (const Piece& p : pieces)
   {
-    const int* e = p->GetExtent();
+    const int* e = p.extent;
     for (int axis = 0; axis < 2; ++axis)
     {
       whole[2 * axis] = std::min(whole[2 * axis], e[2 * axis]);
@@ -82,17 +109,19 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
 
   auto result = vtkSmartPointer<vtkImageData>::New();
   result->SetExtent(whole);
-  result->GetFieldData()->DeepCopy(piece && piece->GetNumberOfPoints() > 0 ? piece->GetFieldData() : pieces[0]->GetFieldData());
+  result->GetFieldData()->DeepCopy(
+    piece && piece->GetNumberOfPoints() > 0 ? piece->GetFieldData() : pieces[0].table->GetFieldData());
+  result->GetFieldData()->RemoveArray("PieceExtent");
   // Posts no piece holds stay blanked; a piece's duplicate (ghost) marks are dropped.
   vtkNew<vtkUnsignedCharArray> ghosts;
   ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
   ghosts->SetNumberOfTuples(count);
   ghosts->Fill(vtkDataSetAttributes::HIDDENPOINT);
-  vtkPointData* first = pieces[0]->GetPointData();
-  for (int a = 0; a < first->GetNumberOfArrays(); ++a)
+  vtkTable* first = pieces[0].table;
+  for (vtkIdType a = 0; a < first->GetNumberOfColumns(); ++a)
   {
-    vtkDataArray* model = first->GetArray(a);
-    if (!model || !model->GetName() || model == first->GetArray(vtkDataSetAttributes::GhostArrayName()))
+    vtkDataArray* model = vtkDataArray::SafeDownCast(first->GetColumn(a));
+    if (!model || !model->GetName() || std::strcmp(model->GetName(), vtkDataSetAttributes::GhostArrayName()) == 0)
       continue;
     vtkSmartPointer<vtkDataArray> array;
     array.TakeReference(model->NewInstance());
@@ -104,20 +133,21 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
       array->GetInformation()->Copy(info);
     result->GetPointData()->AddArray(array);
   }
-  for (vtkImageData* p : pieces)
+  for (const Piece& p : pieces)
   {
-    const int* e = p->GetExtent();
-    vtkUnsignedCharArray* pieceGhosts = p->GetPointGhostArray();
+    const int* e = p.extent;
+    vtkDataArray* pieceGhosts = p.column(vtkDataSetAttributes::GhostArrayName());
     for (int j = e[2]; j <= e[3]; ++j)
       for (int i = e[0]; i <= e[1]; ++i)
       {
         const vtkIdType from = (i - e[0]) + static_cast<vtkIdType>(j - e[2]) * (e[1] - e[0] + 1);
         const vtkIdType to = (i - whole[0]) + static_cast<vtkIdType>(j - whole[2]) * nx;
-        ghosts->SetValue(to, pieceGhosts ? pieceGhosts->GetValue(from) & vtkDataSetAttributes::HIDDENPOINT : 0);
+        const auto ghost = pieceGhosts ? static_cast<unsigned char>(pieceGhosts->GetComponent(from, 0)) : 0;
+        ghosts->SetValue(to, ghost & vtkDataSetAttributes::HIDDENPOINT);
         for (int a = 0; a < result->GetPointData()->GetNumberOfArrays(); ++a)
         {
           vtkDataArray* target = result->GetPointData()->GetArray(a);
-          if (vtkDataArray* source = p->GetPointData()->GetArray(target->GetName()))
+          if (vtkDataArray* source = p.column(target->GetName()))
             target->SetTuple(to, from, source);
         }
       }
@@ -126,8 +156,10 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
 
   // The whole grid's georeference, from any piece's.
   terralux::GeoTransform pieceTransform;
-  transformOf(pieces[0], pieceTransform);
-  const int* e = pieces[0]->GetExtent();
+  vtkDataArray* coefficients = pieces[0].table->GetFieldData()->GetArray("GeoTransform");
+  for (int k = 0; k < 6; ++k)
+    pieceTransform.coefficients[k] = coefficients->GetComponent(k, 0);
+  const int* e = pieces[0].extent;
   const int row0 = pieceTransform.firstRasterRow(e[2] - whole[2], e[3] - whole[2], ny);
   const terralux::GeoTransform wholeTransform = pieceTransform.window(-(e[0] - whole[0]), -row0, 1);
   vtkNew<vtkDoubleArray> transform;

@@ -1,9 +1,10 @@
 """Compares what mpi_pipeline.py wrote under different numbers of ranks with the run
 of the first folder (1 rank): every point array of the .pvts pieces put together, and
 every band and the georeference of the GeoTIFFs assembled on rank 0, within 1e-6
-relative.
+relative. With --rasters, two GeoTIFFs (e.g. pvbatch's under mpirun and plain VTK's).
 
   /usr/bin/python3 compare_runs.py ONE_RANK_DIR OTHER_DIR...
+  /usr/bin/python3 compare_runs.py --rasters ONE_RANK.tif OTHER.tif
 """
 import os
 import sys
@@ -57,6 +58,20 @@ def relative_difference(a, b):
     return float(np.abs(a[finite] - b[finite]).max() / scale) if finite.any() else 0.0
 
 
+def compare_bands(expected_path, got_path, failures):
+    """The largest relative difference of the bands, and their georeference checked."""
+    expected, got = bands(expected_path), bands(got_path)
+    if not expected or len(got) != len(expected):
+        failures.append("%s: %d bands, not %d" % (got_path, len(got), len(expected)))
+        return float("inf")
+    worst = 0.0
+    for (transform, values), (want_transform, want_values) in zip(got, expected):
+        if not np.allclose(transform, want_transform, rtol=1e-12, atol=1e-9):
+            failures.append("%s: GeoTransform %s, not %s" % (got_path, transform, want_transform))
+        worst = max(worst, relative_difference(values, want_values))
+    return worst
+
+
 def main(reference_dir, other_dirs):
     failures = []
     for name in OUTPUTS:
@@ -72,14 +87,8 @@ def main(reference_dir, other_dirs):
                                 % (name, other, got_extent, sorted(got), extent, sorted(expected)))
                 continue
             worst = max(relative_difference(got[a], expected[a]) for a in expected)
-            got_bands = bands(os.path.join(other, name + ".tif"))
-            if len(got_bands) != len(expected_bands):
-                failures.append("%s.tif in %s: %d bands, not %d" % (name, other, len(got_bands), len(expected_bands)))
-                continue
-            for (transform, values), (want_transform, want_values) in zip(got_bands, expected_bands):
-                if not np.allclose(transform, want_transform, rtol=1e-12, atol=1e-9):
-                    failures.append("%s.tif in %s: GeoTransform %s, not %s" % (name, other, transform, want_transform))
-                worst = max(worst, relative_difference(values, want_values))
+            worst = max(worst, compare_bands(os.path.join(reference_dir, name + ".tif"),
+                                             os.path.join(other, name + ".tif"), failures))
             print("%s, %s: %d arrays, %d bands, largest relative difference %.1e"
                   % (name, other, len(expected), len(expected_bands), worst))
             if worst > RELATIVE_TOLERANCE:
@@ -89,7 +98,19 @@ def main(reference_dir, other_dirs):
     print("OK")
 
 
+def main_rasters(expected_path, got_path):
+    failures = []
+    worst = compare_bands(expected_path, got_path, failures)
+    print("%s against %s: largest relative difference %.1e" % (got_path, expected_path, worst))
+    if failures or worst > RELATIVE_TOLERANCE:
+        sys.exit("FAIL: " + "; ".join(failures or ["differs by %.2e relative" % worst]))
+    print("OK")
+
+
 if __name__ == "__main__":
-    if len(sys.argv) < 3:
+    if len(sys.argv) == 4 and sys.argv[1] == "--rasters":
+        main_rasters(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) >= 3 and not sys.argv[1].startswith("--"):
+        main(sys.argv[1], sys.argv[2:])
+    else:
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2:])
