@@ -5,6 +5,7 @@ GeoTIFF on the DEM's own grid.
     python3 -m terralux.irradiation DEM.tif -o out.tif --start 2024-06-01 --end 2024-06-30
         [--step 30] [--linke 3.0] [--reflectance 0.2] [--weather FILE.epw] [--day-of-year N]
         [--points | --fast] [--kwh]
+    mpirun -np N python3 -m terralux.irradiation DEM.tif -o out.tif ... --mpi
 
 The equivalent GRASS call for one day: r.sun elevation=dem aspect=aspect slope=slope
 day=173 step=0.5 linke_value=3.0 albedo_value=0.2 beam_rad=... diff_rad=... refl_rad=...
@@ -60,7 +61,34 @@ def parse_arguments(argv):
                       help="interpolate sky and reflected light from the solved elements")
     parser.add_argument("--kwh", action="store_true", help="write kWh/m^2 instead of Wh/m^2")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--mpi", action="store_true",
+                        help="run under mpirun: each rank evaluates its piece of the DEM, rank 0 writes")
     return parser.parse_args(argv)
+
+
+def start_mpi():
+    """MPI through VTK's parallel pipeline: the global controller, once MPI runs."""
+    try:
+        from mpi4py import MPI  # noqa: F401 (MPI starts before VTK's controller)
+        from vtkmodules.vtkParallelCore import vtkMultiProcessController
+        from vtkmodules.vtkParallelMPI import vtkMPIController
+    except ImportError as error:
+        raise InputError("--mpi needs mpi4py (python3-mpi4py) and VTK's MPI modules: %s" % error)
+    controller = vtkMPIController()
+    controller.Initialize()
+    vtkMultiProcessController.SetGlobalController(controller)
+    return controller
+
+
+def owned_posts(data):
+    """Which posts of this piece (grid order) it owns: pieces share their boundary row or
+    column of posts, which belongs to the piece below it, so that sums over the ranks
+    count each post once."""
+    import numpy
+    e = data.GetExtent()
+    i = numpy.arange(e[0], e[1] + 1)[None, :]
+    j = numpy.arange(e[2], e[3] + 1)[:, None]
+    return (((i > e[0]) | (e[0] == 0)) & ((j > e[2]) | (e[2] == 0))).ravel()
 
 
 def utc_offset_text(minutes):
@@ -136,6 +164,9 @@ def run(args):
         return algorithm
 
     start_clock = time.perf_counter()
+    controller = start_mpi() if args.mpi else None
+    rank = controller.GetLocalProcessId() if controller else 0
+    ranks = controller.GetNumberOfProcesses() if controller else 1
     terrain = observe(vtkTerrainSource())
     terrain.SetFileName(args.dem)
     terrain.Update()
@@ -168,7 +199,7 @@ def run(args):
             raise InputError("no weather file at %s" % args.weather)
         irradiation.SetWeatherFileName(args.weather)
     bar = None
-    if not args.quiet:
+    if not args.quiet and rank == 0:
         try:
             from tqdm import tqdm
             bar = tqdm(total=100, unit="%", desc="irradiation", leave=False, file=sys.stderr,
@@ -177,7 +208,7 @@ def run(args):
                 round(100 * caller.GetProgress()) - bar.n))
         except ImportError:
             bar = None
-    irradiation.Update()
+    irradiation.UpdatePiece(rank, ranks, 0)  # the whole DEM on one process
     if bar is not None:
         bar.close()
     result = irradiation.GetOutput()
@@ -200,7 +231,7 @@ def run(args):
     for name in BANDS:
         if point_data.GetArray(name) is not None:
             writer.AddArrayName(name)
-    if not writer.Write():
+    if not writer.Write():  # collective under MPI: rank 0 writes the pieces as one file
         raise InputError("could not write %s: %s" % (args.output, messages[-1] if messages else ""))
 
     field = result.GetFieldData()
@@ -208,15 +239,26 @@ def run(args):
     hours = field.GetArray("StepHours")
     daylight = sum(hours.GetValue(k) for k in range(hours.GetNumberOfTuples()))
     unit = "kWh/m^2" if args.kwh else "Wh/m^2"
-    print("%s: %s to %s, %d daylight steps (%.1f h of sun above the horizon), %.1f s" % (
-        PROGRAM, start, end, steps, daylight, time.perf_counter() - start_clock))
+    # Means over the whole DEM: each rank's sums over the posts it owns, added up.
+    owned = owned_posts(result)
+    sums = {}
     for name in BANDS:
         array = point_data.GetArray(name)
         if array is not None:
-            mean = float(numpy.nanmean(vtk_to_numpy(array)))
-            print("  mean %-21s %10.3f %s" % (name, mean, unit if name in ENERGY_BANDS else
+            values = vtk_to_numpy(array)[owned]
+            finite = numpy.isfinite(values)
+            sums[name] = (float(values[finite].sum()), int(finite.sum()))
+    if controller:
+        from mpi4py import MPI
+        sums = {name: tuple(MPI.COMM_WORLD.allreduce(v) for v in pair) for name, pair in sums.items()}
+    if rank == 0:
+        print("%s: %s to %s, %d daylight steps (%.1f h of sun above the horizon), %.1f s%s" % (
+            PROGRAM, start, end, steps, daylight, time.perf_counter() - start_clock,
+            ", %d ranks" % ranks if controller else ""))
+        for name, (total, count) in sums.items():
+            print("  mean %-21s %10.3f %s" % (name, total / max(count, 1), unit if name in ENERGY_BANDS else
                                                  ("h" if name == "SunshineDuration" else "")))
-    print("wrote", args.output)
+        print("wrote", args.output)
 
 
 def main(argv=None):
