@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace
@@ -136,21 +137,28 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
   for (const Piece& p : pieces)
   {
     const int* e = p.extent;
+    const int width = e[1] - e[0] + 1;
     vtkDataArray* pieceGhosts = p.column(vtkDataSetAttributes::GhostArrayName());
+    std::vector<std::pair<vtkDataArray*, vtkDataArray*>> copies; // (whole, piece)
+    for (int a = 0; a < result->GetPointData()->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* target = result->GetPointData()->GetArray(a);
+      if (vtkDataArray* source = p.column(target->GetName()))
+        copies.emplace_back(target, source);
+    }
+    // Each row of a piece is a run of posts in the whole grid too.
     for (int j = e[2]; j <= e[3]; ++j)
-      for (int i = e[0]; i <= e[1]; ++i)
+    {
+      const vtkIdType from = static_cast<vtkIdType>(j - e[2]) * width;
+      const vtkIdType to = (e[0] - whole[0]) + static_cast<vtkIdType>(j - whole[2]) * nx;
+      for (const auto& [target, source] : copies)
+        target->InsertTuples(to, width, from, source);
+      for (int i = 0; i < width; ++i)
       {
-        const vtkIdType from = (i - e[0]) + static_cast<vtkIdType>(j - e[2]) * (e[1] - e[0] + 1);
-        const vtkIdType to = (i - whole[0]) + static_cast<vtkIdType>(j - whole[2]) * nx;
-        const auto ghost = pieceGhosts ? static_cast<unsigned char>(pieceGhosts->GetComponent(from, 0)) : 0;
-        ghosts->SetValue(to, ghost & vtkDataSetAttributes::HIDDENPOINT);
-        for (int a = 0; a < result->GetPointData()->GetNumberOfArrays(); ++a)
-        {
-          vtkDataArray* target = result->GetPointData()->GetArray(a);
-          if (vtkDataArray* source = p.column(target->GetName()))
-            target->SetTuple(to, from, source);
-        }
+        const auto ghost = pieceGhosts ? static_cast<unsigned char>(pieceGhosts->GetComponent(from + i, 0)) : 0;
+        ghosts->SetValue(to + i, ghost & vtkDataSetAttributes::HIDDENPOINT);
       }
+    }
   }
   result->GetPointData()->AddArray(ghosts);
 

@@ -13,7 +13,7 @@ from paraview import simple as pv
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLStructuredGridReader
 
-from pipeline_parameters import DATE_TIME, IRRADIATION_INSTANT, IRRADIATION_RANGE, RELATIVE_TOLERANCE
+from pipeline_parameters import IRRADIATION_INSTANT, IRRADIATION_RANGE, RELATIVE_TOLERANCE, paraview_pipeline
 
 PLUGIN = os.environ["TERRALUX_PLUGIN"]
 DEM = os.environ["TERRALUX_DEM"]
@@ -40,10 +40,7 @@ class PluginPipeline(unittest.TestCase):
     def setUp(self):
         for proxy in list(pv.GetSources().values()):
             pv.Delete(proxy)
-        self.terrain = pv.TerrainSource(FileName=DEM)
-        self.sun = pv.SunSource(Input=self.terrain, DateTime=DATE_TIME)
-        self.sky = pv.SkySource(Input=self.sun)
-        self.solver = pv.HierarchicalRadiosity(Input=self.terrain, Lights=[self.sun, self.sky])
+        self.terrain, self.sun, self.sky, self.solver = paraview_pipeline(pv, DEM)
 
     def assertSameArrays(self, proxy, reference_name, port=0):
         expected = point_arrays(reference(reference_name))

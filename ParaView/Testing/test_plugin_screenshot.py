@@ -11,17 +11,14 @@ from paraview import simple as pv
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
-from pipeline_parameters import DATE_TIME
+from pipeline_parameters import paraview_pipeline
 
 pv.LoadPlugin(os.environ["TERRALUX_PLUGIN"], remote=False)
 path = os.path.join(os.environ["TERRALUX_OUTPUT_DIR"], "irradiance.png")
 if os.path.exists(path):
     os.remove(path)
 
-terrain = pv.TerrainSource(FileName=os.environ["TERRALUX_DEM"])
-sun = pv.SunSource(Input=terrain, DateTime=DATE_TIME)
-sky = pv.SkySource(Input=sun)
-solver = pv.HierarchicalRadiosity(Input=terrain, Lights=[sun, sky])
+terrain, sun, sky, solver = paraview_pipeline(pv, os.environ["TERRALUX_DEM"])
 
 view = pv.CreateView("RenderView")
 view.UseColorPaletteForBackground = 0

@@ -10,7 +10,7 @@ import sys
 from paraview import servermanager
 from paraview import simple as pv
 
-from pipeline_parameters import DATE_TIME
+from pipeline_parameters import paraview_pipeline
 
 pv.LoadPlugin(os.environ["TERRALUX_PLUGIN"], remote=False)
 ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
@@ -18,10 +18,7 @@ path = os.path.join(os.environ["TERRALUX_OUTPUT_DIR"], "radiosity_mpi.tif")
 if os.path.exists(path):
     os.remove(path)
 
-terrain = pv.TerrainSource(FileName=os.environ["TERRALUX_DEM"])
-sun = pv.SunSource(Input=terrain, DateTime=DATE_TIME)
-sky = pv.SkySource(Input=sun)
-solver = pv.HierarchicalRadiosity(Input=terrain, Lights=[sun, sky])
+terrain, sun, sky, solver = paraview_pipeline(pv, os.environ["TERRALUX_DEM"])
 pv.SaveData(path, proxy=solver, ArrayNames=["Irradiance", "SkyViewFactor"])
 # Data information sums the ranks' pieces: 111 x 111 posts and the row they share.
 points = solver.GetDataInformation().GetNumberOfPoints()
