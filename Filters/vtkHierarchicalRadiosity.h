@@ -267,10 +267,14 @@ public:
   void RemoveAllLightConnections() { this->RemoveAllInputConnections(1); }
   ///@}
 
+  ///@{
   /**
-   * Output 0: the input geometry with the point arrays (its type, or a multiblock).
+   * Output 0: the input geometry with the point arrays (its type, or a multiblock);
+   * GetOutput(port) any of the three outputs, as VTK's algorithms offer it.
    */
   vtkDataObject* GetOutput() { return this->GetOutputDataObject(0); }
+  vtkDataObject* GetOutput(int port) { return this->GetOutputDataObject(port); }
+  ///@}
 
   ///@{
   /**

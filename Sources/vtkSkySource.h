@@ -146,10 +146,13 @@ public:
 
   ///@{
   /**
-   * The radiance map (port 0) and the display dome (port 1).
+   * The radiance map (port 0) and the display dome (port 1); GetOutput(port) either, as
+   * VTK's algorithms offer it.
    */
   vtkImageData* GetRadianceOutput();
   vtkPolyData* GetDomeOutput();
+  vtkDataObject* GetOutput() { return this->GetOutputDataObject(0); }
+  vtkDataObject* GetOutput(int port) { return this->GetOutputDataObject(port); }
   ///@}
 
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

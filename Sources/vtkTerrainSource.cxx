@@ -260,6 +260,22 @@ int vtkTerrainSource::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
+int vtkTerrainSource::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // A height-field image is converted whole, whatever is asked of the output, whose
+  // extent starts at 0 where the image's need not: ask for the image's own extent.
+  if (vtkInformation* inInfo = inputVector[0]->GetInformationObject(0))
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+      inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output)
 {
   RasterRequest request;

@@ -143,6 +143,12 @@ class OlindaRadiosity(unittest.TestCase):
         data = r.GetOutput().GetPointData()
         self.assertIsNotNone(data.GetArray("SunIrradiance"))
         self.assertIsNone(data.GetArray("SkyViewFactor"))  # the sky is gone
+        # GetOutput(port), as every VTK algorithm offers it.
+        self.assertIs(r.GetOutput(0), r.GetOutput())
+        self.assertIs(r.GetOutput(1), r.GetLeafMeshOutput())
+        self.assertIs(r.GetOutput(2), r.GetLinksOutput())
+        self.assertIs(self.sky.GetOutput(1), self.sky.GetDomeOutput())
+        self.assertIs(self.sky.GetOutput(), self.sky.GetRadianceOutput())
 
     def test_no_light_is_an_error(self):
         dark = vtkHierarchicalRadiosity()

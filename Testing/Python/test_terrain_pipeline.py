@@ -111,6 +111,39 @@ class DemReaderInput(unittest.TestCase):
             self.assertEqual(elevation.GetValue(k), direct_heights.GetValue(k))
         self.assertEqual(image.GetSpacing()[:2], (90.0, 90.0))
 
+    def test_image_input_with_offset_extent(self):
+        # A height field whose extent starts at (10, 20), through a filter upstream (not
+        # a trivial producer): converted whole, no pipeline errors, heights right.
+        from vtkmodules.vtkImagingCore import vtkImageCast, vtkImageTranslateExtent
+        reader = vtkDEMReader()
+        reader.SetFileName(self.dem)
+        shifted = vtkImageTranslateExtent()
+        shifted.SetInputConnection(reader.GetOutputPort())
+        shifted.SetTranslation(10, 20, 0)
+        cast = vtkImageCast()
+        cast.SetInputConnection(shifted.GetOutputPort())
+        cast.SetOutputScalarTypeToFloat()
+        source = vtkTerrainSource()
+        source.SetInputConnection(cast.GetOutputPort())
+        errors = [ErrorCatcher(algorithm) for algorithm in (source, cast, shifted)]
+        source.Update()
+        self.assertEqual("".join(e.text() for e in errors), "")
+        cast.Update()
+        image, grid = cast.GetOutput(), source.GetOutput()
+        self.assertEqual(image.GetExtent()[:4], (10, 10 + 110, 20, 20 + 110))
+        self.assertEqual(grid.GetDimensions(), image.GetDimensions())
+        scalars = image.GetPointData().GetScalars()
+        for k in range(0, grid.GetNumberOfPoints(), 7):
+            x, y, _ = image.GetPoint(k)
+            self.assertEqual(grid.GetPoint(k), (x, y, scalars.GetValue(k)))
+        # A piece of the terrain asked for still converts the whole height field.
+        piece = vtkTerrainSource()
+        piece.SetInputConnection(cast.GetOutputPort())
+        piece_errors = ErrorCatcher(piece)
+        piece.UpdatePiece(1, 2, 0)
+        self.assertEqual(piece_errors.text(), "")
+        self.assertEqual(piece.GetOutput().GetNumberOfPoints(), grid.GetNumberOfPoints())
+
     def test_image_input_with_geo_origin(self):
         reader = vtkDEMReader()
         reader.SetFileName(self.dem)
