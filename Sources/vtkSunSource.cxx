@@ -174,7 +174,7 @@ int vtkSunSource::RequestData(
   output->SetVerts(vertices);
 
   vtkFieldData* fieldData = output->GetFieldData();
-  vtkTerraLuxFieldData::AddVector(fieldData, "SunDirection", this->Direction, 3);
+  vtkTerraLuxFieldData::AddTuple(fieldData, "SunDirection", this->Direction, 3);
   vtkTerraLuxFieldData::AddValue(fieldData, "SunZenith", this->Zenith);
   vtkTerraLuxFieldData::AddValue(fieldData, "SunAzimuth", this->Azimuth);
   vtkTerraLuxFieldData::AddValue(fieldData, "SunAltitude", 90.0 - this->Zenith);
@@ -183,7 +183,7 @@ int vtkSunSource::RequestData(
   vtkTerraLuxFieldData::AddValue(fieldData, "GlobalHorizontalIrradiance", irradiance.globalHorizontalWm2);
   vtkTerraLuxFieldData::AddValue(fieldData, "ExtraterrestrialIrradiance", this->ExtraterrestrialIrradiance);
   vtkTerraLuxFieldData::AddValue(fieldData, "EarthSunDistance", this->EarthSunDistance);
-  vtkTerraLuxFieldData::AddVector(fieldData, "GeoOrigin", place, 3);
+  vtkTerraLuxFieldData::AddTuple(fieldData, "GeoOrigin", place, 3);
   auto utc = vtkSmartPointer<vtkStringArray>::New();
   utc->SetName("DateTime");
   utc->InsertNextValue(instant.toUtcString());

@@ -24,6 +24,16 @@ void vtkTerraLuxFieldData::AddVector(
   fieldData->AddArray(array);
 }
 
+void vtkTerraLuxFieldData::AddTuple(
+  vtkFieldData* fieldData, const char* name, const double* values, int components)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->InsertNextTuple(values);
+  fieldData->AddArray(array);
+}
+
 bool vtkTerraLuxFieldData::GetVector(vtkDataObject* data, const char* name, double* values, int count)
 {
   vtkFieldData* fieldData = data ? data->GetFieldData() : nullptr;

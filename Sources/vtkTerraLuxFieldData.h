@@ -9,14 +9,18 @@ class vtkInformationVector;
 
 struct vtkTerraLuxFieldData
 {
-  /// Adds (or replaces) a double array of `count` values.
+  /// Adds (or replaces) a double array of `count` values (one component each).
   static void AddVector(vtkFieldData* fieldData, const char* name, const double* values, int count);
+  /// Adds (or replaces) a double array of one tuple of `components` values: a point
+  /// or a direction (GeoOrigin, SunDirection), so that GetTuple3(0) reads it.
+  static void AddTuple(vtkFieldData* fieldData, const char* name, const double* values, int components);
   static void AddValue(vtkFieldData* fieldData, const char* name, double value)
   {
     AddVector(fieldData, name, &value, 1);
   }
-  /// Reads exactly `count` finite values of a numeric field array; false if absent,
-  /// of another size, or not finite.
+  /// Reads exactly `count` finite values of a numeric field array, in either layout
+  /// (count tuples, or one tuple of count components); false if absent, of another
+  /// size, or not finite.
   static bool GetVector(vtkDataObject* data, const char* name, double* values, int count);
 
   /// Sets every structured input's update extent to its whole extent: for algorithms

@@ -390,7 +390,7 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
     mapOrigin[2] = wholeCentre.heightM;
     placement = std::make_unique<terralux::TerrainPlacement>(
       grid, terralux::LocalPoint{ mapOrigin[0], mapOrigin[1], mapOrigin[2] });
-    vtkTerraLuxFieldData::AddVector(fieldData, "LocalOrigin", mapOrigin, 3);
+    vtkTerraLuxFieldData::AddTuple(fieldData, "LocalOrigin", mapOrigin, 3);
   }
   else
   {
@@ -404,7 +404,7 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
     const terralux::LocalFrame frame(origin);
     placement = std::make_unique<terralux::TerrainPlacement>(grid, projection, frame);
     const double originValues[3] = { origin.latitudeDeg, origin.longitudeDeg, origin.heightM };
-    vtkTerraLuxFieldData::AddVector(fieldData, "GeoOrigin", originValues, 3);
+    vtkTerraLuxFieldData::AddTuple(fieldData, "GeoOrigin", originValues, 3);
   }
 
   // Raster order -> grid order (GeoTransform::gridRow): reversed for north-up rasters.
@@ -587,7 +587,7 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
       output->Initialize();
       return false;
     }
-    vtkTerraLuxFieldData::AddVector(output->GetFieldData(), "GeoOrigin", this->GeoOrigin, 3);
+    vtkTerraLuxFieldData::AddTuple(output->GetFieldData(), "GeoOrigin", this->GeoOrigin, 3);
   }
   return true;
 }

@@ -38,7 +38,8 @@
  *
  * Field data, enough to write results back on the same raster grid:
  * - `GeoOrigin` (latitude, longitude in degrees, height in metres above the WGS84
- *   ellipsoid) of the ENU frame (absent for rasters without a CRS);
+ *   ellipsoid; one tuple of three components) of the ENU frame (absent for rasters
+ *   without a CRS);
  * - `CRS` (WKT of the raster's CRS, empty if none);
  * - `GeoTransform` (6 values, GDAL convention, raster row order) of the output grid:
  *   its pixel (i, row) is centred on grid point (i, ny - 1 - row) (or (i, row) for a

@@ -28,7 +28,8 @@ namespace
 double field(vtkDataObject* data, const char* name, int k = 0)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array ? array->GetComponent(k, 0) : NAN;
+  // Value k, whether the array holds tuples of one value or one tuple of several.
+  return array ? array->GetComponent(k / array->GetNumberOfComponents(), k % array->GetNumberOfComponents()) : NAN;
 }
 
 // Horizontal irradiance from the map: sum of cell radiance times the integral of

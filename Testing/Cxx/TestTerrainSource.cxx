@@ -66,7 +66,8 @@ struct Terrain
 double fieldValue(vtkDataObject* data, const char* name, int k)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array ? array->GetComponent(k, 0) : NAN;
+  // Value k, whether the array holds tuples of one value or one tuple of several.
+  return array ? array->GetComponent(k / array->GetNumberOfComponents(), k % array->GetNumberOfComponents()) : NAN;
 }
 
 // Every output point against GeographicLib: raster post (i, row) -> map (affine,

@@ -39,6 +39,7 @@ class TerrainSunSky(unittest.TestCase):
         self.assertLess(self.sun.GetAzimuth(), 130.0)
         self.assertLess(self.sun.GetZenith(), 60.0)
         direction = [field(sun, "SunDirection", k) for k in range(3)]
+        self.assertEqual(sun.GetFieldData().GetArray("SunDirection").GetTuple3(0), tuple(direction))
         self.assertAlmostEqual(sum(c * c for c in direction), 1.0, places=12)
         self.assertGreater(direction[0], 0.5)  # east
         self.assertAlmostEqual(field(sun, "SunNormalIrradiance"), self.sun.GetNormalIrradiance())

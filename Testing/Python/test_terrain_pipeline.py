@@ -152,6 +152,8 @@ class DemReaderInput(unittest.TestCase):
         source.SetGeoOrigin(-8.0, -34.87, 20.0)
         source.Update()
         self.assertEqual(field_values(source.GetOutput(), "GeoOrigin"), [-8.0, -34.87, 20.0])
+        # One tuple of three components, as a point: GetTuple3 reads it.
+        self.assertEqual(source.GetOutput().GetFieldData().GetArray("GeoOrigin").GetTuple3(0), (-8.0, -34.87, 20.0))
 
 
 class GeodeticConversions(unittest.TestCase):
