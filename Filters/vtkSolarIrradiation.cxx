@@ -14,6 +14,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
+#include "angles.h"
 #include "cie_sky.h"
 #include "cumulative_sky.h"
 #include "date_time.h"
@@ -31,7 +32,6 @@ vtkStandardNewMacro(vtkSolarIrradiation);
 
 namespace
 {
-constexpr double degree = 3.14159265358979323846 / 180.0;
 
 // The sums' names, in the order of vtkRadiosityOutputs' quantities.
 const char* const sumNames[vtkRadiosityOutputs::Quantities] = { "GlobalIrradiation", "BeamIrradiation",
@@ -242,7 +242,7 @@ bool vtkSolarIrradiation::AddLights(vtkInformationVector** inputVector, vtkRadio
       this->UpdateProgress(0.1 * static_cast<double>(k) / static_cast<double>(steps.size()));
     const double weight = integrated ? step.hours : 1.0;
     const terralux::Direction toward =
-      terralux::directionFromZenithAzimuth(step.position.zenithDeg * degree, step.position.azimuthDeg * degree);
+      terralux::directionFromZenithAzimuth(step.position.zenithDeg * terralux::degree, step.position.azimuthDeg * terralux::degree);
     if (step.irradiance.directNormalWm2 > 0.0)
       scene.Suns.push_back({ terralux::Vec3(toward[0], toward[1], toward[2]),
         terralux::uniformSpectrum(step.irradiance.directNormalWm2 * weight),

@@ -16,6 +16,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
+#include "angles.h"
 #include "cie_sky.h"
 #include "error.h"
 #include "perez_sky.h"
@@ -30,7 +31,6 @@ vtkStandardNewMacro(vtkSkySource);
 
 namespace
 {
-constexpr double degree = 3.14159265358979323846 / 180.0;
 
 const char* modelName(int model, int type)
 {
@@ -207,7 +207,7 @@ int vtkSkySource::RequestData(
     return 0;
   }
   const terralux::Direction sunDirection =
-    terralux::directionFromZenithAzimuth(sunZenith * degree, sunAzimuth * degree);
+    terralux::directionFromZenithAzimuth(sunZenith * terralux::degree, sunAzimuth * terralux::degree);
 
   std::unique_ptr<terralux::SkyHierarchy> sky;
   std::unique_ptr<terralux::PerezSky> perez;
@@ -305,12 +305,12 @@ int vtkSkySource::RequestData(
   points->SetNumberOfPoints(static_cast<vtkIdType>(n + 1) * (n + 1));
   for (int j = 0; j <= n; ++j)
   {
-    const double altitude = 0.5 * 3.14159265358979323846 * j / n;
+    const double altitude = 0.5 * terralux::pi * j / n;
     for (int i = 0; i <= n; ++i)
     {
-      const double azimuth = 2.0 * 3.14159265358979323846 * i / n;
+      const double azimuth = 2.0 * terralux::pi * i / n;
       const terralux::Direction d = terralux::directionFromZenithAzimuth(
-        0.5 * 3.14159265358979323846 - altitude, azimuth);
+        0.5 * terralux::pi - altitude, azimuth);
       points->SetPoint(i + static_cast<vtkIdType>(j) * (n + 1), this->DomeRadius * d[0],
         this->DomeRadius * d[1], this->DomeRadius * d[2]);
     }

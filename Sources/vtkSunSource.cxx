@@ -12,6 +12,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 
+#include "angles.h"
 #include "clear_sky.h"
 #include "date_time.h"
 #include "error.h"
@@ -132,9 +133,8 @@ int vtkSunSource::RequestData(
     return 0;
   }
 
-  const double degree = 3.14159265358979323846 / 180.0;
   const terralux::Direction direction =
-    terralux::directionFromZenithAzimuth(position.zenithDeg * degree, position.azimuthDeg * degree);
+    terralux::directionFromZenithAzimuth(position.zenithDeg * terralux::degree, position.azimuthDeg * terralux::degree);
   this->Zenith = position.zenithDeg;
   this->Azimuth = position.azimuthDeg;
   for (int k = 0; k < 3; ++k)
@@ -158,7 +158,7 @@ int vtkSunSource::RequestData(
     irradiance.directNormalWm2 = this->UserNormalIrradiance;
     irradiance.diffuseHorizontalWm2 = this->UserDiffuseHorizontalIrradiance;
     irradiance.globalHorizontalWm2 =
-      irradiance.directNormalWm2 * std::cos(position.zenithDeg * degree) + irradiance.diffuseHorizontalWm2;
+      irradiance.directNormalWm2 * std::cos(position.zenithDeg * terralux::degree) + irradiance.diffuseHorizontalWm2;
   }
   this->NormalIrradiance = irradiance.directNormalWm2;
   this->DiffuseHorizontalIrradiance = irradiance.diffuseHorizontalWm2;

@@ -1,5 +1,6 @@
 #include "bf_oracle.h"
 
+#include "angles.h"
 #include "cluster.h"
 #include "sky_patch_element.h"
 #include "polygon_element.h"
@@ -108,7 +109,6 @@ double clusterKernelBound(const HElement& receiver, const HElement& sender)
     return 0.0;
   const Vec3 gap = glm::max(Vec3(0.0), glm::max(sLow - rHigh, rLow - sHigh));
   const double d2 = glm::dot(gap, gap);
-  constexpr double pi = 3.14159265358979323846;
   return d2 > 0.0 ? std::min(1.0, sender.area() / (pi * d2)) : 1.0;
 }
 

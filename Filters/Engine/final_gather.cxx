@@ -1,5 +1,6 @@
 #include "final_gather.h"
 
+#include "angles.h"
 #include "link_transport.h"
 #include "open_sky.h"
 #include "sampling.h"
@@ -89,7 +90,6 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   std::uint64_t seed, double directIrradiance, bool surfacesSend) const
 {
   GatheredLight result;
-  constexpr double pi = 3.14159265358979323846;
   Spectrum open{};
   double openOmega = 0.0;
   if (this->Sky)

@@ -1,5 +1,6 @@
 #include "link_transport.h"
 
+#include "angles.h"
 #include "cluster.h"
 #include "point_form_factor.h"
 #include "polygon_element.h"
@@ -15,7 +16,6 @@ namespace terralux
 {
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
 // Clusters of up to this many input polygons send through their polygons' exact
 // form factors rather than through the cluster model.
 constexpr std::size_t exactClusterSurfaces = 8;
@@ -225,7 +225,6 @@ double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
 {
   if (sender.kind() != HElement::Kind::SkyPatch)
     return 0.0;
-  constexpr double pi = 3.14159265358979323846;
   return transport * static_cast<const SkyPatchElement&>(sender).geometricShare(normal) / pi;
 }
 

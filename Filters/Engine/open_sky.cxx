@@ -1,5 +1,6 @@
 #include "open_sky.h"
 
+#include "angles.h"
 #include "sky_patch_element.h"
 
 #include <tbb/parallel_for.h>
@@ -161,7 +162,6 @@ Spectrum OpenSky::radiance(const Vec3& d) const
   if (!(d.z > 0.0))
     return result;
   // Inverse of directionFromSkyParameters: d = (-sin v cos u, -cos v cos u, sin u).
-  constexpr double pi = 3.14159265358979323846;
   const double u = std::asin(std::min(1.0, d.z));
   double v = std::atan2(-d.x, -d.y);
   if (v < 0.0)

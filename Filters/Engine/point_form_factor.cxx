@@ -1,5 +1,7 @@
 #include "point_form_factor.h"
 
+#include "angles.h"
+
 #include <cmath>
 
 namespace terralux
@@ -49,6 +51,6 @@ double pointToPolygonFormFactor(
     const double angle = std::atan2(length, glm::dot(a, b));
     sum += angle * glm::dot(n, c) / length;
   }
-  return std::abs(sum) / (2.0 * 3.14159265358979323846);
+  return std::abs(sum) / (2.0 * pi);
 }
 } // namespace terralux

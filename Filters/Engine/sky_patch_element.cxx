@@ -1,5 +1,7 @@
 #include "sky_patch_element.h"
 
+#include "angles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -120,7 +122,6 @@ int SkyPatchElement::sideOf(const Vec3& n) const
   auto g = [&](double v) { return n.x * std::sin(v) + n.y * std::cos(v); };
   double gLow = std::min(g(v0), g(v1)), gHigh = std::max(g(v0), g(v1));
   const double phi = std::atan2(n.x, n.y);
-  constexpr double pi = 3.14159265358979323846;
   for (int k = -2; k <= 3; ++k) // the extremes of g at phi + k pi inside [v0, v1]
   {
     const double v = phi + k * pi;

@@ -1,5 +1,6 @@
 #include "solver.h"
 
+#include "angles.h"
 #include "bf_oracle.h"
 #include "cluster.h"
 #include "error.h"
@@ -163,7 +164,6 @@ void HierarchicalRadiosity::mergeSuns()
   this->Suns = this->PointSuns;
   if (this->PointSuns.size() <= maximumSolveSuns)
     return;
-  constexpr double degree = 3.14159265358979323846 / 180.0;
   struct Merged
   {
     Spectrum flux{};
@@ -175,7 +175,7 @@ void HierarchicalRadiosity::mergeSuns()
     const auto& sun = static_cast<const SunElement&>(*element);
     const Vec3& d = sun.direction();
     const double altitude = std::asin(std::min(1.0, d.z));
-    const double azimuth = std::atan2(d.x, d.y) + 3.14159265358979323846;
+    const double azimuth = std::atan2(d.x, d.y) + pi;
     const double azimuthWidth = mergedSunDegrees * degree / std::max(std::cos(altitude), 0.05);
     Merged& bin = bins[{ static_cast<int>(altitude / (mergedSunDegrees * degree)),
       static_cast<int>(azimuth / azimuthWidth) }];

@@ -1,5 +1,6 @@
 #include "terrain_patch.h"
 
+#include "angles.h"
 #include "point_form_factor.h"
 
 #include <algorithm>
@@ -240,7 +241,7 @@ double TerrainPatch::formFactorFrom(const Vec3& x, const Vec3& n) const
       return 0.0;
     const double aligned = this->Area - this->UnalignedArea;
     const double projected = std::max(0.0, -aligned * glm::dot(this->Normal, dir)) + 0.25 * this->UnalignedArea;
-    return cosine * projected / (3.14159265358979323846 * d2 + projected);
+    return cosine * projected / (pi * d2 + projected);
   }
   double sum = 0.0;
   for (int j = static_cast<int>(this->Range.v0); j < this->Range.v1; ++j)

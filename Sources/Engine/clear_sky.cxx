@@ -1,5 +1,7 @@
 #include "clear_sky.h"
 
+#include "angles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,7 +10,6 @@ namespace terralux
 {
 namespace
 {
-constexpr double degree = 3.14159265358979323846 / 180.0;
 }
 
 double kastenYoungAirMass(double zenithDeg)

@@ -1,5 +1,6 @@
 #include "perez_sky.h"
 
+#include "angles.h"
 #include "clear_sky.h"
 #include "error.h"
 
@@ -61,7 +62,7 @@ PerezSky::PerezSky(const Direction& sun, double directNormalWm2, double diffuseH
   this->Clearness = diffuseHorizontalWm2 > 0.0
     ? ((diffuseHorizontalWm2 + directNormalWm2) / diffuseHorizontalWm2 + z3) / (1.0 + z3)
     : 1.0;
-  const double airMass = std::min(kastenYoungAirMass(zenith * 180.0 / 3.14159265358979323846), 40.0);
+  const double airMass = std::min(kastenYoungAirMass(zenith * 180.0 / pi), 40.0);
   this->Brightness = diffuseHorizontalWm2 * airMass / extraterrestrialWm2;
   // Bounds of the fitted data set, as Radiance's gendaylit applies them.
   this->Clearness = std::clamp(this->Clearness, 1.0, 12.0);

@@ -1,5 +1,6 @@
 #include "sky_hierarchy.h"
 
+#include "angles.h"
 #include "error.h"
 
 #include <algorithm>
@@ -10,7 +11,6 @@ namespace terralux
 {
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
 constexpr double halfPi = pi / 2.0;
 constexpr double twoPi = 2.0 * pi;
 

@@ -1,5 +1,6 @@
 #include "solar_position.h"
 
+#include "angles.h"
 #include "error.h"
 #include "solar_position_terms.h"
 
@@ -9,8 +10,6 @@ namespace terralux
 {
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double degree = pi / 180.0;
 
 double wrapDegrees(double angle)
 {

@@ -1,5 +1,6 @@
 #include "cumulative_sky.h"
 
+#include "angles.h"
 #include "error.h"
 
 #include <tbb/parallel_for.h>
@@ -11,7 +12,7 @@ namespace terralux
 {
 namespace
 {
-const double nearPeakCosine = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+const double nearPeakCosine = std::cos(25.0 * pi / 180.0);
 } // namespace
 
 CumulativeSky::CumulativeSky(int finestLevel)

@@ -1,5 +1,6 @@
 #include "weather_file.h"
 
+#include "angles.h"
 #include "date_time.h"
 #include "error.h"
 
@@ -240,7 +241,7 @@ std::vector<SolarStep> weatherSteps(const WeatherFile& weather, double startJuli
       step.irradiance.directNormalWm2 = record.directNormalWh / litHours;
       step.irradiance.diffuseHorizontalWm2 = record.diffuseHorizontalWh / litHours;
       step.irradiance.globalHorizontalWm2 = step.irradiance.directNormalWm2 *
-          std::max(0.0, std::cos(step.position.zenithDeg * 3.14159265358979323846 / 180.0)) +
+          std::max(0.0, std::cos(step.position.zenithDeg * pi / 180.0)) +
         step.irradiance.diffuseHorizontalWm2;
       if (step.position.zenithDeg < 90.0)
         steps.push_back(step);
@@ -253,7 +254,6 @@ std::vector<SolarStep> weatherSteps(const WeatherFile& weather, double startJuli
 
 double distanceKm(double latitudeA, double longitudeA, double latitudeB, double longitudeB)
 {
-  constexpr double degree = 3.14159265358979323846 / 180.0;
   const double dLat = (latitudeB - latitudeA) * degree, dLon = (longitudeB - longitudeA) * degree;
   const double h = std::sin(dLat / 2) * std::sin(dLat / 2) +
     std::cos(latitudeA * degree) * std::cos(latitudeB * degree) * std::sin(dLon / 2) * std::sin(dLon / 2);
