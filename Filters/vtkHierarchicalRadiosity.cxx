@@ -396,6 +396,7 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   addValue("Iterations", stats.iterations);
   addValue("Residual", stats.residual);
   addValue("DegeneratePolygons", static_cast<double>(solver->degeneratePolygons()));
+  addValue("SkippedCells", static_cast<double>(scene.SkippedCells)); // vertices, lines: no area
   addValue("SecondsVisibilityBuild", stats.secondsVisibilityBuild);
   addValue("SecondsRefine", stats.secondsRefine);
   addValue("SecondsGather", stats.secondsGather);

@@ -33,7 +33,8 @@
  * by a sky also `SkyViewFactor`, the cosine-weighted fraction of the sky each post sees
  * (1 on open flat ground), as SAGA and GRASS r.skyview report it (NaN at points on no
  * polygon, e.g. blanked no-data posts); field
- * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons`, seconds per
+ * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons`, `SkippedCells`
+ * (vertex and line cells, and polygons of fewer than 3 points: no area, no light), seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`,
  * `SecondsPoints` for output 0's point values) and rays per phase (`RaysRefine`,
  * `RaysPushPull` for gather and push-pull, `RaysPoints`).

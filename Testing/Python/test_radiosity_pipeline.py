@@ -150,6 +150,26 @@ class OlindaRadiosity(unittest.TestCase):
         self.assertIs(self.sky.GetOutput(1), self.sky.GetDomeOutput())
         self.assertIs(self.sky.GetOutput(), self.sky.GetRadianceOutput())
 
+    def test_cells_without_area_are_counted(self):
+        from vtkmodules.vtkFiltersCore import vtkAppendPolyData
+        from vtkmodules.vtkFiltersSources import vtkLineSource, vtkPlaneSource
+        from terralux import vtkSkySource
+        plane, line, scene = vtkPlaneSource(), vtkLineSource(), vtkAppendPolyData()
+        plane.SetResolution(4, 4)
+        line.SetPoint1(0, 0, 1)
+        line.SetPoint2(0, 0, 2)
+        scene.AddInputConnection(plane.GetOutputPort())
+        scene.AddInputConnection(line.GetOutputPort())
+        sky = vtkSkySource()
+        sky.SetUseSunSource(False)
+        sky.SetSkyModelToUniform()
+        r = vtkHierarchicalRadiosity()
+        r.SetInputConnection(scene.GetOutputPort())
+        r.AddLightConnection(sky.GetOutputPort(0))
+        r.Update()
+        self.assertEqual(field(r.GetOutput(), "SkippedCells"), 1)  # the line
+        self.assertEqual(field(r.GetOutput(), "DegeneratePolygons"), 0)
+
     def test_no_light_is_an_error(self):
         dark = vtkHierarchicalRadiosity()
         dark.SetInputConnection(self.terrain.GetOutputPort())
