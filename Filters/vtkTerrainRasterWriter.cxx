@@ -53,6 +53,7 @@ std::string unitOf(vtkDataArray* array, const std::string& name)
 vtkTerrainRasterWriter::vtkTerrainRasterWriter()
   : FileName(nullptr)
   , NoDataValue(-9999.0)
+  , WritePieces(0)
 {
 }
 
@@ -134,7 +135,11 @@ void vtkTerrainRasterWriter::WriteData()
     {
       throw terralux::Error("no file name: call SetFileName()");
     }
-    if (controller && controller->GetNumberOfProcesses() > 1)
+    if (this->WritePieces)
+    {
+      this->WritePiecesAndMosaic(controller);
+    }
+    else if (controller && controller->GetNumberOfProcesses() > 1)
     {
       // Collective: every rank sends its piece, rank 0 writes the whole grid.
       vtkSmartPointer<vtkImageData> whole =
@@ -148,7 +153,7 @@ void vtkTerrainRasterWriter::WriteData()
       {
         throw terralux::Error("no rank has a terrain piece with vtkTerrainSource's georeference to write");
       }
-      this->WriteGrid(whole);
+      this->WriteGrid(whole, this->FileName);
     }
     else
     {
@@ -157,7 +162,7 @@ void vtkTerrainRasterWriter::WriteData()
       {
         throw terralux::Error("the input must be a vtkStructuredGrid from vtkTerrainSource");
       }
-      this->WriteGrid(grid);
+      this->WriteGrid(grid, this->FileName);
     }
     this->Succeeded = true;
   }
@@ -168,7 +173,56 @@ void vtkTerrainRasterWriter::WriteData()
 }
 
 //------------------------------------------------------------------------------
-void vtkTerrainRasterWriter::WriteGrid(vtkDataSet* grid)
+void vtkTerrainRasterWriter::WritePiecesAndMosaic(vtkMultiProcessController* controller)
+{
+  const int rank = controller ? controller->GetLocalProcessId() : 0;
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  std::string base = this->FileName; // without its extension
+  const std::size_t slash = base.find_last_of('/');
+  const std::size_t dot = base.find_last_of('.');
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
+    base.erase(dot);
+  const std::string tile = base + "_" + std::to_string(rank) + ".tif";
+  auto* grid = vtkStructuredGrid::SafeDownCast(this->GetInput());
+  // A rank without posts (more ranks than rows) writes nothing; the others' error
+  // would leave rank 0 waiting, so each rank's outcome is gathered before it throws.
+  std::string problem;
+  if (grid && grid->GetNumberOfPoints() > 0)
+  {
+    try
+    {
+      this->WriteGrid(grid, tile);
+    }
+    catch (const terralux::Error& error)
+    {
+      problem = error.what();
+    }
+  }
+  const int wrote = problem.empty() && grid && grid->GetNumberOfPoints() > 0 ? 1 : 0;
+  const int failed = problem.empty() ? 0 : 1;
+  std::vector<int> wroteBy(ranks, wrote), failedBy(ranks, failed);
+  if (controller && ranks > 1)
+  {
+    controller->AllGather(&wrote, wroteBy.data(), 1);
+    controller->AllGather(&failed, failedBy.data(), 1);
+  }
+  if (!problem.empty())
+    throw terralux::Error(problem);
+  for (int r = 0; r < ranks; ++r)
+    if (failedBy[r])
+      throw terralux::Error("rank " + std::to_string(r) + " could not write its piece");
+  if (rank == 0)
+  {
+    std::vector<std::string> tiles;
+    for (int r = 0; r < ranks; ++r)
+      if (wroteBy[r])
+        tiles.push_back(base + "_" + std::to_string(r) + ".tif");
+    terralux::writeVrtMosaic(this->FileName, tiles);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainRasterWriter::WriteGrid(vtkDataSet* grid, const std::string& fileName)
 {
   vtkFieldData* fieldData = grid->GetFieldData();
   vtkDataArray* geoTransform = fieldData->GetArray("GeoTransform");
@@ -251,7 +305,7 @@ void vtkTerrainRasterWriter::WriteGrid(vtkDataSet* grid)
     }
   }
   raster.hasNoData = raster.hasNoData || noData != nullptr;
-  terralux::writeGeoTiff(this->FileName, raster, bands);
+  terralux::writeGeoTiff(fileName, raster, bands);
 }
 
 //------------------------------------------------------------------------------
@@ -260,6 +314,7 @@ void vtkTerrainRasterWriter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "NoDataValue: " << this->NoDataValue << "\n";
+  os << indent << "WritePieces: " << this->WritePieces << "\n";
   os << indent << "ArrayNames:";
   for (const std::string& name : this->ArrayNames)
     os << " " << name;

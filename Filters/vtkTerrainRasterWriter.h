@@ -26,6 +26,7 @@
 #include "vtkWriter.h"
 
 class vtkDataSet;
+class vtkMultiProcessController;
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -60,6 +61,19 @@ public:
 
   ///@{
   /**
+   * Set/Get whether each piece is written on its own (on): under MPI each rank writes
+   * its piece as `<FileName without extension>_<rank>.tif` and rank 0 a GDAL VRT mosaic
+   * of them at FileName (give it a .vrt extension), so no rank holds the whole grid and
+   * nothing travels but the file names; one process writes its one piece the same way.
+   * Off (default): one GeoTIFF at FileName, assembled on rank 0 under MPI.
+   */
+  vtkSetMacro(WritePieces, vtkTypeBool);
+  vtkGetMacro(WritePieces, vtkTypeBool);
+  vtkBooleanMacro(WritePieces, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Set/Get the no-data value for blanked posts when the input has no `NoDataValue`
    * field data. Default is -9999.
    */
@@ -75,12 +89,15 @@ protected:
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void WriteData() override;
-  // Writes a whole terrain grid (a vtkStructuredGrid, or pieces assembled as a
-  // vtkImageData); throws terralux::Error.
-  void WriteGrid(vtkDataSet* grid);
+  // Writes a terrain grid (a vtkStructuredGrid, or pieces assembled as a vtkImageData)
+  // as the GeoTIFF `fileName`; throws terralux::Error.
+  void WriteGrid(vtkDataSet* grid, const std::string& fileName);
+  // WritePieces: each rank's piece as a GeoTIFF, rank 0 the VRT over them (collective).
+  void WritePiecesAndMosaic(vtkMultiProcessController* controller);
 
   char* FileName;
   double NoDataValue;
+  vtkTypeBool WritePieces;
   std::vector<std::string> ArrayNames;
 
 private:

@@ -4,8 +4,10 @@
 #include "gdal_messages.h"
 
 #include <gdal_priv.h>
+#include <gdal_utils.h>
 #include <ogr_spatialref.h>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 
@@ -62,5 +64,33 @@ void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std
     }
   }
   dataset->FlushCache();
+}
+
+void writeVrtMosaic(const std::string& fileName, const std::vector<std::string>& tiles)
+{
+  if (tiles.empty())
+  {
+    throw Error("no piece to mosaic into '" + fileName + "'");
+  }
+  GDALAllRegister();
+  const QuietGdalErrors quiet;
+  std::vector<const char*> names;
+  for (const std::string& tile : tiles)
+    names.push_back(tile.c_str());
+  int usageError = 0;
+  GDALDatasetH vrt = GDALBuildVRT(fileName.c_str(), static_cast<int>(names.size()), nullptr, names.data(), nullptr, &usageError);
+  if (!vrt || usageError)
+  {
+    throw Error("cannot build the VRT '" + fileName + "' over the pieces (" + quiet.lastMessage() + ")");
+  }
+  // A VRT's bands keep no description of their own: take the first piece's.
+  std::unique_ptr<GDALDataset> first(GDALDataset::Open(tiles.front().c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  auto* mosaic = GDALDataset::FromHandle(vrt);
+  for (int k = 1; first && k <= std::min(first->GetRasterCount(), mosaic->GetRasterCount()); ++k)
+  {
+    mosaic->GetRasterBand(k)->SetDescription(first->GetRasterBand(k)->GetDescription());
+    mosaic->GetRasterBand(k)->SetUnitType(first->GetRasterBand(k)->GetUnitType());
+  }
+  GDALClose(vrt);
 }
 } // namespace terralux

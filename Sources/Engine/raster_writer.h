@@ -29,4 +29,9 @@ struct RasterGrid
 /// Writes a Float32 GeoTIFF (deflate-compressed, tiled when large). Throws Error when
 /// the sizes disagree or GDAL cannot create the file.
 void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands);
+
+/// Writes a GDAL VRT at `fileName` that mosaics `tiles` (GeoTIFFs of the same CRS and
+/// bands, pieces of one grid, overlapping or not) into one raster, with the first
+/// tile's band descriptions and units. Throws Error when GDAL cannot build it.
+void writeVrtMosaic(const std::string& fileName, const std::vector<std::string>& tiles);
 } // namespace terralux

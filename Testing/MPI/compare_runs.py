@@ -1,7 +1,7 @@
 """Compares what mpi_pipeline.py wrote under different numbers of ranks with the run
 of the first folder (1 rank): every point array of the .pvts pieces put together, and
-every band and the georeference of the GeoTIFFs assembled on rank 0, within 1e-6
-relative. With --rasters, two GeoTIFFs (e.g. pvbatch's under mpirun and plain VTK's).
+every band and the georeference of the GeoTIFFs assembled on rank 0 and of the VRTs
+over the ranks' own GeoTIFFs, within 1e-6 relative. With --rasters, two GeoTIFFs (e.g. pvbatch's under mpirun and plain VTK's).
 
   /usr/bin/python3 compare_runs.py ONE_RANK_DIR OTHER_DIR...
   /usr/bin/python3 compare_runs.py --rasters ONE_RANK.tif OTHER.tif
@@ -87,8 +87,9 @@ def main(reference_dir, other_dirs):
                                 % (name, other, got_extent, sorted(got), extent, sorted(expected)))
                 continue
             worst = max(relative_difference(got[a], expected[a]) for a in expected)
-            worst = max(worst, compare_bands(os.path.join(reference_dir, name + ".tif"),
-                                             os.path.join(other, name + ".tif"), failures))
+            for written in (name + ".tif", name + "_pieces.vrt"):  # assembled; per rank + VRT
+                worst = max(worst, compare_bands(os.path.join(reference_dir, name + ".tif"),
+                                                 os.path.join(other, written), failures))
             print("%s, %s: %d arrays, %d bands, largest relative difference %.1e"
                   % (name, other, len(expected), len(expected_bands), worst))
             if worst > RELATIVE_TOLERANCE:

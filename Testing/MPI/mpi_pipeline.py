@@ -5,8 +5,8 @@
 vtkTerrainSource -> vtkSunSource -> vtkSkySource -> vtkHierarchicalRadiosity and
 vtkTerrainSource -> vtkSolarIrradiation (three morning hours), each rank computing
 its piece (the pipeline's UPDATE_PIECE_NUMBER), written as pieces of a .pvts
-(vtkXMLPStructuredGridWriter) and as one GeoTIFF assembled on rank 0
-(vtkTerrainRasterWriter). Rank 0 prints each rank's posts and seconds.
+(vtkXMLPStructuredGridWriter), as one GeoTIFF assembled on rank 0
+(vtkTerrainRasterWriter) and as a GeoTIFF per rank with a VRT over them (WritePieces). Rank 0 prints each rank's posts and seconds.
 """
 import os
 import sys
@@ -52,6 +52,10 @@ def main(dem, out):
     instant = instant_solver(terrain, "2024-08-15T08:30:00-03:00")
     series = series_solver(terrain, "2024-08-15T06:00:00-03:00", "2024-08-15T09:00:00-03:00", 60.0)
 
+    def fail(message):  # one rank's failure ends every rank (no rank left in a collective)
+        sys.stderr.write("rank %d: %s\n" % (rank, message))
+        MPI.COMM_WORLD.Abort(1)
+
     report = []
     for name, solver in (("instant", instant), ("series", series)):
         start = time.perf_counter()
@@ -64,12 +68,18 @@ def main(dem, out):
         pieces.SetController(controller)
         pieces.SetDataModeToBinary()
         if not pieces.Write():
-            sys.exit("rank %d: could not write %s.pvts" % (rank, name))
+            fail("could not write %s.pvts" % name)
         raster = terralux.vtkTerrainRasterWriter()
         raster.SetInputConnection(solver.GetOutputPort(0))
         raster.SetFileName(os.path.join(out, name + ".tif"))
         if not raster.Write():
-            sys.exit("rank %d: could not write %s.tif" % (rank, name))
+            fail("could not write %s.tif" % name)
+        tiles = terralux.vtkTerrainRasterWriter()  # a GeoTIFF per rank and a VRT over them
+        tiles.SetInputConnection(solver.GetOutputPort(0))
+        tiles.SetFileName(os.path.join(out, name + "_pieces.vrt"))
+        tiles.WritePiecesOn()
+        if not tiles.Write():
+            fail("could not write %s_pieces.vrt" % name)
         posts = solver.GetOutputDataObject(0).GetNumberOfPoints()
         report.append("%s: %d posts in %.2f s" % (name, posts, time.perf_counter() - start))
 
