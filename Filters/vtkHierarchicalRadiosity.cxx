@@ -16,6 +16,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTerrainPieces.h"
 
 #include "error.h"
 #include "finite_parameters.h"
@@ -379,7 +380,7 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
       const int* e = piece.extent;
       std::copy(e, e + 4, pointOptions.posts);
       vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
-      vtkRadiosityOutputs::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), e);
+      vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), e);
     }
     else
     {

@@ -19,7 +19,6 @@
 #include "cluster.h"
 #include "polygon_element.h"
 #include "sky_patch_element.h"
-#include "geo_transform.h"
 #include "solver.h"
 #include "terrain_mesh.h"
 #include "terrain_patch.h"
@@ -594,84 +593,9 @@ void vtkRadiosityOutputs::BuildLeafMesh(
   output->GetCellData()->AddArray(level);
 }
 
-void vtkRadiosityOutputs::BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output)
-{
-  const terralux::Cluster* root = solver.root();
-  const double reach = glm::length(root->high() - root->low());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIntArray> level;
-  level->SetName("Level");
-  vtkNew<vtkDoubleArray> power;
-  power->SetName("Power");
-  vtkNew<vtkIntArray> sender, senderLevel;
-  sender->SetName("Sender"); // what sends: 0 a surface or cluster, 1 a sky patch, 2 the sun
-  senderLevel->SetName("SenderLevel");
-  for (const auto& element : solver.elements().all())
-  {
-    for (const terralux::Link& link : element->Incoming)
-    {
-      const Vec3 from = element->centre();
-      Vec3 to = link.sender->centre();
-      if (link.sender->isExternal())
-      {
-        const Vec3 d = link.sender->kind() == terralux::HElement::Kind::Sun
-          ? static_cast<const terralux::SunElement*>(link.sender)->direction()
-          : static_cast<const terralux::SkyPatchElement*>(link.sender)->direction();
-        to = from + reach * d; // sources at infinity: drawn toward the sky
-      }
-      const vtkIdType a = points->InsertNextPoint(from.x, from.y, from.z);
-      const vtkIdType b = points->InsertNextPoint(to.x, to.y, to.z);
-      const vtkIdType ids[2] = { a, b };
-      lines->InsertNextCell(2, ids);
-      level->InsertNextValue(element->level());
-      power->InsertNextValue(terralux::linkPower(*element, link));
-      const auto kind = link.sender->kind();
-      sender->InsertNextValue(
-        kind == terralux::HElement::Kind::Sun ? 2 : (kind == terralux::HElement::Kind::SkyPatch ? 1 : 0));
-      senderLevel->InsertNextValue(link.sender->level());
-    }
-  }
-  output->SetPoints(points);
-  output->SetLines(lines);
-  output->GetCellData()->AddArray(level);
-  output->GetCellData()->AddArray(power);
-  output->GetCellData()->AddArray(sender);
-  output->GetCellData()->AddArray(senderLevel);
-}
-
 const char* vtkRadiosityOutputs::QuantityName(int quantity)
 {
   return quantityNames[quantity];
-}
-
-void vtkRadiosityOutputs::CropToPiece(vtkStructuredGrid* terrain, const int extent[6])
-{
-  int whole[6];
-  terrain->GetExtent(whole);
-  if (std::equal(extent, extent + 6, whole))
-    return;
-  terrain->Crop(extent);
-  vtkFieldData* fieldData = terrain->GetFieldData();
-  vtkDataArray* transform = fieldData->GetArray("GeoTransform");
-  if (!transform || transform->GetNumberOfValues() != 6)
-    return;
-  terralux::GeoTransform wholeTransform;
-  for (int k = 0; k < 6; ++k)
-    wholeTransform.coefficients[k] = transform->GetComponent(k, 0);
-  const terralux::GeoTransform piece = wholeTransform.pieceOf(
-    extent[0] - whole[0], extent[2] - whole[2], extent[3] - whole[2], whole[3] - whole[2] + 1);
-  vtkNew<vtkDoubleArray> pieceTransform;
-  pieceTransform->SetName("GeoTransform");
-  for (double c : piece.coefficients)
-    pieceTransform->InsertNextValue(c);
-  fieldData->AddArray(pieceTransform);
-  vtkNew<vtkIntArray> rasterSize;
-  rasterSize->SetName("RasterSize");
-  rasterSize->InsertNextValue(extent[1] - extent[0] + 1);
-  rasterSize->InsertNextValue(extent[3] - extent[2] + 1);
-  fieldData->AddArray(rasterSize);
 }
 
 void vtkRadiosityOutputs::AddFieldValue(vtkFieldData* fieldData, const char* name, double value)

@@ -8,7 +8,6 @@ class vtkDataSet;
 class vtkFieldData;
 class vtkPolyData;
 class vtkRadiosityScene;
-class vtkStructuredGrid;
 
 namespace terralux
 {
@@ -46,9 +45,6 @@ struct vtkRadiosityOutputs
   static void BuildLeafMesh(
     const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output);
   static void BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output);
-  /// Crops a terrain to the piece `extent` (grid indices) and makes its georeference
-  /// field data (GeoTransform, RasterSize) describe the piece.
-  static void CropToPiece(vtkStructuredGrid* terrain, const int extent[6]);
   /// Adds a one-value double array to field data (counts, seconds).
   static void AddFieldValue(vtkFieldData* fieldData, const char* name, double value);
 };

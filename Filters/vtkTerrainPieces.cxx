@@ -182,3 +182,31 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
   result->GetFieldData()->AddArray(rasterSize);
   return result;
 }
+
+void vtkTerrainPieces::CropToPiece(vtkStructuredGrid* terrain, const int extent[6])
+{
+  int whole[6];
+  terrain->GetExtent(whole);
+  if (std::equal(extent, extent + 6, whole))
+    return;
+  terrain->Crop(extent);
+  vtkFieldData* fieldData = terrain->GetFieldData();
+  vtkDataArray* transform = fieldData->GetArray("GeoTransform");
+  if (!transform || transform->GetNumberOfValues() != 6)
+    return;
+  terralux::GeoTransform wholeTransform;
+  for (int k = 0; k < 6; ++k)
+    wholeTransform.coefficients[k] = transform->GetComponent(k, 0);
+  const terralux::GeoTransform piece = wholeTransform.pieceOf(
+    extent[0] - whole[0], extent[2] - whole[2], extent[3] - whole[2], whole[3] - whole[2] + 1);
+  vtkNew<vtkDoubleArray> pieceTransform;
+  pieceTransform->SetName("GeoTransform");
+  for (double c : piece.coefficients)
+    pieceTransform->InsertNextValue(c);
+  fieldData->AddArray(pieceTransform);
+  vtkNew<vtkIntArray> rasterSize;
+  rasterSize->SetName("RasterSize");
+  rasterSize->InsertNextValue(extent[1] - extent[0] + 1);
+  rasterSize->InsertNextValue(extent[3] - extent[2] + 1);
+  fieldData->AddArray(rasterSize);
+}

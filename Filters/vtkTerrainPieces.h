@@ -1,5 +1,6 @@
-// Assembles a terrain split into pieces (one per MPI rank, VTK extents of one whole
-// grid) on one rank, for writers that write one file (private to TerraLux::Filters).
+// A terrain split into pieces (one per MPI rank, VTK extents of one whole grid): a
+// piece cut from the whole, and the pieces assembled on one rank for writers that
+// write one file (private to TerraLux::Filters).
 #ifndef vtkTerrainPieces_h
 #define vtkTerrainPieces_h
 
@@ -8,6 +9,7 @@
 class vtkDataSet;
 class vtkImageData;
 class vtkMultiProcessController;
+class vtkStructuredGrid;
 
 struct vtkTerrainPieces
 {
@@ -18,6 +20,9 @@ struct vtkTerrainPieces
   /// field data and the whole grid's GeoTransform and RasterSize; nullptr elsewhere,
   /// and on root when no rank had a georeferenced piece.
   static vtkSmartPointer<vtkImageData> GatherToRoot(vtkMultiProcessController* controller, vtkDataSet* piece, int root);
+  /// Crops a terrain to the piece `extent` (grid indices) and makes its georeference
+  /// field data (GeoTransform, RasterSize) describe the piece.
+  static void CropToPiece(vtkStructuredGrid* terrain, const int extent[6]);
 };
 
 #endif

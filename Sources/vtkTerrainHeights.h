@@ -1,0 +1,76 @@
+// Height helpers of vtkTerrainSource's two paths, the DEM file and the height-field
+// image (private to TerraLux::Sources).
+#ifndef vtkTerrainHeights_h
+#define vtkTerrainHeights_h
+
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace vtkTerrainHeights
+{
+template <typename ArrayT>
+inline vtkSmartPointer<vtkDataArray> newValues(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+// Heights no DEM on Earth holds (the Mariana Trench is at -11 km, Everest at 8.8 km).
+constexpr double lowestPlausibleHeightM = -12000.0;
+constexpr double highestPlausibleHeightM = 10000.0;
+
+// Makes heights beyond the plausible range no data (NaN); returns how many there were.
+template <typename HeightT>
+inline vtkIdType dropImplausibleHeights(HeightT* heights, vtkIdType count)
+{
+  vtkIdType dropped = 0;
+  for (vtkIdType k = 0; k < count; ++k)
+    if (std::isfinite(heights[k]) && !(heights[k] >= lowestPlausibleHeightM && heights[k] <= highestPlausibleHeightM))
+    {
+      heights[k] = std::numeric_limits<HeightT>::quiet_NaN();
+      ++dropped;
+    }
+  return dropped;
+}
+
+// Marks no-data posts (NaN heights) hidden; returns the lowest valid height.
+template <typename HeightT>
+inline double blankNoDataPosts(const HeightT* heights, vtkIdType count, vtkUnsignedCharArray* ghosts)
+{
+  double lowest = std::numeric_limits<double>::infinity();
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    const bool valid = std::isfinite(heights[k]);
+    ghosts->SetValue(k, valid ? 0 : vtkDataSetAttributes::HIDDENPOINT);
+    if (valid && heights[k] < lowest)
+    {
+      lowest = heights[k];
+    }
+  }
+  return lowest;
+}
+
+// Reverses the row order in place (raster row 0 first -> grid j = ny - 1 - row).
+template <typename T>
+inline void flipRows(T* values, int nx, int ny)
+{
+  for (int row = 0; row < ny / 2; ++row)
+  {
+    std::swap_ranges(values + static_cast<std::size_t>(row) * nx,
+      values + static_cast<std::size_t>(row + 1) * nx,
+      values + static_cast<std::size_t>(ny - 1 - row) * nx);
+  }
+}
+} // namespace vtkTerrainHeights
+
+#endif
