@@ -217,6 +217,8 @@ void vtkTerrainRasterWriter::WritePiecesAndMosaic(vtkMultiProcessController* con
     for (int r = 0; r < ranks; ++r)
       if (wroteBy[r])
         tiles.push_back(base + "_" + std::to_string(r) + ".tif");
+    if (tiles.empty())
+      throw terralux::Error("no rank has a terrain piece with vtkTerrainSource's georeference to write");
     terralux::writeVrtMosaic(this->FileName, tiles);
   }
 }

@@ -9,6 +9,7 @@
 #include <GeographicLib/UTMUPS.hpp>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -131,6 +132,34 @@ TEST(GeoTransform, WindowKeepsPostCentres)
         EXPECT_NEAR(yw, yo, 1e-9);
       }
     }
+  }
+}
+
+TEST(GeoTransform, PieceOfAGridAndTheWholeBack)
+{
+  // North-up (rows reversed in the grid) and south-up (kept), each with a rotation.
+  for (const auto& coefficients : { std::array<double, 6>{ 1000.0, 30.0, 2.0, 9000.0, 1.0, -30.0 },
+         std::array<double, 6>{ 1000.0, 30.0, 2.0, 2000.0, 1.0, 30.0 } })
+  {
+    GeoTransform whole;
+    whole.coefficients = coefficients;
+    const int rows = 50, i0 = 7, j0 = 12, j1 = 30;
+    const int row0 = whole.firstRasterRow(j0, j1, rows);
+    EXPECT_EQ(row0, whole.gridRow(0, rows) != 0 ? rows - 1 - j1 : j0);
+    const GeoTransform piece = whole.pieceOf(i0, j0, j1, rows);
+    // The piece's pixel (i, r) is the whole's (i0 + i, row0 + r), and back again.
+    for (int i : { 0, 3 })
+      for (int r : { 0, 5, j1 - j0 })
+      {
+        double xp, yp, xw, yw;
+        piece.pixelToMap(i + 0.5, r + 0.5, xp, yp);
+        whole.pixelToMap(i0 + i + 0.5, row0 + r + 0.5, xw, yw);
+        EXPECT_NEAR(xp, xw, 1e-9);
+        EXPECT_NEAR(yp, yw, 1e-9);
+      }
+    const GeoTransform back = piece.window(-i0, -row0, 1);
+    for (int k = 0; k < 6; ++k)
+      EXPECT_NEAR(back.coefficients[k], whole.coefficients[k], 1e-9);
   }
 }
 

@@ -299,7 +299,7 @@ void forEachPost(const HierarchicalRadiosity& solver, const TerrainGrid& grid, C
 }
 } // namespace
 
-TEST(TerrainRadiosity, FlatAndTiltedPlanesAgainstClosedForms)
+TEST(TerrainHierarchy, FlatAndTiltedPlanesAgainstClosedForms)
 {
   const double radiance = 30.0, sunFlux = 900.0;
   const SkyHierarchy sky(UniformSky(), M_PI * radiance, 7);
@@ -337,7 +337,7 @@ TEST(TerrainRadiosity, FlatAndTiltedPlanesAgainstClosedForms)
   }
 }
 
-TEST(TerrainRadiosity, GaussianHillAgainstClosedFormsOnItsConvexTop)
+TEST(TerrainHierarchy, GaussianHillAgainstClosedFormsOnItsConvexTop)
 {
   // sigma 60 m, 40 m high: slopes below 21 degrees, so a sun 60 degrees high casts no
   // shadow, and the top (r < sigma / 2) lies below its tangent planes: it sees the
@@ -376,7 +376,7 @@ TEST(TerrainRadiosity, GaussianHillAgainstClosedFormsOnItsConvexTop)
   EXPECT_GT(reflectedAtFoot, 0.0); // the concave foot sees the lit hill
 }
 
-TEST(TerrainRadiosity, VerticalStepCastsItsShadowAndNoLightLeaks)
+TEST(TerrainHierarchy, VerticalStepCastsItsShadowAndNoLightLeaks)
 {
   // Posts 0..10 at x = 0..100 m, height 0; posts 11..20 at x = 100..190 m, height 100:
   // cells of column 10 form a vertical wall facing -x. Sun from +x, 60 degrees high:
@@ -425,7 +425,7 @@ TEST(TerrainRadiosity, VerticalStepCastsItsShadowAndNoLightLeaks)
   });
 }
 
-TEST(TerrainRadiosity, LightPassesThroughAHoleOnlyWhereItIs)
+TEST(TerrainHierarchy, LightPassesThroughAHoleOnlyWhereItIs)
 {
   // A 16 x 16-cell terrain at z = 50 with a 4 x 4-cell hole over a floor at z = 0; sun
   // straight down: the floor is lit exactly below the hole.

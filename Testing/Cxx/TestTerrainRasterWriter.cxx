@@ -139,3 +139,52 @@ TEST(TerrainRasterWriter, BadInput)
   writer->AddArrayName("Elevation");
   EXPECT_EQ(writer->Write(), 1);
 }
+
+TEST(TerrainRasterWriter, PiecesWithAVrtOverThem)
+{
+  // One process: its one piece as <name>_0.tif and the VRT over it, the values of the
+  // GeoTIFF the writer writes whole. Under MPI each rank adds its own piece
+  // (Testing/MPI checks 2 and 3 ranks against 1).
+  vtkNew<vtkTerrainSource> terrain;
+  terrain->SetFileName(terralux_test::writeRaster("writer-pieces.tif", hillWithHole()).c_str());
+  const std::string dir = terralux_test::scratchDir();
+  vtkNew<vtkTerrainRasterWriter> whole, pieces;
+  for (vtkTerrainRasterWriter* writer : { whole.GetPointer(), pieces.GetPointer() })
+  {
+    writer->SetInputConnection(terrain->GetOutputPort());
+    writer->AddArrayName("Elevation");
+  }
+  whole->SetFileName((dir + "/whole.tif").c_str());
+  pieces->SetFileName((dir + "/pieces.vrt").c_str());
+  pieces->WritePiecesOn();
+  ASSERT_EQ(whole->Write(), 1);
+  ASSERT_EQ(pieces->Write(), 1);
+
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> a(GDALDataset::Open((dir + "/whole.tif").c_str(), GDAL_OF_RASTER));
+  std::unique_ptr<GDALDataset> b(GDALDataset::Open((dir + "/pieces.vrt").c_str(), GDAL_OF_RASTER));
+  std::unique_ptr<GDALDataset> tile(GDALDataset::Open((dir + "/pieces_0.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(a && b && tile);
+  ASSERT_EQ(b->GetRasterXSize(), a->GetRasterXSize());
+  ASSERT_EQ(b->GetRasterYSize(), a->GetRasterYSize());
+  EXPECT_STREQ(b->GetRasterBand(1)->GetDescription(), "Elevation");
+  const int n = a->GetRasterXSize() * a->GetRasterYSize();
+  std::vector<float> va(n), vb(n);
+  ASSERT_EQ(a->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, a->GetRasterXSize(), a->GetRasterYSize(), va.data(),
+              a->GetRasterXSize(), a->GetRasterYSize(), GDT_Float32, 0, 0, nullptr), CE_None);
+  ASSERT_EQ(b->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, b->GetRasterXSize(), b->GetRasterYSize(), vb.data(),
+              b->GetRasterXSize(), b->GetRasterYSize(), GDT_Float32, 0, 0, nullptr), CE_None);
+  EXPECT_EQ(va, vb);
+
+  // Nothing to write: a piece without the georeference is refused, no VRT over nothing.
+  vtkNew<vtkStructuredGrid> plain;
+  plain->SetDimensions(2, 2, 1);
+  vtkNew<vtkTerrainRasterWriter> refused;
+  refused->SetInputData(plain);
+  refused->SetFileName((dir + "/refused.vrt").c_str());
+  refused->WritePiecesOn();
+  vtkNew<MessageCatcher> messages;
+  refused->AddObserver(vtkCommand::ErrorEvent, messages);
+  EXPECT_EQ(refused->Write(), 0);
+  EXPECT_NE(messages->Errors.find("georeference"), std::string::npos);
+}
