@@ -376,16 +376,10 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
     auto* dataSet = vtkDataSet::SafeDownCast(output);
     dataSet->ShallowCopy(scene.Inputs[0].data);
     if (piece.extent)
-    {
-      const int* e = piece.extent;
-      std::copy(e, e + 4, pointOptions.posts);
-      vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
-      vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), e);
-    }
-    else
-    {
-      vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
-    }
+      std::copy(piece.extent, piece.extent + 4, pointOptions.posts); // only the piece's posts
+    vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
+    if (piece.extent)
+      vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), piece.extent);
   }
   const double secondsPoints =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();

@@ -24,15 +24,30 @@
 
 namespace
 {
-// The georeference of a piece, when it has one.
-bool transformOf(vtkDataSet* data, terralux::GeoTransform& transform)
+// The georeference of a grid or a piece, when its field data has one.
+bool transformOf(vtkFieldData* fieldData, terralux::GeoTransform& transform)
 {
-  vtkDataArray* coefficients = data->GetFieldData()->GetArray("GeoTransform");
+  vtkDataArray* coefficients = fieldData->GetArray("GeoTransform");
   if (!coefficients || coefficients->GetNumberOfValues() != 6)
     return false;
   for (int k = 0; k < 6; ++k)
     transform.coefficients[k] = coefficients->GetComponent(k, 0);
   return true;
+}
+
+// Replaces the georeference field data: an nx x ny raster on `transform`.
+void setGeoreference(vtkFieldData* fieldData, const terralux::GeoTransform& transform, int nx, int ny)
+{
+  vtkNew<vtkDoubleArray> coefficients;
+  coefficients->SetName("GeoTransform");
+  for (double c : transform.coefficients)
+    coefficients->InsertNextValue(c);
+  fieldData->AddArray(coefficients);
+  vtkNew<vtkIntArray> rasterSize;
+  rasterSize->SetName("RasterSize");
+  rasterSize->InsertNextValue(nx);
+  rasterSize->InsertNextValue(ny);
+  fieldData->AddArray(rasterSize);
 }
 
 // What a piece sends: a table of its point arrays (one row per post) with its numeric
@@ -45,7 +60,7 @@ vtkSmartPointer<vtkTable> packetOf(vtkDataSet* piece)
   auto packet = vtkSmartPointer<vtkTable>::New();
   auto* grid = vtkStructuredGrid::SafeDownCast(piece);
   terralux::GeoTransform unused;
-  if (!grid || grid->GetNumberOfPoints() == 0 || !transformOf(grid, unused))
+  if (!grid || grid->GetNumberOfPoints() == 0 || !transformOf(grid->GetFieldData(), unused))
     return packet; // empty
   vtkPointData* pointData = grid->GetPointData();
   for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
@@ -164,22 +179,10 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
 
   // The whole grid's georeference, from any piece's.
   terralux::GeoTransform pieceTransform;
-  vtkDataArray* coefficients = pieces[0].table->GetFieldData()->GetArray("GeoTransform");
-  for (int k = 0; k < 6; ++k)
-    pieceTransform.coefficients[k] = coefficients->GetComponent(k, 0);
+  transformOf(pieces[0].table->GetFieldData(), pieceTransform); // packetOf sent only georeferenced pieces
   const int* e = pieces[0].extent;
   const int row0 = pieceTransform.firstRasterRow(e[2] - whole[2], e[3] - whole[2], ny);
-  const terralux::GeoTransform wholeTransform = pieceTransform.window(-(e[0] - whole[0]), -row0, 1);
-  vtkNew<vtkDoubleArray> transform;
-  transform->SetName("GeoTransform");
-  for (double c : wholeTransform.coefficients)
-    transform->InsertNextValue(c);
-  result->GetFieldData()->AddArray(transform);
-  vtkNew<vtkIntArray> rasterSize;
-  rasterSize->SetName("RasterSize");
-  rasterSize->InsertNextValue(nx);
-  rasterSize->InsertNextValue(ny);
-  result->GetFieldData()->AddArray(rasterSize);
+  setGeoreference(result->GetFieldData(), pieceTransform.window(-(e[0] - whole[0]), -row0, 1), nx, ny);
   return result;
 }
 
@@ -190,23 +193,10 @@ void vtkTerrainPieces::CropToPiece(vtkStructuredGrid* terrain, const int extent[
   if (std::equal(extent, extent + 6, whole))
     return;
   terrain->Crop(extent);
-  vtkFieldData* fieldData = terrain->GetFieldData();
-  vtkDataArray* transform = fieldData->GetArray("GeoTransform");
-  if (!transform || transform->GetNumberOfValues() != 6)
-    return;
   terralux::GeoTransform wholeTransform;
-  for (int k = 0; k < 6; ++k)
-    wholeTransform.coefficients[k] = transform->GetComponent(k, 0);
-  const terralux::GeoTransform piece = wholeTransform.pieceOf(
-    extent[0] - whole[0], extent[2] - whole[2], extent[3] - whole[2], whole[3] - whole[2] + 1);
-  vtkNew<vtkDoubleArray> pieceTransform;
-  pieceTransform->SetName("GeoTransform");
-  for (double c : piece.coefficients)
-    pieceTransform->InsertNextValue(c);
-  fieldData->AddArray(pieceTransform);
-  vtkNew<vtkIntArray> rasterSize;
-  rasterSize->SetName("RasterSize");
-  rasterSize->InsertNextValue(extent[1] - extent[0] + 1);
-  rasterSize->InsertNextValue(extent[3] - extent[2] + 1);
-  fieldData->AddArray(rasterSize);
+  if (!transformOf(terrain->GetFieldData(), wholeTransform))
+    return;
+  setGeoreference(terrain->GetFieldData(),
+    wholeTransform.pieceOf(extent[0] - whole[0], extent[2] - whole[2], extent[3] - whole[2], whole[3] - whole[2] + 1),
+    extent[1] - extent[0] + 1, extent[3] - extent[2] + 1);
 }

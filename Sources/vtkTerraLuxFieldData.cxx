@@ -60,6 +60,9 @@ void vtkTerraLuxFieldData::RequestWholeInputs(vtkInformationVector** inputVector
     for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
     {
       vtkInformation* info = inputVector[port]->GetInformationObject(k);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
       if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
       {
         info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),

@@ -23,8 +23,9 @@ struct vtkTerraLuxFieldData
   /// size, or not finite.
   static bool GetVector(vtkDataObject* data, const char* name, double* values, int count);
 
-  /// Sets every structured input's update extent to its whole extent: for algorithms
-  /// whose outputs' extents say nothing about what they need from their inputs.
+  /// Asks every input for all of it (piece 0 of 1, no ghost levels, a structured
+  /// input's whole extent): for algorithms whose outputs' pieces and extents say nothing
+  /// about what they need from their inputs.
   static void RequestWholeInputs(vtkInformationVector** inputVector, int ports);
 };
 

@@ -207,14 +207,7 @@ int vtkTerrainSource::RequestUpdateExtent(vtkInformation*, vtkInformationVector*
 {
   // A height-field image is converted whole, whatever is asked of the output, whose
   // extent starts at 0 where the image's need not: ask for the image's own extent.
-  if (vtkInformation* inInfo = inputVector[0]->GetInformationObject(0))
-  {
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-      inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  }
+  vtkTerraLuxFieldData::RequestWholeInputs(inputVector, 1);
   return 1;
 }
 
@@ -234,8 +227,7 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
   {
     return true; // an empty piece (more pieces than rows): nothing to read
   }
-  if (extent[0] < 0 || extent[1] >= wholeNx || extent[2] < 0 || extent[3] >= wholeNy || extent[0] > extent[1] ||
-    extent[2] > extent[3])
+  if (extent[0] < 0 || extent[1] >= wholeNx || extent[2] < 0 || extent[3] >= wholeNy)
   {
     throw terralux::Error("the requested extent lies outside the DEM's " + std::to_string(wholeNx) + " x " +
       std::to_string(wholeNy) + " posts");
@@ -371,7 +363,8 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
     flipRows(ghosts->GetPointer(0), nx, ny);
   // A piece's ghost posts (shared with its neighbours) are duplicates.
   bool anyGhost = valid < static_cast<std::size_t>(count);
-  for (int j = extent[2]; j <= extent[3]; ++j)
+  const bool withGhosts = !std::equal(extent, extent + 6, pieceExtent);
+  for (int j = extent[2]; withGhosts && j <= extent[3]; ++j)
     for (int i = extent[0]; i <= extent[1]; ++i)
       if (i < pieceExtent[0] || i > pieceExtent[1] || j < pieceExtent[2] || j > pieceExtent[3])
       {

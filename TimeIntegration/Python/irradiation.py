@@ -175,7 +175,7 @@ def run(args):
     origin = terrain.GetOutput().GetFieldData().GetArray("GeoOrigin")
     if origin is None:
         raise InputError("%s has no georeference (a CRS): TerraLux needs the place to place the sun" % args.dem)
-    longitude = origin.GetComponent(1, 0) if origin.GetNumberOfTuples() == 3 else origin.GetComponent(0, 1)
+    longitude = origin.GetTuple3(0)[1]  # GeoOrigin: (latitude, longitude, height)
     start, end = time_range(args, longitude)
     if not 0.0 <= args.reflectance < 1.0:
         raise InputError("--reflectance %g is not in [0, 1)" % args.reflectance)
