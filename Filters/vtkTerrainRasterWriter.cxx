@@ -32,6 +32,8 @@ const char* const radiosityArrays[] = { "Irradiance", "SunIrradiance", "SkyIrrad
   "Radiosity", "GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation",
   "OutgoingIrradiation", "SunshineDuration", "SkyViewFactor" };
 
+const char* const noPieceToWrite = "no rank has a terrain piece with vtkTerrainSource's georeference to write";
+
 // The array's own units (vtkDataArray::UNITS_LABEL, as vtkSolarIrradiation sets
 // them), else those of the known names.
 std::string unitOf(vtkDataArray* array, const std::string& name)
@@ -151,7 +153,7 @@ void vtkTerrainRasterWriter::WriteData()
       }
       if (!whole)
       {
-        throw terralux::Error("no rank has a terrain piece with vtkTerrainSource's georeference to write");
+        throw terralux::Error(noPieceToWrite);
       }
       this->WriteGrid(whole, this->FileName);
     }
@@ -182,43 +184,42 @@ void vtkTerrainRasterWriter::WritePiecesAndMosaic(vtkMultiProcessController* con
   const std::size_t dot = base.find_last_of('.');
   if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
     base.erase(dot);
-  const std::string tile = base + "_" + std::to_string(rank) + ".tif";
+  auto tileOf = [&base](int r) { return base + "_" + std::to_string(r) + ".tif"; };
   auto* grid = vtkStructuredGrid::SafeDownCast(this->GetInput());
-  // A rank without posts (more ranks than rows) writes nothing; the others' error
-  // would leave rank 0 waiting, so each rank's outcome is gathered before it throws.
+  // A rank without posts (more ranks than rows) writes nothing. A rank's error would
+  // leave rank 0 waiting, so every rank's outcome is gathered before anyone throws.
+  enum Outcome : int { Nothing = 0, Wrote = 1, Failed = 2 };
   std::string problem;
+  int outcome = Nothing;
   if (grid && grid->GetNumberOfPoints() > 0)
   {
     try
     {
-      this->WriteGrid(grid, tile);
+      this->WriteGrid(grid, tileOf(rank));
+      outcome = Wrote;
     }
     catch (const terralux::Error& error)
     {
       problem = error.what();
+      outcome = Failed;
     }
   }
-  const int wrote = problem.empty() && grid && grid->GetNumberOfPoints() > 0 ? 1 : 0;
-  const int failed = problem.empty() ? 0 : 1;
-  std::vector<int> wroteBy(ranks, wrote), failedBy(ranks, failed);
+  std::vector<int> outcomes(ranks, outcome);
   if (controller && ranks > 1)
-  {
-    controller->AllGather(&wrote, wroteBy.data(), 1);
-    controller->AllGather(&failed, failedBy.data(), 1);
-  }
+    controller->AllGather(&outcome, outcomes.data(), 1);
   if (!problem.empty())
     throw terralux::Error(problem);
   for (int r = 0; r < ranks; ++r)
-    if (failedBy[r])
+    if (outcomes[r] == Failed)
       throw terralux::Error("rank " + std::to_string(r) + " could not write its piece");
   if (rank == 0)
   {
     std::vector<std::string> tiles;
     for (int r = 0; r < ranks; ++r)
-      if (wroteBy[r])
-        tiles.push_back(base + "_" + std::to_string(r) + ".tif");
+      if (outcomes[r] == Wrote)
+        tiles.push_back(tileOf(r));
     if (tiles.empty())
-      throw terralux::Error("no rank has a terrain piece with vtkTerrainSource's georeference to write");
+      throw terralux::Error(noPieceToWrite);
     terralux::writeVrtMosaic(this->FileName, tiles);
   }
 }
