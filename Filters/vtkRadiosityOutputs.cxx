@@ -61,6 +61,13 @@ Values valuesOf(const terralux::PolygonElement& leaf)
   return v;
 }
 
+// A leaf's weight in the averages at a point: its area, never zero, so that a point only
+// zero-area leaves reach (those of a degenerate polygon) takes their plain mean, not 0/0.
+double averagingWeight(const terralux::PolygonElement& leaf)
+{
+  return std::max(leaf.area(), 1e-200);
+}
+
 void accumulate(Values& sum, const Values& v, double weight)
 {
   for (int q = 0; q < quantities; ++q)
@@ -325,12 +332,12 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
       side->otherLeaves.push_back(leaf);
     }
     side->normalSum += root->area() * n;
-    side->area += root->area();
+    side->area += averagingWeight(*root);
     if (!evaluateAtPoints)
     {
-      accumulate(side->leafSum, valuesOf(*leaf), leaf->area());
-      side->skyView += leaf->SkyViewFactor * leaf->area();
-      side->leafWeight += leaf->area();
+      accumulate(side->leafSum, valuesOf(*leaf), averagingWeight(*leaf));
+      side->skyView += leaf->SkyViewFactor * averagingWeight(*leaf);
+      side->leafWeight += averagingWeight(*leaf);
     }
   };
   // The largest part of each cell (a polygon is split into triangles), for vertices
@@ -506,9 +513,9 @@ void vtkRadiosityOutputs::BuildLeafMesh(
         skyViews.push_back(0.0);
       }
       ids[c] = it->second;
-      accumulate(values[it->second], v, leaf->area());
-      weights[it->second] += leaf->area();
-      skyViews[it->second] += leaf->area() * leaf->SkyViewFactor;
+      accumulate(values[it->second], v, averagingWeight(*leaf));
+      weights[it->second] += averagingWeight(*leaf);
+      skyViews[it->second] += averagingWeight(*leaf) * leaf->SkyViewFactor;
     }
     polygons->InsertNextCell(leaf->cornerCount(), ids);
     level->InsertNextValue(leaf->level());

@@ -488,6 +488,36 @@ TEST(HostileRadiosity, FuzzFindingsStayFixed)
       EXPECT_GT(irradiance->GetComponent(k, 0), 0.0) << k;
     }
   }
+  // A sliver quad (two corners a denormal from the origin, one 2 mm above it) under the
+  // sun: leaves of zero area meet at leaf-mesh vertices, which took 0/0.
+  {
+    const auto data = polygons({ { 7.4415891827805358e-68, 3.2466618484640403e-312, 3.1126135687998532e-322 },
+                                 { 1.99951171875, 1.99951171875, 0 },
+                                 { 5.3047064716705865e-315, 0, 1.7796245020678025e-308 },
+                                 { 0, 0, 0.001983642578125 } },
+      { { 0, 1, 2, 3 } });
+    vtkNew<vtkSunSource> sun;
+    sun->SetDateTime("2024-06-21T10:00:00+02:00");
+    sun->SetLatitude(46.0);
+    sun->SetIrradianceModelToUser();
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputData(data);
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    radiosity->AddLightConnection(sun->GetOutputPort());
+    radiosity->SetErrorTolerance(1e-2);
+    radiosity->SetVisibilitySamples(2);
+    vtkNew<MessageCatcher> messages;
+    ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+    vtkPolyData* mesh = radiosity->GetLeafMeshOutput();
+    ASSERT_GT(mesh->GetNumberOfPoints(), 0);
+    for (const char* name : { "Irradiance", "Radiosity" })
+    {
+      vtkDataArray* values = mesh->GetPointData()->GetArray(name);
+      ASSERT_NE(values, nullptr) << name;
+      for (vtkIdType k = 0; k < values->GetNumberOfTuples(); ++k)
+        EXPECT_TRUE(std::isfinite(values->GetComponent(k, 0))) << name << " at leaf-mesh point " << k;
+    }
+  }
 }
 
 TEST(HostileRadiosity, SunBelowTheHorizonCostsNothing)
