@@ -74,6 +74,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , ReflectanceArrayName(nullptr)
   , EmissionArrayName(nullptr)
   , UseTerrainHierarchy(1)
+  , SkyFromHorizons(1)
   , EvaluateAtPoints(1)
   , NumberOfBands(1)
   , PostNormals(AREA_WEIGHTED_NORMALS)
@@ -289,6 +290,7 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   options.visibilitySamples = this->VisibilitySamples;
   options.gatherSamples = this->MaximumGatherRays;
   options.gatherError = this->GatherError;
+  options.skyFromHorizons = this->SkyFromHorizons != 0;
   options.maximumIterations = this->MaximumIterations;
   options.convergenceTolerance = this->ConvergenceTolerance;
   options.maximumElements = static_cast<std::size_t>(this->MaximumNumberOfElements);
@@ -443,4 +445,5 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfBands: " << this->NumberOfBands << "\n";
   os << indent << "PostNormals: " << (this->PostNormals == HORN_NORMALS ? "Horn" : "AreaWeighted") << "\n";
   os << indent << "UseTerrainHierarchy: " << (this->UseTerrainHierarchy ? "On" : "Off") << "\n";
+  os << indent << "SkyFromHorizons: " << (this->SkyFromHorizons ? "On" : "Off") << "\n";
 }

@@ -216,6 +216,24 @@ public:
   vtkBooleanMacro(UseTerrainHierarchy, vtkTypeBool);
   ///@}
 
+  ///@{
+  /**
+   * Set/Get whether, in a scene that is a height field (terrains whose cells all face
+   * up, no polygons), the sky each point does not see comes from its horizon: 32
+   * azimuths turned at random per point, each horizon bisected with occlusion rays to
+   * 0.2 % of its sector's sky and interpolated between azimuths, the sky below it
+   * integrated exactly over the sky's cells (as r.horizon and HORAYZON find horizons).
+   * The gather's rays then gather only the light of surfaces. This removes the
+   * sampling noise of the sky (Olinda: 0.85 % RMS down to the reference's own 0.09 %).
+   * Off, or in scenes with buildings or vegetation (where a lower direction can be
+   * open under a higher blocked one), the gather's rays also find the hidden sky.
+   * Only with EvaluateAtPoints on. Default is on.
+   */
+  vtkSetMacro(SkyFromHorizons, vtkTypeBool);
+  vtkGetMacro(SkyFromHorizons, vtkTypeBool);
+  vtkBooleanMacro(SkyFromHorizons, vtkTypeBool);
+  ///@}
+
   enum PostNormalType
   {
     AREA_WEIGHTED_NORMALS = 0,
@@ -324,6 +342,7 @@ protected:
   char* ReflectanceArrayName;
   char* EmissionArrayName;
   vtkTypeBool UseTerrainHierarchy;
+  vtkTypeBool SkyFromHorizons;
   vtkTypeBool EvaluateAtPoints;
   int NumberOfBands;
   int PostNormals;

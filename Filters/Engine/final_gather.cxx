@@ -1,6 +1,7 @@
 #include "final_gather.h"
 
 #include "angles.h"
+#include "horizon_sky.h"
 #include "link_transport.h"
 #include "open_sky.h"
 #include "sampling.h"
@@ -94,6 +95,17 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   double openOmega = 0.0;
   if (this->Sky)
     this->Sky->irradiance(normal, open, openOmega);
+  // Over a height field the sky the scene hides comes from the point's horizon, and the
+  // rays only gather what surfaces send.
+  const bool skyByRays = this->Sky && !this->Horizons;
+  HiddenSky horizon;
+  if (this->Sky && this->Horizons)
+  {
+    horizon = this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull);
+    for (int band = 0; band < maxBands; ++band)
+      open[band] = std::max(0.0, open[band] - horizon.irradiance[band]);
+    openOmega = std::max(0.0, openOmega - horizon.projectedSolidAngle);
+  }
   Spectrum hidden{}, surfaces{};
   int hiddenSky = 0;
   // Each ray's share of the point's irradiance beyond the open sky (largest band):
@@ -122,7 +134,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       if (!this->Rays.firstHit(point, normal, d, hit))
         continue;
       double value = 0.0;
-      if (this->Sky && d.z > 0.0)
+      if (skyByRays && d.z > 0.0)
       {
         const Spectrum l = this->Sky->radiance(d);
         for (int band = 0; band < maxBands; ++band)
@@ -151,7 +163,9 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   };
   SampleGenerator pilotRandom(seed ^ 0x5851F42D4C957F2Dull), random(seed);
   int count = budget.maximum;
-  if (budget.pilot > 0 && budget.minimum < budget.maximum)
+  if (!skyByRays && !surfacesSend)
+    count = 0; // nothing left for rays to find
+  if (count > 0 && budget.pilot > 0 && budget.minimum < budget.maximum)
   {
     cast(budget.pilot, pilotRandom);
     const double mean = sum / budget.pilot;
@@ -167,14 +181,15 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   }
   cast(count, random);
   // E = pi x the mean radiance over cosine-weighted directions: the mean radiosity.
+  const double perRay = count > 0 ? 1.0 / count : 0.0;
   for (int band = 0; band < maxBands; ++band)
   {
-    result.surfaces[band] = surfaces[band] / count;
-    result.sky[band] = std::max(0.0, open[band] - pi * hidden[band] / count);
+    result.surfaces[band] = surfaces[band] * perRay;
+    result.sky[band] = std::max(0.0, open[band] - pi * hidden[band] * perRay);
   }
   if (this->Sky)
-    result.skyViewFactor = std::max(0.0, openOmega / pi - static_cast<double>(hiddenSky) / count);
-  result.rays = count;
+    result.skyViewFactor = std::max(0.0, openOmega / pi - static_cast<double>(hiddenSky) * perRay);
+  result.rays = count + horizon.rays;
   return result;
 }
 } // namespace terralux

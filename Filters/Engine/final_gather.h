@@ -11,6 +11,7 @@
 namespace terralux
 {
 class HElement;
+class HorizonSky;
 class OpenSky;
 class PolygonElement;
 class TerrainPatch;
@@ -62,6 +63,9 @@ public:
   GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
     double directIrradiance, bool surfacesSend = true) const;
   void setSky(const OpenSky* sky) { this->Sky = sky; }
+  /// With horizons (a scene that is a height field), the sky the scene hides comes from
+  /// the point's horizon instead of the rays, which then gather surfaces alone.
+  void setHorizons(const HorizonSky* horizons) { this->Horizons = horizons; }
   /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
   /// at every hit; more (the sun positions of a day or a year, summed in one solve)
   /// would multiply the gather's rays, so a hit then takes one sun, chosen in
@@ -83,6 +87,7 @@ private:
   const std::vector<TerrainPatch*>& Terrains;
   const std::vector<HElement*>& Suns;
   const OpenSky* Sky = nullptr;
+  const HorizonSky* Horizons = nullptr;
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };
 

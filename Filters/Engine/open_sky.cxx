@@ -156,6 +156,20 @@ void OpenSky::irradiance(const Vec3& n, Spectrum& irradiance, double& projectedS
   projectedSolidAngle = values[maxBands];
 }
 
+int OpenSky::cellsPerSide() const
+{
+  return SkyHierarchy::cellsPerSide(this->Sky.finestLevel());
+}
+
+Spectrum OpenSky::cellRadiance(int iu, int iv) const
+{
+  Spectrum result{};
+  const SkyPatch cell{ this->Sky.finestLevel(), iu, iv };
+  for (int band = 0; band < maxBands; ++band)
+    result[band] = this->Sky.radiance(cell, this->Sky.bands() == 1 ? 0 : std::min(band, this->Sky.bands() - 1));
+  return result;
+}
+
 Spectrum OpenSky::radiance(const Vec3& d) const
 {
   Spectrum result{};
@@ -166,11 +180,8 @@ Spectrum OpenSky::radiance(const Vec3& d) const
   double v = std::atan2(-d.x, -d.y);
   if (v < 0.0)
     v += 2.0 * pi;
-  const int level = this->Sky.finestLevel(), side = SkyHierarchy::cellsPerSide(level);
-  const SkyPatch cell{ level, std::min(side - 1, static_cast<int>(u / (0.5 * pi) * side)),
-    std::min(side - 1, static_cast<int>(v / (2.0 * pi) * side)) };
-  for (int band = 0; band < maxBands; ++band)
-    result[band] = this->Sky.radiance(cell, this->Sky.bands() == 1 ? 0 : std::min(band, this->Sky.bands() - 1));
-  return result;
+  const int side = this->cellsPerSide();
+  return this->cellRadiance(
+    std::min(side - 1, static_cast<int>(u / (0.5 * pi) * side)), std::min(side - 1, static_cast<int>(v / (2.0 * pi) * side)));
 }
 } // namespace terralux

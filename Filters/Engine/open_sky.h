@@ -35,6 +35,12 @@ public:
   void tabulate(int side);
   /// Radiance (W/m^2/sr) of the finest sky cell holding unit direction d; 0 below the horizon.
   Spectrum radiance(const Vec3& d) const;
+  /// Cells of the finest sky level across each of its parameters: altitude u in
+  /// [0, pi / 2] and azimuth v (west from south) in [0, 2 pi), so that radiance() is
+  /// constant over cells of (pi / 2) / cellsPerSide() by 2 pi / cellsPerSide().
+  int cellsPerSide() const;
+  /// Radiance (W/m^2/sr) of finest cell (iu, iv), iu from the horizon, iv from the south.
+  Spectrum cellRadiance(int iu, int iv) const;
 
 private:
   void exactIrradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const;

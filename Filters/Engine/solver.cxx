@@ -5,6 +5,7 @@
 #include "cluster.h"
 #include "error.h"
 #include "final_gather.h"
+#include "horizon_sky.h"
 #include "open_sky.h"
 #include "link_transport.h"
 #include "polygon_element.h"
@@ -96,6 +97,8 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
   for (const TerrainGrid* terrain : scene.terrains)
     this->PointCount += static_cast<std::size_t>(terrain->postsX()) * terrain->postsY();
   this->Gather = std::make_unique<FinalGather>(*this->Rays, this->Roots, this->TerrainRoots, this->Suns);
+  this->HeightField = scene.polygons.empty() &&
+    std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
   this->Stats.secondsVisibilityBuild = secondsSince(start);
 }
 
@@ -120,6 +123,10 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->Sky = sky;
   this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
   this->Gather->setSky(this->SkyAtPoints.get());
+  this->Horizons = sky && this->HeightField && this->Options.skyFromHorizons
+    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints)
+    : nullptr;
+  this->Gather->setHorizons(this->Horizons.get());
   this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
 }
 

@@ -17,6 +17,7 @@ namespace terralux
 {
 class Cluster;
 class FinalGather;
+class HorizonSky;
 class OpenSky;
 class PolygonElement;
 class SkyHierarchy;
@@ -43,6 +44,10 @@ struct RadiosityOptions
   /// gatherSamples 0 re-evaluates the links that reach the point's leaf instead.
   int gatherSamples = 1024;
   double gatherError = 0.003;
+  /// In a scene that is a height field (terrains whose cells face up, no polygons), the
+  /// sky hidden from a point comes from its horizon (HorizonSky) instead of the
+  /// gather's rays: no sampling noise in the sky.
+  bool skyFromHorizons = true;
 };
 
 struct RadiosityStatistics
@@ -161,6 +166,8 @@ private:
   std::unique_ptr<Visibility> Rays;
   std::unique_ptr<FinalGather> Gather;
   std::unique_ptr<OpenSky> SkyAtPoints;
+  std::unique_ptr<HorizonSky> Horizons;
+  bool HeightField = false; // terrains facing up and nothing else: horizons hold
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on

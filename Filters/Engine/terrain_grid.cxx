@@ -3,9 +3,11 @@
 #include "error.h"
 
 #include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -95,6 +97,19 @@ Vec3 TerrainGrid::cellAreaVector(int i, int j) const
 {
   const auto cell = this->cellTriangles(i, j);
   return areaVector(cell[0]) + areaVector(cell[1]);
+}
+
+bool TerrainGrid::facesUp() const
+{
+  std::atomic<bool> up{ true };
+  tbb::parallel_for(0, this->cellsY(), [&](int j) {
+    for (int i = 0; i < this->cellsX() && up.load(std::memory_order_relaxed); ++i)
+      if (this->cellValid(i, j))
+        for (const Triangle& t : this->cellTriangles(i, j))
+          if (!(areaVector(t).z > 0.0))
+            up = false;
+  });
+  return up;
 }
 
 TerrainRangeSummary TerrainGrid::summarize(int i0, int j0, int i1, int j1) const

@@ -81,6 +81,9 @@ public:
   /// their cross product. Where a neighbour is missing (border, no data) the post's
   /// area-weighted normal instead.
   Vec3 hornNormal(int i, int j) const;
+  /// True when every triangle of the valid cells faces up (+z): the surface is then a
+  /// height field over the ground plane, as a DEM is, and not a folded grid.
+  bool facesUp() const;
   /// True when post (i, j) is a corner of a valid cell.
   bool postUsed(int i, int j) const;
 

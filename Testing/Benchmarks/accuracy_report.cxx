@@ -1,7 +1,8 @@
 // The accuracy report's worker: one scene, against the independent reference.
 //   accuracy_report SCENE OUTDIR reference [SAMPLES]   compute OUTDIR/SCENE.reference
 //   accuracy_report SCENE OUTDIR solve METHOD TOLERANCE  one solve, one JSON line
-// METHOD: points (EvaluateAtPoints on), averaged (off), triangles (terrain as two
+// METHOD: points (EvaluateAtPoints on), rays (on, with SkyFromHorizons off: the sky's
+// hidden part from the gather's rays), averaged (off), triangles (terrain as two
 // triangles per cell, at points). The JSON line holds wall time, peak memory, elements,
 // links, rays, the floor (one occlusion ray per point toward the sun) and, per component
 // (sun, sky, reflected, global), RMS, 95th percentile, maximum and bias of the error over
@@ -306,6 +307,7 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     radiosity->SetEmissionArrayName(input.emissionArray);
   radiosity->SetErrorTolerance(tolerance);
   radiosity->SetEvaluateAtPoints(method != "averaged");
+  radiosity->SetSkyFromHorizons(method != "rays");
   radiosity->SetUseTerrainHierarchy(method != "triangles");
   const auto start = std::chrono::steady_clock::now();
   radiosity->Update();
@@ -402,7 +404,7 @@ int main(int argc, char* argv[])
   if (argc < 4)
   {
     std::cerr << "usage: accuracy_report SCENE OUTDIR reference [SAMPLES]\n"
-                 "       accuracy_report SCENE OUTDIR solve points|averaged|triangles TOLERANCE\n";
+                 "       accuracy_report SCENE OUTDIR solve points|rays|averaged|triangles TOLERANCE\n";
     return 2;
   }
   try

@@ -5,7 +5,7 @@
 # terrains; each solve in its own process so its peak memory is its own.
 # Writes OUT_DIR/report.json, report.md and the plots (accuracy_report.py).
 # Usage: Testing/Benchmarks/run_accuracy_report.sh [BUILD_DIR] [OUT_DIR] [SCENES...]
-#   TERRALUX_REFERENCE_SAMPLES  directions per point for the reference (default 4096)
+#   TERRALUX_REFERENCE_SAMPLES  directions per point for the reference (default 32768)
 set -euo pipefail
 repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="${1:-${repo_dir}/build}"
@@ -13,7 +13,7 @@ out_dir="${2:-${build_dir}/accuracy}"
 shift $(( $# > 2 ? 2 : $# ))
 scenes=("$@")
 [ "${#scenes[@]}" -gt 0 ] || scenes=(olinda fractal crater canyon box house-sky house-sun olinda-sky olinda-black)
-samples="${TERRALUX_REFERENCE_SAMPLES:-4096}"
+samples="${TERRALUX_REFERENCE_SAMPLES:-32768}"
 cmake --build "${build_dir}" --target accuracy_report >/dev/null
 export TERRALUX_DATA_DIR="${repo_dir}/Testing/Data/External"
 mkdir -p "${out_dir}"
@@ -23,7 +23,8 @@ for scene in "${scenes[@]}"; do
   echo "== ${scene}: reference (${samples} directions per point)"
   "${build_dir}/bin/accuracy_report" "${scene}" "${out_dir}" reference "${samples}" | tee -a "${runs}"
   methods=(points averaged)
-  case "${scene}" in olinda|fractal|crater) methods+=(triangles) ;; esac
+  case "${scene}" in olinda|fractal|crater) methods+=(rays triangles) ;; esac
+  case "${scene}" in olinda-sky|olinda-black) methods+=(rays) ;; esac
   for method in "${methods[@]}"; do
     for tolerance in 3e-2 1e-2 3e-3 1e-3 3e-4 1e-4; do
       "${build_dir}/bin/accuracy_report" "${scene}" "${out_dir}" solve "${method}" "${tolerance}" 2>/dev/null \

@@ -1,0 +1,207 @@
+#include "horizon_sky.h"
+
+#include "angles.h"
+#include "open_sky.h"
+#include "sampling.h"
+#include "visibility.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+// Directions are d(u, phi) = cos u (cos phi, sin phi, 0) + sin u (0, 0, 1), u the
+// elevation. Toward a plane of unit normal n, n . d = cos u (nx cos phi + ny sin phi) +
+// sin u nz, so the projected solid angle of the sky between elevations u0, u1 and
+// azimuths phi0, phi1, the integral of (n . d) cos u du dphi, separates:
+//   [across(phi1) - across(phi0)] [along(u1) - along(u0)] + nz (phi1 - phi0) [up(u1) - up(u0)]
+// with across = nx sin phi - ny cos phi, along = u / 2 + sin u cos u / 2 (of cos^2 u) and
+// up = sin^2 u / 2 (of sin u cos u). The sines and cosines of the sky's cell boundaries
+// and of the sectors' pieces are tabulated once: they are most of the work otherwise.
+namespace terralux
+{
+HorizonSky::ElevationTerms HorizonSky::elevationTerms(double u)
+{
+  const double s = std::sin(u), c = std::cos(u);
+  return { 0.5 * u + 0.5 * s * c, 0.5 * s * s };
+}
+
+HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky)
+  : Rays(rays)
+  , Sky(sky)
+  , Side(sky.cellsPerSide())
+{
+  this->CellHeight = 0.5 * pi / this->Side;
+  this->CellWidth = 2.0 * pi / this->Side;
+  // Azimuth cell boundaries sit at CellStart + m CellWidth (the sky's azimuth v runs
+  // west from south: v = 3 pi / 2 - phi); the cell between boundaries m and m + 1 has
+  // v index FirstColumn - m - 1 (mod Side).
+  this->CellStart = std::fmod(1.5 * pi, this->CellWidth);
+  this->FirstColumn = static_cast<int>(std::lround((1.5 * pi - this->CellStart) / this->CellWidth));
+  for (int k = 0; k <= this->Side; ++k)
+    this->Rows.push_back(elevationTerms(k * this->CellHeight));
+  for (int m = 0; m < this->Side; ++m)
+  {
+    const double phi = this->CellStart + m * this->CellWidth;
+    this->ColumnBoundaries.push_back({ std::sin(phi), std::cos(phi) });
+  }
+  const double piece = 2.0 * pi / (sectors * piecesPerSector);
+  for (int p = 0; p <= sectors * piecesPerSector; ++p)
+  {
+    this->PieceBoundaries.push_back({ std::sin(p * piece), std::cos(p * piece) });
+    this->PieceMiddles.push_back({ std::sin((p + 0.5) * piece), std::cos((p + 0.5) * piece) });
+  }
+}
+
+HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed) const
+{
+  HiddenSky result;
+  const double halfPi = 0.5 * pi, sector = 2.0 * pi / sectors, piece = sector / piecesPerSector;
+  // Evenly spaced azimuths, turned by a random angle per point so that neighbouring
+  // posts' small errors do not line up.
+  const double turn = sector * SampleGenerator(seed).uniform();
+  const SinCos turned{ std::sin(turn), std::cos(turn) };
+  auto rotate = [&](const SinCos& a) {
+    return SinCos{ turned.sin * a.cos + turned.cos * a.sin, turned.cos * a.cos - turned.sin * a.sin };
+  };
+  // The lower bound of the hidden sky toward an azimuth: below the plane's own horizon
+  // the plane receives nothing, below the world's the sky sends nothing.
+  auto lowerAt = [&](const SinCos& a) {
+    const double toward = normal.x * a.cos + normal.y * a.sin;
+    return toward >= 0.0 && normal.z > 0.0 ? 0.0 : std::max(0.0, std::atan2(-toward, normal.z));
+  };
+
+  // Each sampled azimuth's horizon lies between the highest elevation found blocked and
+  // the lowest found open (both the lower bound where that is open).
+  struct Horizon
+  {
+    double blocked, open;
+  };
+  std::array<Horizon, sectors> horizons;
+  // The search starts at the previous azimuth's horizon: neighbouring azimuths have
+  // similar horizons, so a few rays bracket the new one.
+  double previous = -1.0;
+  for (int k = 0; k < sectors; ++k)
+  {
+    const SinCos azimuth = rotate(this->PieceBoundaries[k * piecesPerSector]);
+    const double lower = lowerAt(azimuth);
+    Horizon& horizon = horizons[k];
+    horizon = { lower, lower };
+    if (!(lower < halfPi - 1e-9))
+      continue;
+    auto occluded = [&](double u) {
+      ++result.rays;
+      const double c = std::cos(u);
+      return this->Rays.occludedToward(point, normal, Vec3(c * azimuth.cos, c * azimuth.sin, std::sin(u)));
+    };
+    const double hint = previous;
+    previous = lower;
+    if (!occluded(lower + 1e-4))
+      continue; // open down to the lower bound
+    double blocked = lower, open = halfPi;
+    if (hint > blocked + 1e-3 && hint < open)
+      (occluded(hint) ? blocked : open) = hint;
+    // Still no upper bracket: upward in doubling steps (most horizons are low).
+    if (open == halfPi)
+      for (double step = 2.0 * degree; blocked + step < open; step *= 2.0)
+      {
+        if (!occluded(blocked + step))
+        {
+          open = blocked + step;
+          break;
+        }
+        blocked += step;
+      }
+    // Bisection until the band left holds at most bandTolerance of the sector's share
+    // of the whole sky's projected solid angle (pi / sectors): bands near the plane's
+    // own horizon, where the cosine vanishes, end early.
+    const double across = normal.x * azimuth.cos + normal.y * azimuth.sin;
+    auto band = [&](double u0, double u1) {
+      const ElevationTerms low = elevationTerms(u0), high = elevationTerms(u1);
+      return sector * (across * (high.along - low.along) + normal.z * (high.up - low.up));
+    };
+    const double bandLimit = bandTolerance * pi / sectors;
+    for (int step = 0; step < maximumBisections && band(blocked, open) > bandLimit; ++step)
+    {
+      const double middle = 0.5 * (blocked + open);
+      (occluded(middle) ? blocked : open) = middle;
+    }
+    horizon = { blocked, open };
+    previous = 0.5 * (blocked + open);
+  }
+
+  // The sky of piece p between elevations u0 and u1 taken as hidden, with weight
+  // `share`, cell by cell of the sky (parts below the plane count nothing).
+  struct Column
+  {
+    double across, width;
+    int iv;
+  };
+  auto hide = [&](int p, double u0, double u1, double share) {
+    if (!(u0 < u1))
+      return;
+    const double phi0 = turn + p * piece, phi1 = phi0 + piece;
+    const SinCos start = rotate(this->PieceBoundaries[p]), end = rotate(this->PieceBoundaries[p + 1]);
+    std::array<Column, 16> columns;
+    int count = 0;
+    int m = static_cast<int>(std::floor((phi0 - this->CellStart) / this->CellWidth)) + 1;
+    double b = phi0;
+    SinCos at = start;
+    while (b < phi1 && count < static_cast<int>(columns.size()))
+    {
+      const double boundary = this->CellStart + m * this->CellWidth;
+      const bool last = boundary >= phi1;
+      const SinCos next = last ? end : this->ColumnBoundaries[((m % this->Side) + this->Side) % this->Side];
+      const double bEnd = last ? phi1 : boundary;
+      const int iv = (((this->FirstColumn - m) % this->Side) + this->Side) % this->Side;
+      columns[count++] = { normal.x * (next.sin - at.sin) - normal.y * (next.cos - at.cos), bEnd - b, iv };
+      b = bEnd;
+      at = next;
+      ++m;
+    }
+    int row = std::min(this->Side - 1, static_cast<int>(u0 / this->CellHeight));
+    ElevationTerms low = elevationTerms(u0);
+    for (double a = u0; a < u1; ++row)
+    {
+      const double boundary = (row + 1) * this->CellHeight;
+      const bool last = boundary >= u1 || row + 1 >= this->Side;
+      const ElevationTerms high = last ? elevationTerms(u1) : this->Rows[row + 1];
+      for (int c = 0; c < count; ++c)
+      {
+        const Column& column = columns[c];
+        const double weight = share *
+          std::max(0.0, column.across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
+        if (!(weight > 0.0))
+          continue;
+        const Spectrum l = this->Sky.cellRadiance(row, column.iv);
+        result.projectedSolidAngle += weight;
+        for (int band = 0; band < maxBands; ++band)
+          result.irradiance[band] += weight * l[band];
+      }
+      a = last ? u1 : boundary;
+      low = high;
+    }
+  };
+  // Between two sampled azimuths the horizon's bounds are interpolated linearly, over
+  // pieces narrow enough for that to hold (the midpoint rule of a linear horizon).
+  for (int k = 0; k < sectors; ++k)
+  {
+    const Horizon& from = horizons[k];
+    const Horizon& to = horizons[(k + 1) % sectors];
+    if (from.open == from.blocked && to.open == to.blocked)
+      continue; // both azimuths open down to their lower bounds: so is the sky between
+    for (int j = 0; j < piecesPerSector; ++j)
+    {
+      const int p = k * piecesPerSector + j;
+      const double t = (j + 0.5) / piecesPerSector;
+      const double lower = lowerAt(rotate(this->PieceMiddles[p]));
+      const double blocked = std::max(lower, (1.0 - t) * from.blocked + t * to.blocked);
+      const double open = std::max(blocked, (1.0 - t) * from.open + t * to.open);
+      // Below the horizon all is hidden, the band where it lies half (the mean of the
+      // two bounds, whatever the band's shape).
+      hide(p, lower, blocked, 1.0);
+      hide(p, blocked, open, 0.5);
+    }
+  }
+  return result;
+}
+} // namespace terralux
