@@ -2,6 +2,7 @@
 
 #include "angles.h"
 #include "horizon_sky.h"
+#include "sky_importance.h"
 #include "link_transport.h"
 #include "open_sky.h"
 #include "sampling.h"
@@ -36,6 +37,14 @@ FinalGather::FinalGather(const Visibility& rays, const std::vector<PolygonElemen
   , Terrains(terrains)
   , Suns(suns)
 {
+}
+
+FinalGather::~FinalGather() = default;
+
+void FinalGather::setSky(const OpenSky* sky)
+{
+  this->Sky = sky;
+  this->SkySamples = sky ? std::make_unique<SkyImportance>(*sky) : nullptr;
 }
 
 void FinalGather::prepareSuns()
@@ -87,6 +96,72 @@ const PolygonElement* FinalGather::leafAt(const SurfaceHit& hit) const
   return p < this->Polygons.size() && this->Polygons[p] ? this->Polygons[p]->leafHolding(hit.point) : nullptr;
 }
 
+namespace
+{
+// How many stratified rays bring the standard error of their mean below
+// budget.relativeError x `received`, from a pilot's sum and sum of squares (as for
+// independent rays), between budget.minimum and budget.maximum: a whole square of
+// strata, since a partly filled last row would leave a band of directions unsampled.
+int raysNeeded(const GatherBudget& budget, double sum, double sumOfSquares, double received)
+{
+  const double mean = sum / budget.pilot;
+  const double variance = std::max(0.0, sumOfSquares / budget.pilot - mean * mean);
+  const double target = budget.relativeError * std::max(received, 1e-12);
+  const double needed = std::clamp<double>(std::ceil(variance / (target * target)), budget.minimum, budget.maximum);
+  const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
+  return side * side;
+}
+
+bool pilotDecides(const GatherBudget& budget)
+{
+  return budget.pilot > 0 && budget.minimum < budget.maximum;
+}
+} // namespace
+
+Spectrum FinalGather::hiddenSkyByRadiance(const Vec3& point, const Vec3& normal, const GatherBudget& budget,
+  std::uint64_t seed, double received, double& hiddenProjectedSolidAngle, int& rays) const
+{
+  Spectrum hidden{};
+  double sum = 0.0, sumOfSquares = 0.0;
+  auto cast = [&](int count, SampleGenerator& random) {
+    hidden = Spectrum{};
+    hiddenProjectedSolidAngle = sum = sumOfSquares = 0.0;
+    for (int k = 0; k < count; ++k)
+    {
+      double s, t;
+      stratifiedPoint(k, count, random, s, t);
+      SkyImportance::Sample sample;
+      if (!this->SkySamples->sample(s, t, sample))
+        continue;
+      const double cosine = glm::dot(normal, sample.direction);
+      if (!(cosine > 0.0))
+        continue; // behind the plane: nothing to hide, no ray
+      ++rays;
+      if (!this->Rays.occludedToward(point, normal, sample.direction))
+        continue;
+      for (int band = 0; band < maxBands; ++band)
+        hidden[band] += cosine * sample.weight[band];
+      hiddenProjectedSolidAngle += cosine * sample.solidAngleWeight;
+      const double value = cosine * largestBand(sample.weight);
+      sum += value;
+      sumOfSquares += value * value;
+    }
+  };
+  // A pilot of its own sets the count, as for the surfaces' rays (see irradianceAt).
+  SampleGenerator pilotRandom(seed ^ 0x2545F4914F6CDD1Dull), random(seed ^ 0x9E3779B97F4A7C15ull);
+  int count = budget.maximum;
+  if (pilotDecides(budget))
+  {
+    cast(budget.pilot, pilotRandom);
+    count = raysNeeded(budget, sum, sumOfSquares, received);
+  }
+  cast(count, random);
+  for (double& band : hidden)
+    band /= count;
+  hiddenProjectedSolidAngle /= count;
+  return hidden;
+}
+
 GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget,
   std::uint64_t seed, double directIrradiance, bool surfacesSend) const
 {
@@ -95,27 +170,35 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   double openOmega = 0.0;
   if (this->Sky)
     this->Sky->irradiance(normal, open, openOmega);
-  // Over a height field the sky the scene hides comes from the point's horizon, and the
-  // rays only gather what surfaces send.
-  const bool skyByRays = this->Sky && !this->Horizons;
-  HiddenSky horizon;
-  if (this->Sky && this->Horizons)
+  // The sky the scene hides: over a height field from the point's horizon, elsewhere
+  // from rays drawn by the sky's radiance. What is left is the sky the point receives.
+  const bool horizons = this->Sky && this->Horizons;
+  Spectrum hidden{};
+  if (horizons)
   {
-    horizon = this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull);
-    for (int band = 0; band < maxBands; ++band)
-      open[band] = std::max(0.0, open[band] - horizon.irradiance[band]);
+    const HiddenSky horizon = this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull);
+    hidden = horizon.irradiance;
     openOmega = std::max(0.0, openOmega - horizon.projectedSolidAngle);
+    result.rays += horizon.rays;
   }
-  Spectrum hidden{}, surfaces{};
-  int hiddenSky = 0;
-  // Each ray's share of the point's irradiance beyond the open sky (largest band):
-  // what it meets minus the sky it hides; its spread sets how many rays are needed.
-  double sum = 0.0, sumOfSquares = 0.0;
-  // A pilot of budget.pilot rays of their own sets how many rays the point needs
-  // (their standard error, as for independent rays, against the irradiance it
-  // receives); the estimate then comes from that many fresh stratified rays. Rays that
+  else if (this->Sky && this->SkySamples)
+  {
+    double hiddenOmega = 0.0;
+    hidden = this->hiddenSkyByRadiance(
+      point, normal, budget, seed, directIrradiance + largestBand(open), hiddenOmega, result.rays);
+    openOmega = std::max(0.0, openOmega - hiddenOmega);
+  }
+  for (int band = 0; band < maxBands; ++band)
+    result.sky[band] = std::max(0.0, open[band] - hidden[band]);
+
+  // Light from surfaces by cosine-weighted rays.
+  Spectrum surfaces{};
+  // Each ray's share of what surfaces send (largest band); its spread sets how many
+  // rays are needed. A pilot of budget.pilot rays of their own sets how many rays the
+  // point needs; the estimate then comes from that many fresh stratified rays. Rays that
   // decided when to stop would be biased: they stop early where they happened to miss
   // a bright hit.
+  double sum = 0.0, sumOfSquares = 0.0;
   const CosineFrame frame(normal);
   auto cast = [&](int count, SampleGenerator& random)
   {
@@ -123,8 +206,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     // spread over the suns for any count, and unrelated to the rays' strata.
     const double sunStart = this->SunCumulative.empty() ? 0.0 : random.uniform();
     sum = sumOfSquares = 0.0;
-    hidden = surfaces = Spectrum{};
-    hiddenSky = 0;
+    surfaces = Spectrum{};
     for (int k = 0; k < count; ++k)
     {
       double s, t;
@@ -133,63 +215,39 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       SurfaceHit hit;
       if (!this->Rays.firstHit(point, normal, d, hit))
         continue;
-      double value = 0.0;
-      if (skyByRays && d.z > 0.0)
-      {
-        const Spectrum l = this->Sky->radiance(d);
-        for (int band = 0; band < maxBands; ++band)
-          hidden[band] += l[band];
-        ++hiddenSky;
-        value -= pi * largestBand(l);
-      }
-      const PolygonElement* leaf = surfacesSend ? this->leafAt(hit) : nullptr;
-      if (leaf)
-      {
-        // The triangle's own normal, turned to the side its leaf faces; the
-        // back of a one-sided surface sends nothing.
-        const Vec3 front = glm::dot(hit.normal, leaf->normal()) < 0.0 ? -hit.normal : hit.normal;
-        if (glm::dot(front, d) < 0.0)
-        {
-          const double sunSample = std::fmod(sunStart + 0.61803398874989485 * k, 1.0);
-          const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample);
-          for (int band = 0; band < maxBands; ++band)
-            surfaces[band] += b[band];
-          value += largestBand(b);
-        }
-      }
+      const PolygonElement* leaf = this->leafAt(hit);
+      if (!leaf)
+        continue;
+      // The triangle's own normal, turned to the side its leaf faces; the back of a
+      // one-sided surface sends nothing.
+      const Vec3 front = glm::dot(hit.normal, leaf->normal()) < 0.0 ? -hit.normal : hit.normal;
+      if (!(glm::dot(front, d) < 0.0))
+        continue;
+      const double sunSample = std::fmod(sunStart + 0.61803398874989485 * k, 1.0);
+      const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample);
+      for (int band = 0; band < maxBands; ++band)
+        surfaces[band] += b[band];
+      const double value = largestBand(b);
       sum += value;
       sumOfSquares += value * value;
     }
   };
   SampleGenerator pilotRandom(seed ^ 0x5851F42D4C957F2Dull), random(seed);
-  int count = budget.maximum;
-  if (!skyByRays && !surfacesSend)
-    count = 0; // nothing left for rays to find
-  if (count > 0 && budget.pilot > 0 && budget.minimum < budget.maximum)
+  int count = surfacesSend ? budget.maximum : 0;
+  if (count > 0 && pilotDecides(budget))
   {
     cast(budget.pilot, pilotRandom);
-    const double mean = sum / budget.pilot;
-    const double variance = std::max(0.0, sumOfSquares / budget.pilot - mean * mean);
-    const double received = directIrradiance + largestBand(open) + mean;
-    const double target = budget.relativeError * std::max(received, 1e-12);
-    // A whole square of strata: a partly filled last row would leave a band of the
-    // hemisphere unsampled.
-    const double needed =
-      std::clamp<double>(std::ceil(variance / (target * target)), budget.minimum, budget.maximum);
-    const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
-    count = side * side;
+    result.rays += budget.pilot;
+    count = raysNeeded(budget, sum, sumOfSquares, directIrradiance + largestBand(result.sky) + sum / budget.pilot);
   }
   cast(count, random);
   // E = pi x the mean radiance over cosine-weighted directions: the mean radiosity.
   const double perRay = count > 0 ? 1.0 / count : 0.0;
   for (int band = 0; band < maxBands; ++band)
-  {
     result.surfaces[band] = surfaces[band] * perRay;
-    result.sky[band] = std::max(0.0, open[band] - pi * hidden[band] * perRay);
-  }
   if (this->Sky)
-    result.skyViewFactor = std::max(0.0, openOmega / pi - static_cast<double>(hiddenSky) * perRay);
-  result.rays = count + horizon.rays;
+    result.skyViewFactor = openOmega / pi;
+  result.rays += count;
   return result;
 }
 } // namespace terralux

@@ -8,12 +8,15 @@
 
 #include "radiosity_types.h"
 
+#include <memory>
+
 namespace terralux
 {
 class HElement;
 class HorizonSky;
 class OpenSky;
 class PolygonElement;
+class SkyImportance;
 class TerrainPatch;
 class Visibility;
 
@@ -44,6 +47,7 @@ public:
   /// the solver holds them; their leaves' radiosity is read at each gather.
   FinalGather(const Visibility& rays, const std::vector<PolygonElement*>& polygons,
     const std::vector<TerrainPatch*>& terrains, const std::vector<HElement*>& suns);
+  ~FinalGather();
 
   /// Irradiance (W/m^2) at a point with unit normal from the surfaces it sees: the mean
   /// radiosity met by stratified cosine-weighted rays (the fronts of surfaces only: a
@@ -56,15 +60,17 @@ public:
   /// shadow ray (a leaf of several cells of a rough terrain averages slopes the
   /// grazing sun lights very differently).
   ///
-  /// With a sky (setSky), the same rays give the sky at the point as the open sky of its
-  /// plane (exact, OpenSky) minus the sky's radiance toward the rays that meet the
-  /// scene, and the sky view factor likewise. `surfacesSend` false skips what surfaces
-  /// send (every radiosity 0).
+  /// With a sky (setSky), the sky at the point is the open sky of its plane (exact,
+  /// OpenSky) minus what the scene hides: from the point's horizon (setHorizons), or
+  /// from occlusion rays drawn by the sky's radiance with a pilot of their own
+  /// (SkyImportance), which also give the sky view factor. `surfacesSend` false skips
+  /// what surfaces send (every radiosity 0): no cosine-weighted rays then.
   GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
     double directIrradiance, bool surfacesSend = true) const;
-  void setSky(const OpenSky* sky) { this->Sky = sky; }
+  void setSky(const OpenSky* sky);
   /// With horizons (a scene that is a height field), the sky the scene hides comes from
   /// the point's horizon instead of the rays, which then gather surfaces alone.
+  /// Without them, the hidden sky comes from occlusion rays drawn by the sky's radiance.
   void setHorizons(const HorizonSky* horizons) { this->Horizons = horizons; }
   /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
   /// at every hit; more (the sun positions of a day or a year, summed in one solve)
@@ -82,12 +88,19 @@ public:
     const PolygonElement& leaf, const struct SurfaceHit& hit, const Vec3& front, double sunSample) const;
 
 private:
+  /// The sky a point does not see, by occlusion rays drawn in proportion to the sky's
+  /// radiance (each carries the same share of it), as many as a pilot says bring the
+  /// standard error below budget.relativeError x `received`; counts the rays.
+  Spectrum hiddenSkyByRadiance(const Vec3& point, const Vec3& normal, const GatherBudget& budget,
+    std::uint64_t seed, double received, double& hiddenProjectedSolidAngle, int& rays) const;
+
   const Visibility& Rays;
   const std::vector<PolygonElement*>& Polygons;
   const std::vector<TerrainPatch*>& Terrains;
   const std::vector<HElement*>& Suns;
   const OpenSky* Sky = nullptr;
   const HorizonSky* Horizons = nullptr;
+  std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };
 

@@ -94,7 +94,9 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // A leaf the solution found open (nearly all the sky its plane could see, next to
     // no light from surfaces) needs no pilot: its points take the fewest rays. The
     // decision comes from the solution, not from rays the estimate uses, so it keeps
-    // the estimate unbiased (a point that does see something gets those few rays).
+    // the estimate unbiased. A leaf's few links can miss a house that hides the bright
+    // sky around the sun from its posts; rays drawn by the sky's radiance still find it
+    // (each carries the same share of the sky, so 64 of them miss no bright part).
     if (leafLooksOpen(leaf))
       budget.pilot = 0, budget.maximum = budget.minimum;
     const Spectrum& sun = irradiance[SunLight];

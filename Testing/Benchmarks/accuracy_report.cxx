@@ -308,6 +308,8 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   radiosity->SetErrorTolerance(tolerance);
   radiosity->SetEvaluateAtPoints(method != "averaged");
   radiosity->SetSkyFromHorizons(method != "rays");
+  if (const char* e = std::getenv("TLX_GATHER_ERROR")) radiosity->SetGatherError(std::atof(e));
+  if (const char* e = std::getenv("TLX_GATHER_RAYS")) radiosity->SetMaximumGatherRays(std::atoi(e));
   radiosity->SetUseTerrainHierarchy(method != "triangles");
   const auto start = std::chrono::steady_clock::now();
   radiosity->Update();

@@ -5,7 +5,9 @@
 #include "open_sky.h"
 #include "polygon_element.h"
 #include "radiosity_scenes.h"
+#include "sampling.h"
 #include "sky_hierarchy.h"
+#include "sky_importance.h"
 #include "solver.h"
 #include "visibility.h"
 
@@ -159,8 +161,9 @@ TEST(FinalGather, ClosedBoxReadsItsRadiosityAtCornersEdgesAndFaces)
 
 TEST(FinalGather, OpenGroundTakesTheFewestRaysAndThePitMore)
 {
-  // Work follows the scene: a post that sees nothing but sky needs only the pilot's
-  // verdict and the fewest rays; the floor of a pit needs many.
+  // Work follows the scene: a post that sees nothing but sky needs only the pilots'
+  // verdicts (of the sky's rays and of the surfaces' rays) and the fewest rays of each;
+  // the floor of a pit needs many more, and its sky there is the open cone's.
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(40.0 * degree, 2.0)), 100.0, 6);
   const OpenSky open(sky);
   RadiosityScene scene;
@@ -173,11 +176,11 @@ TEST(FinalGather, OpenGroundTakesTheFewestRaysAndThePitMore)
   gather.setSky(&open);
   const GatherBudget budget;
   const GatheredLight high = gather.irradianceAt(Vec3(5, 5, 0.0), Vec3(0, 0, 1), budget, 1, 0.0);
-  EXPECT_EQ(high.rays, budget.minimum);
+  EXPECT_EQ(high.rays, 2 * (budget.pilot + budget.minimum));
   EXPECT_NEAR(high.sky[0], 100.0, 0.1);
   EXPECT_DOUBLE_EQ(high.skyViewFactor, 1.0);
   const GatheredLight floor = gather.irradianceAt(Vec3(0, 0, -1), Vec3(0, 0, 1), budget, 1, 0.0);
-  EXPECT_GT(floor.rays, 4 * budget.minimum);
+  EXPECT_GT(floor.rays, 4 * high.rays);
   // The pit's opening is a cone of half-angle 45 deg: sky view factor sin^2 45 deg.
   EXPECT_NEAR(floor.skyViewFactor, 0.5, 0.02);
 }
@@ -185,7 +188,8 @@ TEST(FinalGather, OpenGroundTakesTheFewestRaysAndThePitMore)
 TEST(FinalGather, PointsOfLeavesTheSolutionFoundOpenTakeNoPilot)
 {
   // Open flat ground under a clear sky: the solved leaf sees all the sky its plane can,
-  // so its points take the fewest rays (64) and no pilot; the sky there is still exact.
+  // so its points take the fewest rays (64 drawn by the sky's radiance, 64 for the
+  // surfaces) and no pilot; the sky there is still exact.
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(40.0 * degree, 2.0)), 100.0, 6);
   RadiosityScene scene;
   addPolygon(scene, { { -10, -10, 0 }, { 10, -10, 0 }, { 10, 10, 0 }, { -10, 10, 0 } }, 0.2);
@@ -196,7 +200,7 @@ TEST(FinalGather, PointsOfLeavesTheSolutionFoundOpenTakeNoPilot)
   const Vec3 p(1.0, 2.0, 0.0);
   const std::uint64_t before = solver.raysCast();
   const PointIrradiance open = solver.irradianceAt(*ground.leafHolding(p), p);
-  EXPECT_EQ(solver.raysCast() - before, 64u);
+  EXPECT_EQ(solver.raysCast() - before, 128u);
   EXPECT_NEAR(open.irradiance[SkyLight][0], 100.0, 0.1);
   // Beside a wall the leaf is not open: a pilot and more rays.
   RadiosityScene walled;
@@ -208,5 +212,79 @@ TEST(FinalGather, PointsOfLeavesTheSolutionFoundOpenTakeNoPilot)
   const PolygonElement& floor = *beside.polygonRoots()[0];
   const std::uint64_t start = beside.raysCast();
   beside.irradianceAt(*floor.leafHolding(q), q);
-  EXPECT_GT(beside.raysCast() - start, 128u);
+  EXPECT_GT(beside.raysCast() - start, 256u);
+}
+
+TEST(SkyImportance, RaysDrawnByRadianceIntegrateTheOpenSky)
+{
+  // Each direction carries radiance / density: over an open plane their mean, weighted
+  // by the cosine, is the plane's irradiance, for any normal.
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(70.0 * degree, 1.0)), 100.0, 6);
+  const OpenSky open(sky);
+  const SkyImportance samples(open);
+  for (const Vec3& n : { Vec3(0, 0, 1), glm::normalize(Vec3(0.5, -0.3, 0.8)) })
+  {
+    constexpr int side = 128;
+    double sum = 0.0;
+    SampleGenerator random(5);
+    for (int k = 0; k < side * side; ++k)
+    {
+      double s, t;
+      stratifiedPoint(k, side * side, random, s, t);
+      SkyImportance::Sample sample;
+      ASSERT_TRUE(samples.sample(s, t, sample));
+      EXPECT_NEAR(glm::length(sample.direction), 1.0, 1e-12);
+      ASSERT_GE(sample.direction.z, 0.0);
+      sum += sample.weight[0] * std::max(0.0, glm::dot(n, sample.direction));
+    }
+    Spectrum e;
+    double omega = 0.0;
+    open.irradiance(n, e, omega);
+    EXPECT_NEAR(sum / (side * side) / e[0], 1.0, 0.005) << n.x;
+  }
+}
+
+TEST(FinalGather, AWallHidingTheBrightSkyNearTheSunIsFound)
+{
+  // North of a wall 3 m tall, a low sun behind it: the wall hides the bright sky around
+  // the sun. Cosine-weighted rays saw it with one ray of 64 or none (posts off by 10 %
+  // either way); rays drawn by the sky's radiance find it within 1 % of the open sky.
+  RadiosityScene scene;
+  addWallOnGround(scene, 20.0, 40.0, 3.0, 0.0);
+  const Visibility rays(scene);
+  const std::vector<PolygonElement*> none;
+  const std::vector<TerrainPatch*> noTerrain;
+  const std::vector<HElement*> noSun;
+  FinalGather gather(rays, none, noTerrain, noSun);
+  for (double azimuth : { 0.0, pi })
+  {
+    const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(70.0 * degree, azimuth)), 100.0, 7);
+    const OpenSky open(sky);
+    gather.setSky(&open);
+    const Vec3 n(0, 0, 1);
+    for (const Vec3& p : { Vec3(0.0, 2.0, 0.0), Vec3(4.0, 4.0, 0.0), Vec3(-3.0, 1.0, 0.0) })
+    {
+      const Vec3 from = p + 3.0 * rays.offset() * n;
+      Spectrum plane;
+      double omega = 0.0;
+      open.irradiance(n, plane, omega);
+      // By brute force: 65,536 stratified cosine-weighted rays.
+      constexpr int side = 256;
+      const CosineFrame frame(n);
+      SampleGenerator random(3);
+      double hidden = 0.0;
+      for (int k = 0; k < side * side; ++k)
+      {
+        double s, t;
+        stratifiedPoint(k, side * side, random, s, t);
+        const Vec3 d = frame.direction(s, t);
+        if (rays.occludedToward(from, n, d))
+          hidden += pi * open.radiance(d)[0];
+      }
+      const double expected = plane[0] - hidden / (side * side);
+      EXPECT_GT(plane[0] - expected, 0.05 * plane[0]); // the wall hides a good part of it
+      const GatheredLight light = gather.irradianceAt(from, n, GatherBudget{}, 17, 0.0);
+      EXPECT_NEAR(light.sky[0], expected, 0.01 * plane[0]) << azimuth << " " << p.x << " " << p.y;
+    }
+  }
 }
