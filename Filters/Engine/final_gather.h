@@ -38,6 +38,8 @@ struct GatherBudget
   int minimum = 64;
   int maximum = 1024;
   double relativeError = 0.003;
+  /// Horizons at half the azimuths (a point the solution found open).
+  bool coarseHorizon = false;
 };
 
 class FinalGather

@@ -39,6 +39,8 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky)
   this->FirstColumn = static_cast<int>(std::lround((1.5 * pi - this->CellStart) / this->CellWidth));
   for (int k = 0; k <= this->Side; ++k)
     this->Rows.push_back(elevationTerms(k * this->CellHeight));
+  for (int k = 0; k <= fineTerms; ++k)
+    this->Terms.push_back(elevationTerms(k * 0.5 * pi / fineTerms));
   for (int m = 0; m < this->Side; ++m)
   {
     const double phi = this->CellStart + m * this->CellWidth;
@@ -52,10 +54,24 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky)
   }
 }
 
-HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed) const
+HorizonSky::ElevationTerms HorizonSky::termsAt(double u) const
+{
+  // Linear between the table's entries: within 1e-7 of the exact terms (they are
+  // smooth, their second derivatives at most 1), for a lookup instead of a sine.
+  const double x = std::clamp(u / (0.5 * pi) * fineTerms, 0.0, static_cast<double>(fineTerms));
+  const int k = std::min(static_cast<int>(x), fineTerms - 1);
+  const double f = x - k;
+  const ElevationTerms& a = this->Terms[k];
+  const ElevationTerms& b = this->Terms[k + 1];
+  return { a.along + f * (b.along - a.along), a.up + f * (b.up - a.up) };
+}
+
+HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed, bool coarse) const
 {
   HiddenSky result;
-  const double halfPi = 0.5 * pi, sector = 2.0 * pi / sectors, piece = sector / piecesPerSector;
+  // Coarse: every other azimuth of the tables, each spanning twice the pieces.
+  const int stride = coarse ? 2 : 1, azimuths = sectors / stride, pieces = piecesPerSector * stride;
+  const double halfPi = 0.5 * pi, sector = 2.0 * pi / azimuths, piece = sector / pieces;
   // Evenly spaced azimuths, turned by a random angle per point so that neighbouring
   // posts' small errors do not line up.
   const double turn = sector * SampleGenerator(seed).uniform();
@@ -76,54 +92,62 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
   {
     double blocked, open;
   };
-  std::array<Horizon, sectors> horizons;
+  std::array<Horizon, sectors> horizons; // the first `azimuths` used
   // The search starts at the previous azimuth's horizon: neighbouring azimuths have
   // similar horizons, so a few rays bracket the new one.
   double previous = -1.0;
-  for (int k = 0; k < sectors; ++k)
+  for (int k = 0; k < azimuths; ++k)
   {
-    const SinCos azimuth = rotate(this->PieceBoundaries[k * piecesPerSector]);
+    const SinCos azimuth = rotate(this->PieceBoundaries[k * pieces]);
     const double lower = lowerAt(azimuth);
     Horizon& horizon = horizons[k];
     horizon = { lower, lower };
     if (!(lower < halfPi - 1e-9))
       continue;
-    auto occluded = [&](double u) {
+    // A ray toward elevation u; `terms` receives the elevation's terms of
+    // projectedBand from the same sine and cosine.
+    auto occluded = [&](double u, ElevationTerms& terms) {
       ++result.rays;
-      const double c = std::cos(u);
-      return this->Rays.occludedToward(point, normal, Vec3(c * azimuth.cos, c * azimuth.sin, std::sin(u)));
+      const double s = std::sin(u), c = std::cos(u);
+      terms = { 0.5 * u + 0.5 * s * c, 0.5 * s * s };
+      return this->Rays.occludedToward(point, normal, Vec3(c * azimuth.cos, c * azimuth.sin, s));
     };
     const double hint = previous;
     previous = lower;
-    if (!occluded(lower + 1e-4))
+    ElevationTerms blockedTerms{}, openTerms{}, terms{};
+    if (!occluded(lower + 1e-4, terms))
       continue; // open down to the lower bound
     double blocked = lower, open = halfPi;
     if (hint > blocked + 1e-3 && hint < open)
-      (occluded(hint) ? blocked : open) = hint;
+      (occluded(hint, terms) ? blocked : open) = hint;
     // Still no upper bracket: upward in doubling steps (most horizons are low).
     if (open == halfPi)
       for (double step = 2.0 * degree; blocked + step < open; step *= 2.0)
       {
-        if (!occluded(blocked + step))
+        if (!occluded(blocked + step, terms))
         {
           open = blocked + step;
           break;
         }
         blocked += step;
       }
+    blockedTerms = this->termsAt(blocked);
+    openTerms = this->termsAt(open);
     // Bisection until the band left holds at most bandTolerance of the sector's share
-    // of the whole sky's projected solid angle (pi / sectors): bands near the plane's
+    // of the whole sky's projected solid angle (pi / azimuths): bands near the plane's
     // own horizon, where the cosine vanishes, end early.
     const double across = normal.x * azimuth.cos + normal.y * azimuth.sin;
-    auto band = [&](double u0, double u1) {
-      const ElevationTerms low = elevationTerms(u0), high = elevationTerms(u1);
-      return sector * (across * (high.along - low.along) + normal.z * (high.up - low.up));
-    };
-    const double bandLimit = bandTolerance * pi / sectors;
-    for (int step = 0; step < maximumBisections && band(blocked, open) > bandLimit; ++step)
+    const double bandLimit = bandTolerance * pi / azimuths;
+    for (int step = 0; step < maximumBisections &&
+         sector * (across * (openTerms.along - blockedTerms.along) + normal.z * (openTerms.up - blockedTerms.up)) >
+           bandLimit;
+         ++step)
     {
       const double middle = 0.5 * (blocked + open);
-      (occluded(middle) ? blocked : open) = middle;
+      if (occluded(middle, terms))
+        blocked = middle, blockedTerms = terms;
+      else
+        open = middle, openTerms = terms;
     }
     horizon = { blocked, open };
     previous = 0.5 * (blocked + open);
@@ -159,12 +183,12 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
       ++m;
     }
     int row = std::min(this->Side - 1, static_cast<int>(u0 / this->CellHeight));
-    ElevationTerms low = elevationTerms(u0);
+    ElevationTerms low = this->termsAt(u0);
     for (double a = u0; a < u1; ++row)
     {
       const double boundary = (row + 1) * this->CellHeight;
       const bool last = boundary >= u1 || row + 1 >= this->Side;
-      const ElevationTerms high = last ? elevationTerms(u1) : this->Rows[row + 1];
+      const ElevationTerms high = last ? this->termsAt(u1) : this->Rows[row + 1];
       for (int c = 0; c < count; ++c)
       {
         const Column& column = columns[c];
@@ -172,7 +196,7 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
           std::max(0.0, column.across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
         if (!(weight > 0.0))
           continue;
-        const Spectrum l = this->Sky.cellRadiance(row, column.iv);
+        const Spectrum& l = this->Sky.cellRadiance(row, column.iv);
         result.projectedSolidAngle += weight;
         for (int band = 0; band < maxBands; ++band)
           result.irradiance[band] += weight * l[band];
@@ -183,16 +207,16 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
   };
   // Between two sampled azimuths the horizon's bounds are interpolated linearly, over
   // pieces narrow enough for that to hold (the midpoint rule of a linear horizon).
-  for (int k = 0; k < sectors; ++k)
+  for (int k = 0; k < azimuths; ++k)
   {
     const Horizon& from = horizons[k];
-    const Horizon& to = horizons[(k + 1) % sectors];
+    const Horizon& to = horizons[(k + 1) % azimuths];
     if (from.open == from.blocked && to.open == to.blocked)
       continue; // both azimuths open down to their lower bounds: so is the sky between
-    for (int j = 0; j < piecesPerSector; ++j)
+    for (int j = 0; j < pieces; ++j)
     {
-      const int p = k * piecesPerSector + j;
-      const double t = (j + 0.5) / piecesPerSector;
+      const int p = k * pieces + j;
+      const double t = (j + 0.5) / pieces;
       const double lower = lowerAt(rotate(this->PieceMiddles[p]));
       const double blocked = std::max(lower, (1.0 - t) * from.blocked + t * to.blocked);
       const double open = std::max(blocked, (1.0 - t) * from.open + t * to.open);

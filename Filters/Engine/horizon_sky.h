@@ -46,8 +46,10 @@ public:
   HorizonSky(const Visibility& rays, const OpenSky& sky);
 
   /// The sky hidden from a point (rays start there, lifted along the unit normal by
-  /// the visibility's offset) on a plane of unit normal n; `seed` jitters the azimuths.
-  HiddenSky hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed) const;
+  /// the visibility's offset) on a plane of unit normal n; `seed` turns the azimuths.
+  /// `coarse`: half the azimuths, for points the solution found open (little to find,
+  /// so little to miss between them).
+  HiddenSky hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed, bool coarse = false) const;
 
 private:
   struct ElevationTerms
@@ -59,6 +61,8 @@ private:
     double sin, cos;
   };
   static ElevationTerms elevationTerms(double u);
+  ElevationTerms termsAt(double u) const; // from the table Terms
+  static constexpr int fineTerms = 4096;
 
   const Visibility& Rays;
   const OpenSky& Sky;
@@ -68,6 +72,7 @@ private:
   double CellStart = 0.0;   // the first azimuth cell boundary
   int FirstColumn = 0;      // the sky's azimuth index of the cell before CellStart, + 1
   std::vector<ElevationTerms> Rows;          // at each elevation cell boundary
+  std::vector<ElevationTerms> Terms;         // at fineTerms + 1 elevations, 0 to pi / 2
   std::vector<SinCos> ColumnBoundaries;      // at each azimuth cell boundary
   std::vector<SinCos> PieceBoundaries, PieceMiddles; // of the pieces, before a point's turn
 };

@@ -13,6 +13,7 @@ namespace terralux
 OpenSky::OpenSky(const SkyHierarchy& sky)
   : Sky(sky)
   , Deepest(std::min(sky.finestLevel(), 4))
+  , Side(SkyHierarchy::cellsPerSide(sky.finestLevel()))
 {
   for (int level = 0; level <= this->Deepest; ++level)
   {
@@ -47,6 +48,16 @@ OpenSky::OpenSky(const SkyHierarchy& sky)
     this->Levels.push_back(std::move(patches));
     this->Radii.push_back(std::move(radii));
   }
+  // The finest cells' radiance, read per ray and per cell by the gather's samplers.
+  const int side = this->cellsPerSide();
+  this->Finest.resize(static_cast<std::size_t>(side) * side);
+  for (int iu = 0; iu < side; ++iu)
+    for (int iv = 0; iv < side; ++iv)
+    {
+      Spectrum& l = this->Finest[static_cast<std::size_t>(iu) * side + iv];
+      for (int band = 0; band < maxBands; ++band)
+        l[band] = sky.radiance(SkyPatch{ sky.finestLevel(), iu, iv }, sky.bands() == 1 ? 0 : std::min(band, sky.bands() - 1));
+    }
 }
 
 OpenSky::~OpenSky() = default;
@@ -154,20 +165,6 @@ void OpenSky::irradiance(const Vec3& n, Spectrum& irradiance, double& projectedS
   for (int band = 0; band < maxBands; ++band)
     irradiance[band] = values[band];
   projectedSolidAngle = values[maxBands];
-}
-
-int OpenSky::cellsPerSide() const
-{
-  return SkyHierarchy::cellsPerSide(this->Sky.finestLevel());
-}
-
-Spectrum OpenSky::cellRadiance(int iu, int iv) const
-{
-  Spectrum result{};
-  const SkyPatch cell{ this->Sky.finestLevel(), iu, iv };
-  for (int band = 0; band < maxBands; ++band)
-    result[band] = this->Sky.radiance(cell, this->Sky.bands() == 1 ? 0 : std::min(band, this->Sky.bands() - 1));
-  return result;
 }
 
 Spectrum OpenSky::radiance(const Vec3& d) const

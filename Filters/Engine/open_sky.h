@@ -38,9 +38,12 @@ public:
   /// Cells of the finest sky level across each of its parameters: altitude u in
   /// [0, pi / 2] and azimuth v (west from south) in [0, 2 pi), so that radiance() is
   /// constant over cells of (pi / 2) / cellsPerSide() by 2 pi / cellsPerSide().
-  int cellsPerSide() const;
+  int cellsPerSide() const { return this->Side; }
   /// Radiance (W/m^2/sr) of finest cell (iu, iv), iu from the horizon, iv from the south.
-  Spectrum cellRadiance(int iu, int iv) const;
+  const Spectrum& cellRadiance(int iu, int iv) const
+  {
+    return this->Finest[static_cast<std::size_t>(iu) * this->cellsPerSide() + iv];
+  }
 
 private:
   void exactIrradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const;
@@ -51,6 +54,8 @@ private:
   double Brightest = 0.0; // largest horizontal irradiance over the bands
   std::vector<std::vector<std::unique_ptr<SkyPatchElement>>> Levels; // [level][iu * side + iv]
   std::vector<std::vector<double>> Radii; // the same: largest |d - centre| over each patch
+  int Side = 0;                 // the finest level's cells per parameter
+  std::vector<Spectrum> Finest; // their radiance, row by row of altitude
   int TableSide = 0;
   std::vector<double> Table; // per vertex: the bands' irradiance, then the projected solid angle
 };

@@ -98,7 +98,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // sky around the sun from its posts; rays drawn by the sky's radiance still find it
     // (each carries the same share of the sky, so 64 of them miss no bright part).
     if (leafLooksOpen(leaf))
-      budget.pilot = 0, budget.maximum = budget.minimum;
+      budget.pilot = 0, budget.maximum = budget.minimum, budget.coarseHorizon = true;
     const Spectrum& sun = irradiance[SunLight];
     // Its rays start two more offsets above (three in all): on rough terrain the move
     // into the leaf, toward a centre across a crease, can end that far below the

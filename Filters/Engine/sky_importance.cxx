@@ -15,15 +15,13 @@ SkyImportance::SkyImportance(const OpenSky& sky)
   const double cellHeight = 0.5 * pi / this->Side, cellWidth = 2.0 * pi / this->Side;
   this->Rows.assign(this->Side + 1, 0.0);
   this->Columns.assign(static_cast<std::size_t>(this->Side) * (this->Side + 1), 0.0);
-  this->Radiance.resize(static_cast<std::size_t>(this->Side) * this->Side);
   for (int iu = 0; iu < this->Side; ++iu)
   {
     const double solidAngle = cellWidth * (std::sin((iu + 1) * cellHeight) - std::sin(iu * cellHeight));
     double* columns = &this->Columns[static_cast<std::size_t>(iu) * (this->Side + 1)];
     for (int iv = 0; iv < this->Side; ++iv)
     {
-      const Spectrum l = sky.cellRadiance(iu, iv);
-      this->Radiance[static_cast<std::size_t>(iu) * this->Side + iv] = l;
+      const Spectrum& l = sky.cellRadiance(iu, iv);
       columns[iv + 1] = columns[iv] + largestBand(l) * solidAngle;
     }
     this->Rows[iu + 1] = this->Rows[iu] + columns[this->Side];
@@ -57,7 +55,7 @@ bool SkyImportance::sample(double s, double t, Sample& out) const
   const double sinU = s0 + restS * (s1 - s0), cosU = std::sqrt(std::max(0.0, 1.0 - sinU * sinU));
   const double v = (iv + restT) * cellWidth;
   out.direction = Vec3(-std::sin(v) * cosU, -std::cos(v) * cosU, sinU); // directionFromSkyParameters
-  const Spectrum& l = this->Radiance[static_cast<std::size_t>(iu) * this->Side + iv];
+  const Spectrum& l = this->Sky.cellRadiance(iu, iv);
   const double drawn = largestBand(l); // density: drawn / Flux per steradian
   for (int band = 0; band < maxBands; ++band)
     out.weight[band] = this->Flux * l[band] / drawn;

@@ -43,6 +43,5 @@ private:
   double Flux = 0.0;              // sum of radiance x solid angle over the cells (largest band)
   std::vector<double> Rows;       // cumulative flux of the altitude rows, Side + 1 values
   std::vector<double> Columns;    // per row, cumulative flux of its cells, Side + 1 values each
-  std::vector<Spectrum> Radiance; // per cell, row by row
 };
 } // namespace terralux
