@@ -6,7 +6,8 @@
 // With TERRALUX_BENCH_AVERAGED=1 in the environment, point values are averaged over
 // elements (EvaluateAtPoints off) instead of evaluated at the points; with
 // TERRALUX_BENCH_TRIANGLES=1 the terrain enters as two triangles per cell
-// (UseTerrainHierarchy off) instead of as terrain patches.
+// (UseTerrainHierarchy off) instead of as terrain patches; with
+// TERRALUX_BENCH_SKY_BY_RAYS=1 the hidden sky comes from rays (SkyFromHorizons off).
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkHierarchicalRadiosity.h"
@@ -52,6 +53,7 @@ int main(int argc, char* argv[])
   radiosity->SetVisibilitySamples(std::atoi(argv[3]));
   radiosity->SetEvaluateAtPoints(std::getenv("TERRALUX_BENCH_AVERAGED") == nullptr);
   radiosity->SetUseTerrainHierarchy(std::getenv("TERRALUX_BENCH_TRIANGLES") == nullptr);
+  radiosity->SetSkyFromHorizons(std::getenv("TERRALUX_BENCH_SKY_BY_RAYS") == nullptr);
   terrain->Update();
   sky->Update();
 
@@ -70,7 +72,8 @@ int main(int argc, char* argv[])
 
   std::cout << "tolerance " << argv[2] << "  samples " << argv[3] << "  time " << seconds << " s  peak RSS " << usage.ru_maxrss / 1024.0
             << " MiB  elements " << stat("Elements") << "  links " << stat("Links") << "  rays " << stat("Rays")
-            << "  iterations " << stat("Iterations");
+            << "  iterations " << stat("Iterations") << "  points " << stat("SecondsPoints") << " s, "
+            << stat("RaysPoints") << " rays";
   if (argc == 6 && std::strcmp(argv[4], "--write") == 0)
   {
     std::ofstream(argv[5], std::ios::binary)
