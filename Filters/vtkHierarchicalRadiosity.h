@@ -111,16 +111,17 @@ public:
   ///@{
   /**
    * Set/Get the most rays per point of the final gather that gives, with
-   * EvaluateAtPoints on, the sky and the light from surfaces at each point: rays from
-   * the point meet the solved leaves (their radiosity, with direct sunlight taken at
-   * the hit itself; with many suns, one sun per hit chosen by its irradiance) or the
-   * sky (open sky of the point's plane, exact, or from a table over normals within
-   * 0.1 % of it where more than 200,000 points are evaluated, minus what the rays find
-   * hidden). A pilot of 64 rays decides how many, from 64 to this, bring
-   * the standard error below GatherError x the point's irradiance (points of leaves the
-   * solution found open take 64 rays and no pilot). 0 re-evaluates the
-   * hierarchy's links at each point instead (faster, less accurate in rough terrain).
-   * Default is 1024.
+   * EvaluateAtPoints on, the sky and the light from surfaces at each point. The sky is
+   * the open sky of the point's plane (exact, or from a table over normals within
+   * 0.1 % of it where more than 200,000 points are evaluated) minus what the scene
+   * hides: from the point's horizon (see SkyFromHorizons) or from occlusion rays drawn
+   * by the sky's radiance. Light from surfaces: cosine-weighted rays meet the solved
+   * leaves (their radiosity, with direct sunlight taken at the hit itself; with many
+   * suns, one sun per hit chosen by its irradiance). For each kind of ray a pilot of 64
+   * decides how many, from 64 to this, bring the standard error below GatherError x
+   * the point's irradiance (points of leaves the solution found open take 64 of each
+   * and no pilot). 0 re-evaluates the hierarchy's links at each point instead (faster,
+   * less accurate in rough terrain). Default is 1024.
    */
   vtkSetClampMacro(MaximumGatherRays, int, 0, 1 << 20);
   vtkGetMacro(MaximumGatherRays, int);
