@@ -156,6 +156,47 @@ std::vector<std::array<vtkIdType, 3>> triangulate(const std::vector<terralux::Ve
     "run vtkTriangleFilter on the input, or repair the polygon");
 }
 
+// The engine keeps a terrain's posts as floats relative to the grid's centre (Embree
+// shares them): a grid that spans far more than its cells (posts a metre apart half a
+// million kilometres out) collapses cells to nothing there. Such a grid is refused
+// rather than solved with cells that have no area. Grids within 1e6 m of their centre
+// (a float's step there: 6 cm) are not checked.
+void checkSinglePrecision(vtkStructuredGrid* grid, const terralux::TerrainGrid& terrain, int owner)
+{
+  double bounds[6];
+  grid->GetBounds(bounds);
+  const terralux::Vec3& o = terrain.origin();
+  const double reach = std::max({ std::abs(bounds[0] - o.x), std::abs(bounds[1] - o.x), std::abs(bounds[2] - o.y),
+    std::abs(bounds[3] - o.y), std::abs(bounds[4] - o.z), std::abs(bounds[5] - o.z) });
+  if (!(reach > 1e6))
+    return;
+  int dims[3];
+  grid->GetDimensions(dims);
+  for (int j = 0; j + 1 < dims[1]; ++j)
+    for (int i = 0; i + 1 < dims[0]; ++i)
+    {
+      if (!terrain.cellValid(i, j))
+        continue;
+      terralux::Vec3 p[4];
+      for (int c = 0; c < 4; ++c)
+      {
+        double q[3];
+        grid->GetPoint((i + c % 2) + static_cast<vtkIdType>(j + c / 2) * dims[0], q);
+        p[c] = terralux::Vec3(q[0], q[1], q[2]);
+      }
+      const bool hasArea = glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) > 0.0 ||
+        glm::length(glm::cross(p[2] - p[3], p[1] - p[3])) > 0.0;
+      if (hasArea && !(glm::length(terrain.cellAreaVector(i, j)) > 0.0))
+      {
+        throw terralux::Error("cell (" + std::to_string(i) + ", " + std::to_string(j) + ") of input " +
+          std::to_string(owner) + " has no area at single precision: the grid reaches " +
+          std::to_string(static_cast<long long>(reach)) +
+          " m from its centre, too far for its cell sizes; blank the far cells, split the grid, "
+          "or bring its coordinates nearer together");
+      }
+    }
+}
+
 // A 2-D structured grid as a terrain grid: posts, blanked cells, materials per cell.
 std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
   vtkStructuredGrid* grid, const CellSpectrum& reflectance, const CellSpectrum& emission, int owner)
@@ -211,6 +252,7 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
     throw terralux::Error("point " + std::to_string(badPoint.load()) + " of input " + std::to_string(owner) +
       " has a NaN, infinite or huge coordinate (beyond 1e12 m): blank the cells around it or repair it");
   }
+  checkSinglePrecision(grid, *terrain, owner);
   terrain->setUniformMaterial(reflectance.at(0), emission.at(0));
   if (reflectance.present() || emission.present())
   {

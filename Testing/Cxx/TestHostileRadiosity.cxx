@@ -488,6 +488,24 @@ TEST(HostileRadiosity, FuzzFindingsStayFixed)
       EXPECT_GT(irradiance->GetComponent(k, 0), 0.0) << k;
     }
   }
+  // A 3 x 3 grid with one post 6e8 m out: kept as floats about the grid's centre, the
+  // other posts (metres apart) collapse onto each other, cells without area whose
+  // posts were NaN. Refused with what to do instead.
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (const auto& p : std::vector<std::array<double, 3>>{ { 0, 0.02, 0 }, { 2, -9.7, -595821443.5 },
+           { -595821443.5, 0, 0 }, { 0, 0, 0 }, { 0.018, 0, 0.0018 }, { 0.007, 0, 0 }, { -12.97, 0.34, 0 },
+           { 2, 4, 2 }, { 4, 4, 1 } })
+      points->InsertNextPoint(p.data());
+    vtkNew<vtkStructuredGrid> grid;
+    grid->SetDimensions(3, 3, 1);
+    grid->SetPoints(points);
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputData(grid);
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    expectRefused(radiosity, "has no area at single precision");
+  }
   // A sliver quad (two corners a denormal from the origin, one 2 mm above it) under the
   // sun: leaves of zero area meet at leaf-mesh vertices, which took 0/0.
   {

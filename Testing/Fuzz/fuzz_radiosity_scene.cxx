@@ -72,6 +72,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (std::getenv("TERRALUX_FUZZ_PRINT")) // to reproduce a finding elsewhere
   {
     std::fprintf(stderr, "flags %d\n", flags);
+    if (auto* grid = vtkStructuredGrid::SafeDownCast(scene))
+    {
+      int dims[3];
+      grid->GetDimensions(dims);
+      std::fprintf(stderr, "dimensions %d %d %d\n", dims[0], dims[1], dims[2]);
+    }
     for (vtkIdType k = 0; k < scene->GetNumberOfPoints(); ++k)
     {
       double p[3];
