@@ -308,8 +308,12 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   radiosity->SetErrorTolerance(tolerance);
   radiosity->SetEvaluateAtPoints(method != "averaged");
   radiosity->SetSkyFromHorizons(method != "rays");
-  if (const char* e = std::getenv("TLX_GATHER_ERROR")) radiosity->SetGatherError(std::atof(e));
-  if (const char* e = std::getenv("TLX_GATHER_RAYS")) radiosity->SetMaximumGatherRays(std::atoi(e));
+  // TERRALUX_REPORT_GATHER_ERROR / TERRALUX_REPORT_GATHER_RAYS: GatherError and
+  // MaximumGatherRays other than the defaults (is an error noise or bias?).
+  if (const char* value = std::getenv("TERRALUX_REPORT_GATHER_ERROR"))
+    radiosity->SetGatherError(std::atof(value));
+  if (const char* value = std::getenv("TERRALUX_REPORT_GATHER_RAYS"))
+    radiosity->SetMaximumGatherRays(std::atoi(value));
   radiosity->SetUseTerrainHierarchy(method != "triangles");
   const auto start = std::chrono::steady_clock::now();
   radiosity->Update();
