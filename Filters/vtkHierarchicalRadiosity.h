@@ -227,7 +227,8 @@ public:
    * The gather's rays then gather only the light of surfaces. This removes the
    * sampling noise of the sky (Olinda: 0.85 % RMS down to the reference's own 0.09 %).
    * Off, or in scenes with buildings or vegetation (where a lower direction can be
-   * open under a higher blocked one), the gather's rays also find the hidden sky.
+   * open under a higher blocked one), occlusion rays drawn by the sky's radiance find
+   * the hidden sky.
    * Only with EvaluateAtPoints on. Default is on.
    */
   vtkSetMacro(SkyFromHorizons, vtkTypeBool);

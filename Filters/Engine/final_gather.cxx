@@ -182,7 +182,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     openOmega = std::max(0.0, openOmega - horizon.projectedSolidAngle);
     result.rays += horizon.rays;
   }
-  else if (this->Sky && this->SkySamples)
+  else if (this->Sky)
   {
     double hiddenOmega = 0.0;
     hidden = this->hiddenSkyByRadiance(

@@ -19,10 +19,9 @@
 // and of the sectors' pieces are tabulated once: they are most of the work otherwise.
 namespace terralux
 {
-HorizonSky::ElevationTerms HorizonSky::elevationTerms(double u)
+HorizonSky::ElevationTerms HorizonSky::elevationTerms(double u, double sinU, double cosU)
 {
-  const double s = std::sin(u), c = std::cos(u);
-  return { 0.5 * u + 0.5 * s * c, 0.5 * s * s };
+  return { 0.5 * u + 0.5 * sinU * cosU, 0.5 * sinU * sinU };
 }
 
 HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky)
@@ -37,10 +36,11 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky)
   // v index FirstColumn - m - 1 (mod Side).
   this->CellStart = std::fmod(1.5 * pi, this->CellWidth);
   this->FirstColumn = static_cast<int>(std::lround((1.5 * pi - this->CellStart) / this->CellWidth));
-  for (int k = 0; k <= this->Side; ++k)
-    this->Rows.push_back(elevationTerms(k * this->CellHeight));
   for (int k = 0; k <= fineTerms; ++k)
-    this->Terms.push_back(elevationTerms(k * 0.5 * pi / fineTerms));
+  {
+    const double u = k * 0.5 * pi / fineTerms;
+    this->Terms.push_back(elevationTerms(u, std::sin(u), std::cos(u)));
+  }
   for (int m = 0; m < this->Side; ++m)
   {
     const double phi = this->CellStart + m * this->CellWidth;
@@ -109,7 +109,7 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
     auto occluded = [&](double u, ElevationTerms& terms) {
       ++result.rays;
       const double s = std::sin(u), c = std::cos(u);
-      terms = { 0.5 * u + 0.5 * s * c, 0.5 * s * s };
+      terms = elevationTerms(u, s, c);
       return this->Rays.occludedToward(point, normal, Vec3(c * azimuth.cos, c * azimuth.sin, s));
     };
     const double hint = previous;
@@ -188,7 +188,8 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
     {
       const double boundary = (row + 1) * this->CellHeight;
       const bool last = boundary >= u1 || row + 1 >= this->Side;
-      const ElevationTerms high = last ? this->termsAt(u1) : this->Rows[row + 1];
+      // A cell boundary is an entry of the table (the sky's cells per side divide it).
+      const ElevationTerms high = last ? this->termsAt(u1) : this->Terms[(row + 1) * (fineTerms / this->Side)];
       for (int c = 0; c < count; ++c)
       {
         const Column& column = columns[c];

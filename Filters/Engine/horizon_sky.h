@@ -7,7 +7,7 @@
 // exactly in elevation against the sky's cells. A final gather's cosine-weighted rays
 // estimate the same hidden part with binomial noise (a post whose horizon hides 2 % of
 // its sky gets a 1.7 % standard error from 64 rays); here only the azimuths are
-// sampled, one jittered direction per sector, and each contributes a smooth integral.
+// sampled, evenly, and the horizon between them is interpolated and integrated.
 // Only for scenes that are height fields (terrains whose cells all face up, no
 // polygons): under a roof or a tree crown the lower directions of an azimuth can be
 // open again, and rays must sample them.
@@ -32,10 +32,10 @@ struct HiddenSky
 class HorizonSky
 {
 public:
-  /// Azimuth sectors per point (one jittered direction each). A blocked azimuth's
+  /// Azimuths per point (evenly spaced, turned at random per point). A blocked azimuth's
   /// horizon is bisected until the band it may still lie in holds at most
-  /// bandTolerance of the sector's share of the sky's projected solid angle (its
-  /// midpoint is taken: an error of at most half that, of either sign), or for
+  /// bandTolerance of the sector's share of the sky's projected solid angle (the band
+  /// counts half: an error of at most half that, of either sign), or for
   /// maximumBisections steps (90 deg / 2^10: 0.09 deg).
   static constexpr int sectors = 32;
   /// Pieces between two sampled azimuths, over which the horizon is interpolated.
@@ -60,8 +60,9 @@ private:
   {
     double sin, cos;
   };
-  static ElevationTerms elevationTerms(double u);
+  static ElevationTerms elevationTerms(double u, double sinU, double cosU);
   ElevationTerms termsAt(double u) const; // from the table Terms
+  /// Entries of Terms; a multiple of every sky's cells per side (at most 2^10).
   static constexpr int fineTerms = 4096;
 
   const Visibility& Rays;
@@ -71,7 +72,6 @@ private:
   double CellWidth = 0.0;   // radians of azimuth per cell
   double CellStart = 0.0;   // the first azimuth cell boundary
   int FirstColumn = 0;      // the sky's azimuth index of the cell before CellStart, + 1
-  std::vector<ElevationTerms> Rows;          // at each elevation cell boundary
   std::vector<ElevationTerms> Terms;         // at fineTerms + 1 elevations, 0 to pi / 2
   std::vector<SinCos> ColumnBoundaries;      // at each azimuth cell boundary
   std::vector<SinCos> PieceBoundaries, PieceMiddles; // of the pieces, before a point's turn

@@ -12,12 +12,15 @@ SkyImportance::SkyImportance(const OpenSky& sky)
   : Sky(sky)
   , Side(sky.cellsPerSide())
 {
-  const double cellHeight = 0.5 * pi / this->Side, cellWidth = 2.0 * pi / this->Side;
+  const double cellHeight = 0.5 * pi / this->Side;
+  this->CellWidth = 2.0 * pi / this->Side;
+  for (int iu = 0; iu <= this->Side; ++iu)
+    this->RowSines.push_back(std::sin(iu * cellHeight));
   this->Rows.assign(this->Side + 1, 0.0);
   this->Columns.assign(static_cast<std::size_t>(this->Side) * (this->Side + 1), 0.0);
   for (int iu = 0; iu < this->Side; ++iu)
   {
-    const double solidAngle = cellWidth * (std::sin((iu + 1) * cellHeight) - std::sin(iu * cellHeight));
+    const double solidAngle = this->CellWidth * (this->RowSines[iu + 1] - this->RowSines[iu]);
     double* columns = &this->Columns[static_cast<std::size_t>(iu) * (this->Side + 1)];
     for (int iv = 0; iv < this->Side; ++iv)
     {
@@ -50,10 +53,9 @@ bool SkyImportance::sample(double s, double t, Sample& out) const
     return false;
   const int iv = pick(columns, this->Side, t, restT);
   // Uniform in solid angle inside the cell: uniform in sin u and in v.
-  const double cellHeight = 0.5 * pi / this->Side, cellWidth = 2.0 * pi / this->Side;
-  const double s0 = std::sin(iu * cellHeight), s1 = std::sin((iu + 1) * cellHeight);
+  const double s0 = this->RowSines[iu], s1 = this->RowSines[iu + 1];
   const double sinU = s0 + restS * (s1 - s0), cosU = std::sqrt(std::max(0.0, 1.0 - sinU * sinU));
-  const double v = (iv + restT) * cellWidth;
+  const double v = (iv + restT) * this->CellWidth;
   out.direction = Vec3(-std::sin(v) * cosU, -std::cos(v) * cosU, sinU); // directionFromSkyParameters
   const Spectrum& l = this->Sky.cellRadiance(iu, iv);
   const double drawn = largestBand(l); // density: drawn / Flux per steradian

@@ -40,6 +40,8 @@ public:
 private:
   const OpenSky& Sky;
   int Side = 0;
+  double CellWidth = 0.0;          // radians of azimuth per cell
+  std::vector<double> RowSines;    // sin u at each altitude boundary, Side + 1 values
   double Flux = 0.0;              // sum of radiance x solid angle over the cells (largest band)
   std::vector<double> Rows;       // cumulative flux of the altitude rows, Side + 1 values
   std::vector<double> Columns;    // per row, cumulative flux of its cells, Side + 1 values each

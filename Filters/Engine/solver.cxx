@@ -97,7 +97,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
   for (const TerrainGrid* terrain : scene.terrains)
     this->PointCount += static_cast<std::size_t>(terrain->postsX()) * terrain->postsY();
   this->Gather = std::make_unique<FinalGather>(*this->Rays, this->Roots, this->TerrainRoots, this->Suns);
-  this->HeightField = scene.polygons.empty() &&
+  this->HeightField = options.skyFromHorizons && scene.polygons.empty() &&
     std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
   this->Stats.secondsVisibilityBuild = secondsSince(start);
 }

@@ -167,7 +167,7 @@ private:
   std::unique_ptr<FinalGather> Gather;
   std::unique_ptr<OpenSky> SkyAtPoints;
   std::unique_ptr<HorizonSky> Horizons;
-  bool HeightField = false; // terrains facing up and nothing else: horizons hold
+  bool HeightField = false; // terrains facing up and nothing else: horizons hold (checked only when asked for)
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on

@@ -514,10 +514,7 @@ TEST(HostileRadiosity, FuzzFindingsStayFixed)
                                  { 5.3047064716705865e-315, 0, 1.7796245020678025e-308 },
                                  { 0, 0, 0.001983642578125 } },
       { { 0, 1, 2, 3 } });
-    vtkNew<vtkSunSource> sun;
-    sun->SetDateTime("2024-06-21T10:00:00+02:00");
-    sun->SetLatitude(46.0);
-    sun->SetIrradianceModelToUser();
+    auto sun = userSun(800.0, "2024-06-21T10:00:00+02:00");
     vtkNew<vtkHierarchicalRadiosity> radiosity;
     radiosity->SetInputData(data);
     radiosity->AddLightConnection(sky->GetOutputPort(0));
