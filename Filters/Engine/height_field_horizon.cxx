@@ -65,8 +65,6 @@ struct HeightFieldHorizon::Pyramid
     return Vec3(p[0], p[1], p[2]);
   }
   bool valid(int i, int j) const { return this->Grid->cellValid(i, j); }
-  /// The cell index of parameter x along an axis of `cells` cells, clamped to it.
-  static int cellOf(double x, int cells) { return static_cast<int>(std::clamp(std::floor(x), 0.0, cells - 1.0)); }
 
   explicit Pyramid(const TerrainGrid* grid)
     : Grid(grid)
@@ -169,9 +167,8 @@ struct HeightFieldHorizon::Pyramid
       u = v = 0.0;
     for (int step = 0; step < 8; ++step)
     {
-      if (!std::isfinite(u) || !std::isfinite(v))
-        break;
-      const int i = this->cellOf(u, this->CellsX), j = this->cellOf(v, this->CellsY);
+      const int i = std::clamp(static_cast<int>(std::floor(u)), 0, this->CellsX - 1);
+      const int j = std::clamp(static_cast<int>(std::floor(v)), 0, this->CellsY - 1);
       if (!this->valid(i, j))
         return; // over no data: the mean map's guess and Jacobian
       PlaneJacobian local;
@@ -201,7 +198,7 @@ double HeightFieldHorizon::Pyramid::walk(const Vec3& o, double dx, double dy, do
   double u, v, du, dv;
   PlaneJacobian jacobian;
   this->locate(o.x, o.y, u, v, jacobian);
-  if (!std::isfinite(u) || !std::isfinite(v) || !jacobian.solve(dx, dy, du, dv))
+  if (!jacobian.solve(dx, dy, du, dv))
     return best;
   // s: horizontal metres along the azimuth (to first order); clipped to the grid.
   double sIn = 0.0, sOut = std::numeric_limits<double>::infinity();
@@ -265,7 +262,8 @@ double HeightFieldHorizon::Pyramid::walk(const Vec3& o, double dx, double dy, do
   for (double s = sIn; s < sOut;)
   {
     const double inside = s + nudge;
-    const int i = this->cellOf(u + inside * du, this->CellsX), j = this->cellOf(v + inside * dv, this->CellsY);
+    const int i = std::clamp(static_cast<int>(std::floor(u + inside * du)), 0, this->CellsX - 1);
+    const int j = std::clamp(static_cast<int>(std::floor(v + inside * dv)), 0, this->CellsY - 1);
     double next;
     // Up a level after each step, down while the block may hold the horizon.
     for (level = std::min(level + 1, top);; --level)
@@ -315,12 +313,7 @@ double HeightFieldHorizon::Pyramid::walk(const Vec3& o, double dx, double dy, do
       refused[level] = { block, best };
     }
     first = false;
-    // Where a step is below the precision of s (a point very far from tiny cells) the
-    // walk ends rather than spin.
-    const double advanced = std::max(next, inside);
-    if (!(advanced > s))
-      break;
-    s = advanced;
+    s = std::max(next, inside);
   }
   return best;
 }
