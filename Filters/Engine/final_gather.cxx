@@ -180,6 +180,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull, budget.coarseHorizon);
     hidden = horizon.irradiance;
     openOmega = std::max(0.0, openOmega - horizon.projectedSolidAngle);
+    result.rays += horizon.rays;
   }
   else if (this->Sky)
   {

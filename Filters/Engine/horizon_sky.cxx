@@ -3,7 +3,7 @@
 #include "angles.h"
 #include "open_sky.h"
 #include "sampling.h"
-#include "height_field_horizon.h"
+#include "visibility.h"
 
 #include <algorithm>
 #include <array>
@@ -24,8 +24,8 @@ HorizonSky::ElevationTerms HorizonSky::elevationTerms(double u, double sinU, dou
   return { 0.5 * u + 0.5 * sinU * cosU, 0.5 * sinU * sinU };
 }
 
-HorizonSky::HorizonSky(const HeightFieldHorizon& terrain, const OpenSky& sky)
-  : Terrain(terrain)
+HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky)
+  : Rays(rays)
   , Sky(sky)
   , Side(sky.cellsPerSide())
 {
@@ -86,36 +86,81 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
     return toward >= 0.0 && normal.z > 0.0 ? 0.0 : std::max(0.0, std::atan2(-toward, normal.z));
   };
 
-  // Each sampled azimuth's horizon, and whether the terrain stays below the lower
-  // bound there (open).
+  // Each sampled azimuth's horizon lies between the highest elevation found blocked and
+  // the lowest found open (both the lower bound where that is open).
   struct Horizon
   {
-    double elevation;
-    bool open;
+    double blocked, open;
   };
   std::array<Horizon, sectors> horizons; // the first `azimuths` used
+  // The search starts at the previous azimuth's horizon: neighbouring azimuths have
+  // similar horizons, so a few rays bracket the new one.
+  double previous = -1.0;
   for (int k = 0; k < azimuths; ++k)
   {
     const SinCos azimuth = rotate(this->PieceBoundaries[k * pieces]);
     const double lower = lowerAt(azimuth);
-    horizons[k] = { lower, true };
+    Horizon& horizon = horizons[k];
+    horizon = { lower, lower };
     if (!(lower < halfPi - 1e-9))
       continue;
-    const double floor = std::tan(lower);
-    const double tangent = this->Terrain.tangentToward(point, azimuth.cos, azimuth.sin, floor);
-    ++result.walks;
-    if (tangent > floor)
-      horizons[k] = { std::max(lower, std::atan(tangent)), false };
+    // A ray toward elevation u; `terms` receives the elevation's terms of
+    // projectedBand from the same sine and cosine.
+    auto occluded = [&](double u, ElevationTerms& terms) {
+      ++result.rays;
+      const double s = std::sin(u), c = std::cos(u);
+      terms = elevationTerms(u, s, c);
+      return this->Rays.occludedToward(point, normal, Vec3(c * azimuth.cos, c * azimuth.sin, s));
+    };
+    const double hint = previous;
+    previous = lower;
+    ElevationTerms blockedTerms{}, openTerms{}, terms{};
+    if (!occluded(lower + 1e-4, terms))
+      continue; // open down to the lower bound
+    double blocked = lower, open = halfPi;
+    if (hint > blocked + 1e-3 && hint < open)
+      (occluded(hint, terms) ? blocked : open) = hint;
+    // Still no upper bracket: upward in doubling steps (most horizons are low).
+    if (open == halfPi)
+      for (double step = 2.0 * degree; blocked + step < open; step *= 2.0)
+      {
+        if (!occluded(blocked + step, terms))
+        {
+          open = blocked + step;
+          break;
+        }
+        blocked += step;
+      }
+    blockedTerms = this->termsAt(blocked);
+    openTerms = this->termsAt(open);
+    // Bisection until the band left holds at most bandTolerance of the sector's share
+    // of the whole sky's projected solid angle (pi / azimuths): bands near the plane's
+    // own horizon, where the cosine vanishes, end early.
+    const double across = normal.x * azimuth.cos + normal.y * azimuth.sin;
+    const double bandLimit = bandTolerance * pi / azimuths;
+    for (int step = 0; step < maximumBisections &&
+         sector * (across * (openTerms.along - blockedTerms.along) + normal.z * (openTerms.up - blockedTerms.up)) >
+           bandLimit;
+         ++step)
+    {
+      const double middle = 0.5 * (blocked + open);
+      if (occluded(middle, terms))
+        blocked = middle, blockedTerms = terms;
+      else
+        open = middle, openTerms = terms;
+    }
+    horizon = { blocked, open };
+    previous = 0.5 * (blocked + open);
   }
 
-  // The sky of piece p between elevations u0 and u1, hidden, cell by cell of the sky
-  // (parts below the plane count nothing).
+  // The sky of piece p between elevations u0 and u1 taken as hidden, with weight
+  // `share`, cell by cell of the sky (parts below the plane count nothing).
   struct Column
   {
     double across, width;
     int iv;
   };
-  auto hide = [&](int p, double u0, double u1) {
+  auto hide = [&](int p, double u0, double u1, double share) {
     if (!(u0 < u1))
       return;
     const double phi0 = turn + p * piece, phi1 = phi0 + piece;
@@ -148,7 +193,7 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
       for (int c = 0; c < count; ++c)
       {
         const Column& column = columns[c];
-        const double weight =
+        const double weight = share *
           std::max(0.0, column.across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
         if (!(weight > 0.0))
           continue;
@@ -161,20 +206,25 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
       low = high;
     }
   };
-  // Between two sampled azimuths the horizon is interpolated linearly, over pieces
-  // narrow enough for that to hold (the midpoint rule of a linear horizon).
+  // Between two sampled azimuths the horizon's bounds are interpolated linearly, over
+  // pieces narrow enough for that to hold (the midpoint rule of a linear horizon).
   for (int k = 0; k < azimuths; ++k)
   {
     const Horizon& from = horizons[k];
     const Horizon& to = horizons[(k + 1) % azimuths];
-    if (from.open && to.open)
+    if (from.open == from.blocked && to.open == to.blocked)
       continue; // both azimuths open down to their lower bounds: so is the sky between
     for (int j = 0; j < pieces; ++j)
     {
       const int p = k * pieces + j;
       const double t = (j + 0.5) / pieces;
       const double lower = lowerAt(rotate(this->PieceMiddles[p]));
-      hide(p, lower, (1.0 - t) * from.elevation + t * to.elevation);
+      const double blocked = std::max(lower, (1.0 - t) * from.blocked + t * to.blocked);
+      const double open = std::max(blocked, (1.0 - t) * from.open + t * to.open);
+      // Below the horizon all is hidden, the band where it lies half (the mean of the
+      // two bounds, whatever the band's shape).
+      hide(p, lower, blocked, 1.0);
+      hide(p, blocked, open, 0.5);
     }
   }
   return result;

@@ -3,12 +3,11 @@
 // Marks 1987; HORAYZON): over a height field, a direction that is blocked blocks every
 // lower direction of the same azimuth, so what the terrain hides in one azimuth is the
 // sky between the point's lower bound (its plane's horizon or the world's) and the
-// horizon elevation, which a walk over the grid finds (height_field_horizon.h). That
-// band is integrated exactly in elevation against the sky's cells. A final gather's
-// cosine-weighted rays estimate the same hidden part with binomial noise (a post whose
-// horizon hides 2 % of its sky gets a 1.7 % standard error from 64 rays); here only the
-// azimuths are sampled, evenly, and the horizon between them is interpolated and
-// integrated.
+// horizon elevation, found by bisection with occlusion rays. That band is integrated
+// exactly in elevation against the sky's cells. A final gather's cosine-weighted rays
+// estimate the same hidden part with binomial noise (a post whose horizon hides 2 % of
+// its sky gets a 1.7 % standard error from 64 rays); here only the azimuths are
+// sampled, evenly, and the horizon between them is interpolated and integrated.
 // Only for scenes that are height fields (terrains whose cells all face up, no
 // polygons): under a roof or a tree crown the lower directions of an azimuth can be
 // open again, and rays must sample them.
@@ -21,27 +20,33 @@
 namespace terralux
 {
 class OpenSky;
-class HeightFieldHorizon;
+class Visibility;
 
 struct HiddenSky
 {
   Spectrum irradiance{};           ///< W/m^2 the horizon hides from the point's plane
   double projectedSolidAngle = 0.0; ///< sr, of the hidden sky (the view factor's pi x its loss)
-  int walks = 0;                    ///< horizons walked (one per sampled azimuth above the lower bound)
+  int rays = 0;
 };
 
 class HorizonSky
 {
 public:
-  /// Azimuths per point (evenly spaced, turned at random per point).
+  /// Azimuths per point (evenly spaced, turned at random per point). A blocked azimuth's
+  /// horizon is bisected until the band it may still lie in holds at most
+  /// bandTolerance of the sector's share of the sky's projected solid angle (the band
+  /// counts half: an error of at most half that, of either sign), or for
+  /// maximumBisections steps (90 deg / 2^10: 0.09 deg).
   static constexpr int sectors = 32;
   /// Pieces between two sampled azimuths, over which the horizon is interpolated.
   static constexpr int piecesPerSector = 2;
+  static constexpr double bandTolerance = 0.002;
+  static constexpr int maximumBisections = 10;
 
-  HorizonSky(const HeightFieldHorizon& terrain, const OpenSky& sky);
+  HorizonSky(const Visibility& rays, const OpenSky& sky);
 
-  /// The sky hidden from a point on the terrain (or above it) on a plane of unit
-  /// normal n; `seed` turns the azimuths.
+  /// The sky hidden from a point (rays start there, lifted along the unit normal by
+  /// the visibility's offset) on a plane of unit normal n; `seed` turns the azimuths.
   /// `coarse`: half the azimuths, for points the solution found open (little to find,
   /// so little to miss between them).
   HiddenSky hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed, bool coarse = false) const;
@@ -60,7 +65,7 @@ private:
   /// Entries of Terms; a multiple of every sky's cells per side (at most 2^10).
   static constexpr int fineTerms = 4096;
 
-  const HeightFieldHorizon& Terrain;
+  const Visibility& Rays;
   const OpenSky& Sky;
   int Side;                 // the sky's finest cells per parameter
   double CellHeight = 0.0;  // radians of elevation per cell

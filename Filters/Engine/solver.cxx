@@ -5,7 +5,6 @@
 #include "cluster.h"
 #include "error.h"
 #include "final_gather.h"
-#include "height_field_horizon.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
 #include "link_transport.h"
@@ -100,8 +99,6 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
   this->Gather = std::make_unique<FinalGather>(*this->Rays, this->Roots, this->TerrainRoots, this->Suns);
   this->HeightField = options.skyFromHorizons && scene.polygons.empty() &&
     std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
-  if (this->HeightField)
-    this->HeightFieldGrids = scene.terrains;
   this->Stats.secondsVisibilityBuild = secondsSince(start);
 }
 
@@ -126,10 +123,9 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->Sky = sky;
   this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
   this->Gather->setSky(this->SkyAtPoints.get());
-  if (sky && this->HeightField && !this->TerrainHorizons)
-    this->TerrainHorizons = std::make_unique<HeightFieldHorizon>(this->HeightFieldGrids);
-  this->Horizons = sky && this->HeightField ? std::make_unique<HorizonSky>(*this->TerrainHorizons, *this->SkyAtPoints)
-                                            : nullptr;
+  this->Horizons = sky && this->HeightField && this->Options.skyFromHorizons
+    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints)
+    : nullptr;
   this->Gather->setHorizons(this->Horizons.get());
   this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
 }

@@ -17,7 +17,6 @@ namespace terralux
 {
 class Cluster;
 class FinalGather;
-class HeightFieldHorizon;
 class HorizonSky;
 class OpenSky;
 class PolygonElement;
@@ -169,8 +168,6 @@ private:
   std::unique_ptr<OpenSky> SkyAtPoints;
   std::unique_ptr<HorizonSky> Horizons;
   bool HeightField = false; // terrains facing up and nothing else: horizons hold (checked only when asked for)
-  std::vector<const TerrainGrid*> HeightFieldGrids;    // the terrains, when HeightField
-  std::unique_ptr<HeightFieldHorizon> TerrainHorizons; // built with the first sky
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on

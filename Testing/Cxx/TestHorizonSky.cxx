@@ -2,7 +2,6 @@
 // closed forms and against brute-force rays.
 
 #include "cie_sky.h"
-#include "height_field_horizon.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
 #include "sampling.h"
@@ -52,17 +51,18 @@ RadiosityScene sceneOf(const TerrainGrid& grid)
 }
 } // namespace
 
-TEST(HorizonSky, OpenGroundHidesNothingForOneWalkPerSector)
+TEST(HorizonSky, OpenGroundHidesNothingForOneRayPerSector)
 {
   const auto grid = makeGrid(21, 21, 10.0, [](double, double) { return 0.0; });
-  const HeightFieldHorizon terrain({ grid.get() });
+  const RadiosityScene scene = sceneOf(*grid);
+  const Visibility rays(scene);
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(40.0 * degree, 2.0)), 100.0, 6);
   const OpenSky open(sky);
-  const HorizonSky horizons(terrain, open);
+  const HorizonSky horizons(rays, open);
   const HiddenSky hidden = horizons.hiddenAt(Vec3(100, 100, 0), Vec3(0, 0, 1), 3);
   EXPECT_EQ(hidden.irradiance[0], 0.0);
   EXPECT_EQ(hidden.projectedSolidAngle, 0.0);
-  EXPECT_EQ(hidden.walks, HorizonSky::sectors);
+  EXPECT_EQ(hidden.rays, HorizonSky::sectors);
 }
 
 TEST(HorizonSky, VValleyBottomSeesCosOfItsSlope)
@@ -79,8 +79,9 @@ TEST(HorizonSky, VValleyBottomSeesCosOfItsSlope)
       201, 161, 2.0, [&](double, double y) { return std::min(50.0, std::abs(y - half) * std::tan(slope * degree)); },
       [](int, int) { return true; }, [](int i) { return -2000.0 + 20.0 * i; });
     ASSERT_TRUE(grid->facesUp());
-    const HeightFieldHorizon terrain({ grid.get() });
-    const HorizonSky horizons(terrain, open);
+    const RadiosityScene scene = sceneOf(*grid);
+    const Visibility rays(scene);
+    const HorizonSky horizons(rays, open);
     for (std::uint64_t seed : { 1, 2, 3 })
     {
       const HiddenSky hidden = horizons.hiddenAt(Vec3(0, half, 0), Vec3(0, 0, 1), seed);
@@ -102,8 +103,7 @@ TEST(HorizonSky, AgreesWithBruteForceRaysOnRoughTerrainUnderAClearSky)
   const Visibility rays(scene);
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(75.0 * degree, 1.0)), 100.0, 7);
   const OpenSky open(sky);
-  const HeightFieldHorizon terrain({ grid.get() });
-  const HorizonSky horizons(terrain, open);
+  const HorizonSky horizons(rays, open);
   int tested = 0;
   double sumSquares = 0.0;
   for (int j = 8; j < 60; j += 9)
