@@ -163,7 +163,7 @@ Spectrum FinalGather::hiddenSkyByRadiance(const Vec3& point, const Vec3& normal,
 }
 
 GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget,
-  std::uint64_t seed, double directIrradiance, bool surfacesSend) const
+  std::uint64_t seed, double directIrradiance, bool surfacesSend, const HorizonMap::Post& post) const
 {
   GatheredLight result;
   Spectrum open{};
@@ -176,8 +176,9 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   Spectrum hidden{};
   if (horizons)
   {
-    const HiddenSky horizon =
-      this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull, budget.coarseHorizon);
+    const HiddenSky horizon = post && this->Horizons->map()
+      ? this->Horizons->hiddenAt(post, normal)
+      : this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull, budget.coarseHorizon);
     hidden = horizon.irradiance;
     openOmega = std::max(0.0, openOmega - horizon.projectedSolidAngle);
     result.rays += horizon.rays;

@@ -6,6 +6,7 @@
 // large loss (a third of the reflected light on the fractal scene of the accuracy
 // report); a ray from the point sees all of them at the scene's full resolution.
 
+#include "horizon_map.h"
 #include "radiosity_types.h"
 
 #include <memory>
@@ -66,9 +67,10 @@ public:
   /// OpenSky) minus what the scene hides: from the point's horizon (setHorizons), or
   /// from occlusion rays drawn by the sky's radiance with a pilot of their own
   /// (SkyImportance), which also give the sky view factor. `surfacesSend` false skips
-  /// what surfaces send (every radiosity 0): no cosine-weighted rays then.
+  /// what surfaces send (every radiosity 0): no cosine-weighted rays then. `post`: the
+  /// terrain post the point stands for, whose horizons the horizons' map holds.
   GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
-    double directIrradiance, bool surfacesSend = true) const;
+    double directIrradiance, bool surfacesSend = true, const HorizonMap::Post& post = {}) const;
   void setSky(const OpenSky* sky);
   /// With horizons (a scene that is a height field), the sky the scene hides comes from
   /// the point's horizon instead of the rays, which then gather surfaces alone.

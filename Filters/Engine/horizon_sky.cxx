@@ -1,6 +1,7 @@
 #include "horizon_sky.h"
 
 #include "angles.h"
+#include "horizon_map.h"
 #include "open_sky.h"
 #include "sampling.h"
 #include "visibility.h"
@@ -24,9 +25,10 @@ HorizonSky::ElevationTerms HorizonSky::elevationTerms(double u, double sinU, dou
   return { 0.5 * u + 0.5 * sinU * cosU, 0.5 * sinU * sinU };
 }
 
-HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky)
+HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const HorizonMap* map)
   : Rays(rays)
   , Sky(sky)
+  , Map(map)
   , Side(sky.cellsPerSide())
 {
   this->CellHeight = 0.5 * pi / this->Side;
@@ -51,6 +53,25 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky)
   {
     this->PieceBoundaries.push_back({ std::sin(p * piece), std::cos(p * piece) });
     this->PieceMiddles.push_back({ std::sin((p + 0.5) * piece), std::cos((p + 0.5) * piece) });
+  }
+  auto sinCos = [](double phi) { return SinCos{ std::sin(phi), std::cos(phi) }; };
+  if (map)
+  {
+    MapAzimuths& table = this->MapTable;
+    const std::vector<double>& azimuths = map->azimuths();
+    for (std::size_t a = 0; a < azimuths.size(); ++a)
+    {
+      table.directions.push_back(sinCos(azimuths[a]));
+      const double from = azimuths[a];
+      const double to = a + 1 < azimuths.size() ? azimuths[a + 1] : azimuths[0] + 2.0 * pi;
+      const double width = (to - from) / piecesPerSector;
+      for (int j = 0; j < piecesPerSector; ++j)
+      {
+        const double phi0 = from + j * width;
+        table.pieces.push_back(
+          { phi0, phi0 + width, sinCos(phi0), sinCos(phi0 + width), sinCos(phi0 + 0.5 * width) });
+      }
+    }
   }
 }
 
@@ -79,12 +100,7 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
   auto rotate = [&](const SinCos& a) {
     return SinCos{ turned.sin * a.cos + turned.cos * a.sin, turned.cos * a.cos - turned.sin * a.sin };
   };
-  // The lower bound of the hidden sky toward an azimuth: below the plane's own horizon
-  // the plane receives nothing, below the world's the sky sends nothing.
-  auto lowerAt = [&](const SinCos& a) {
-    const double toward = normal.x * a.cos + normal.y * a.sin;
-    return toward >= 0.0 && normal.z > 0.0 ? 0.0 : std::max(0.0, std::atan2(-toward, normal.z));
-  };
+  auto lowerAt = [&](const SinCos& a) { return lowerBound(normal, a); };
 
   // Each sampled azimuth's horizon lies between the highest elevation found blocked and
   // the lowest found open (both the lower bound where that is open).
@@ -153,58 +169,10 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
     previous = 0.5 * (blocked + open);
   }
 
-  // The sky of piece p between elevations u0 and u1 taken as hidden, with weight
-  // `share`, cell by cell of the sky (parts below the plane count nothing).
-  struct Column
-  {
-    double across, width;
-    int iv;
-  };
   auto hide = [&](int p, double u0, double u1, double share) {
-    if (!(u0 < u1))
-      return;
-    const double phi0 = turn + p * piece, phi1 = phi0 + piece;
-    const SinCos start = rotate(this->PieceBoundaries[p]), end = rotate(this->PieceBoundaries[p + 1]);
-    std::array<Column, 16> columns;
-    int count = 0;
-    int m = static_cast<int>(std::floor((phi0 - this->CellStart) / this->CellWidth)) + 1;
-    double b = phi0;
-    SinCos at = start;
-    while (b < phi1 && count < static_cast<int>(columns.size()))
-    {
-      const double boundary = this->CellStart + m * this->CellWidth;
-      const bool last = boundary >= phi1;
-      const SinCos next = last ? end : this->ColumnBoundaries[((m % this->Side) + this->Side) % this->Side];
-      const double bEnd = last ? phi1 : boundary;
-      const int iv = (((this->FirstColumn - m) % this->Side) + this->Side) % this->Side;
-      columns[count++] = { normal.x * (next.sin - at.sin) - normal.y * (next.cos - at.cos), bEnd - b, iv };
-      b = bEnd;
-      at = next;
-      ++m;
-    }
-    int row = std::min(this->Side - 1, static_cast<int>(u0 / this->CellHeight));
-    ElevationTerms low = this->termsAt(u0);
-    for (double a = u0; a < u1; ++row)
-    {
-      const double boundary = (row + 1) * this->CellHeight;
-      const bool last = boundary >= u1 || row + 1 >= this->Side;
-      // A cell boundary is an entry of the table (the sky's cells per side divide it).
-      const ElevationTerms high = last ? this->termsAt(u1) : this->Terms[(row + 1) * (fineTerms / this->Side)];
-      for (int c = 0; c < count; ++c)
-      {
-        const Column& column = columns[c];
-        const double weight = share *
-          std::max(0.0, column.across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
-        if (!(weight > 0.0))
-          continue;
-        const Spectrum& l = this->Sky.cellRadiance(row, column.iv);
-        result.projectedSolidAngle += weight;
-        for (int band = 0; band < maxBands; ++band)
-          result.irradiance[band] += weight * l[band];
-      }
-      a = last ? u1 : boundary;
-      low = high;
-    }
+    const double phi0 = turn + p * piece;
+    this->hideBand(phi0, phi0 + piece, rotate(this->PieceBoundaries[p]), rotate(this->PieceBoundaries[p + 1]), u0, u1,
+      share, normal, result);
   };
   // Between two sampled azimuths the horizon's bounds are interpolated linearly, over
   // pieces narrow enough for that to hold (the midpoint rule of a linear horizon).
@@ -225,6 +193,100 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
       // two bounds, whatever the band's shape).
       hide(p, lower, blocked, 1.0);
       hide(p, blocked, open, 0.5);
+    }
+  }
+  return result;
+}
+
+double HorizonSky::lowerBound(const Vec3& normal, const SinCos& a)
+{
+  // Below the plane's own horizon the plane receives nothing, below the world's the
+  // sky sends nothing.
+  const double toward = normal.x * a.cos + normal.y * a.sin;
+  return toward >= 0.0 && normal.z > 0.0 ? 0.0 : std::max(0.0, std::atan2(-toward, normal.z));
+}
+
+void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1,
+  double share, const Vec3& normal, HiddenSky& result) const
+{
+  // The sky between azimuths phi0 and phi1 and elevations u0 and u1 taken as hidden,
+  // with weight `share`, cell by cell of the sky (parts below the plane count nothing).
+  if (!(u0 < u1))
+    return;
+  struct Column
+  {
+    double across, width;
+    int iv;
+  };
+  std::array<Column, 16> columns;
+  int count = 0;
+  int m = static_cast<int>(std::floor((phi0 - this->CellStart) / this->CellWidth)) + 1;
+  double b = phi0;
+  SinCos at = start;
+  while (b < phi1 && count < static_cast<int>(columns.size()))
+  {
+    const double boundary = this->CellStart + m * this->CellWidth;
+    const bool last = boundary >= phi1;
+    const SinCos next = last ? end : this->ColumnBoundaries[((m % this->Side) + this->Side) % this->Side];
+    const double bEnd = last ? phi1 : boundary;
+    const int iv = (((this->FirstColumn - m) % this->Side) + this->Side) % this->Side;
+    columns[count++] = { normal.x * (next.sin - at.sin) - normal.y * (next.cos - at.cos), bEnd - b, iv };
+    b = bEnd;
+    at = next;
+    ++m;
+  }
+  int row = std::min(this->Side - 1, static_cast<int>(u0 / this->CellHeight));
+  ElevationTerms low = this->termsAt(u0);
+  for (double a = u0; a < u1; ++row)
+  {
+    const double boundary = (row + 1) * this->CellHeight;
+    const bool last = boundary >= u1 || row + 1 >= this->Side;
+    // A cell boundary is an entry of the table (the sky's cells per side divide it).
+    const ElevationTerms high = last ? this->termsAt(u1) : this->Terms[(row + 1) * (fineTerms / this->Side)];
+    for (int c = 0; c < count; ++c)
+    {
+      const Column& column = columns[c];
+      const double weight = share *
+        std::max(0.0, column.across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
+      if (!(weight > 0.0))
+        continue;
+      const Spectrum& l = this->Sky.cellRadiance(row, column.iv);
+      result.projectedSolidAngle += weight;
+      for (int band = 0; band < maxBands; ++band)
+        result.irradiance[band] += weight * l[band];
+    }
+    a = last ? u1 : boundary;
+    low = high;
+  }
+}
+
+HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const
+{
+  // The map's azimuths, each with its horizon, interpolated between them over pieces
+  // as the sampled azimuths are.
+  HiddenSky result;
+  const MapAzimuths& table = this->MapTable;
+  const int count = static_cast<int>(table.directions.size());
+  std::array<double, HorizonMap::azimuthCount> elevations;
+  std::array<bool, HorizonMap::azimuthCount> open;
+  for (int a = 0; a < count; ++a)
+  {
+    const double lower = lowerBound(normal, table.directions[a]);
+    const double horizon = this->Map->elevation(post, a);
+    open[a] = !(horizon > lower);
+    elevations[a] = std::max(lower, horizon);
+  }
+  for (int a = 0; a < count; ++a)
+  {
+    const int b = (a + 1) % count;
+    if (open[a] && open[b])
+      continue;
+    for (int j = 0; j < piecesPerSector; ++j)
+    {
+      const MapPiece& piece = table.pieces[a * piecesPerSector + j];
+      const double t = (j + 0.5) / piecesPerSector;
+      this->hideBand(piece.phi0, piece.phi1, piece.start, piece.end, lowerBound(normal, piece.middle),
+        (1.0 - t) * elevations[a] + t * elevations[b], 1.0, normal, result);
     }
   }
   return result;

@@ -3,15 +3,18 @@
 // Marks 1987; HORAYZON): over a height field, a direction that is blocked blocks every
 // lower direction of the same azimuth, so what the terrain hides in one azimuth is the
 // sky between the point's lower bound (its plane's horizon or the world's) and the
-// horizon elevation, found by bisection with occlusion rays. That band is integrated
-// exactly in elevation against the sky's cells. A final gather's cosine-weighted rays
-// estimate the same hidden part with binomial noise (a post whose horizon hides 2 % of
-// its sky gets a 1.7 % standard error from 64 rays); here only the azimuths are
-// sampled, evenly, and the horizon between them is interpolated and integrated.
+// horizon elevation, found by bisection with occlusion rays or, at the posts of one
+// terrain, read from the horizons found for all of them at once (horizon_map.h). That
+// band is integrated exactly in elevation against the sky's cells. A final gather's
+// cosine-weighted rays estimate the same hidden part with binomial noise (a post whose
+// horizon hides 2 % of its sky gets a 1.7 % standard error from 64 rays); here only the
+// azimuths are sampled, evenly, and the horizon between them is interpolated and
+// integrated.
 // Only for scenes that are height fields (terrains whose cells all face up, no
 // polygons): under a roof or a tree crown the lower directions of an azimuth can be
 // open again, and rays must sample them.
 
+#include "horizon_map.h"
 #include "radiosity_types.h"
 
 #include <cstdint>
@@ -43,13 +46,18 @@ public:
   static constexpr double bandTolerance = 0.002;
   static constexpr int maximumBisections = 10;
 
-  HorizonSky(const Visibility& rays, const OpenSky& sky);
+  /// `map`, where given, holds the horizons of the terrain's posts (may be null).
+  HorizonSky(const Visibility& rays, const OpenSky& sky, const HorizonMap* map = nullptr);
 
   /// The sky hidden from a point (rays start there, lifted along the unit normal by
   /// the visibility's offset) on a plane of unit normal n; `seed` turns the azimuths.
   /// `coarse`: half the azimuths, for points the solution found open (little to find,
   /// so little to miss between them).
   HiddenSky hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed, bool coarse = false) const;
+  /// The sky hidden from a post of the map's terrain on a plane of unit normal n, from
+  /// the map's horizons (no rays).
+  HiddenSky hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const;
+  const HorizonMap* map() const { return this->Map; }
 
 private:
   struct ElevationTerms
@@ -61,12 +69,18 @@ private:
     double sin, cos;
   };
   static ElevationTerms elevationTerms(double u, double sinU, double cosU);
+  /// The lowest elevation toward azimuth a whose sky can be hidden: the plane's own
+  /// horizon or the world's.
+  static double lowerBound(const Vec3& normal, const SinCos& a);
+  void hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1, double share,
+    const Vec3& normal, HiddenSky& result) const;
   ElevationTerms termsAt(double u) const; // from the table Terms
   /// Entries of Terms; a multiple of every sky's cells per side (at most 2^10).
   static constexpr int fineTerms = 4096;
 
   const Visibility& Rays;
   const OpenSky& Sky;
+  const HorizonMap* Map;
   int Side;                 // the sky's finest cells per parameter
   double CellHeight = 0.0;  // radians of elevation per cell
   double CellWidth = 0.0;   // radians of azimuth per cell
@@ -75,5 +89,16 @@ private:
   std::vector<ElevationTerms> Terms;         // at fineTerms + 1 elevations, 0 to pi / 2
   std::vector<SinCos> ColumnBoundaries;      // at each azimuth cell boundary
   std::vector<SinCos> PieceBoundaries, PieceMiddles; // of the pieces, before a point's turn
+  struct MapPiece
+  {
+    double phi0, phi1;
+    SinCos start, end, middle;
+  };
+  struct MapAzimuths
+  {
+    std::vector<SinCos> directions;
+    std::vector<MapPiece> pieces; // piecesPerSector after each azimuth
+  };
+  MapAzimuths MapTable; // of the map's azimuths, where there is a map
 };
 } // namespace terralux

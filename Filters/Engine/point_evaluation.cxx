@@ -104,8 +104,10 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // into the leaf, toward a centre across a crease, can end that far below the
     // surface the point's normal lifts from.
     const Vec3 lifted = inside + 2.0 * this->Rays->offset() * normal;
+    // A terrain post's horizons come from the map, found for all posts at once.
+    const HorizonMap::Post post = this->PostHorizons ? this->PostHorizons->find(point) : HorizonMap::Post{};
     const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
-      largestBand(sun), this->LargestRadiosity > 0.0);
+      largestBand(sun), this->LargestRadiosity > 0.0, post);
     irradiance[ReflectedLight] = light.surfaces;
     irradiance[SkyLight] = light.sky;
     result.skyViewFactor = light.skyViewFactor;

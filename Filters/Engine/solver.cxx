@@ -99,6 +99,8 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
   this->Gather = std::make_unique<FinalGather>(*this->Rays, this->Roots, this->TerrainRoots, this->Suns);
   this->HeightField = options.skyFromHorizons && scene.polygons.empty() &&
     std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
+  if (this->HeightField && scene.terrains.size() == 1)
+    this->HeightFieldGrid = scene.terrains.front();
   this->Stats.secondsVisibilityBuild = secondsSince(start);
 }
 
@@ -123,8 +125,10 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->Sky = sky;
   this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
   this->Gather->setSky(this->SkyAtPoints.get());
-  this->Horizons = sky && this->HeightField && this->Options.skyFromHorizons
-    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints)
+  if (sky && this->HeightFieldGrid && !this->PostHorizons)
+    this->PostHorizons = std::make_unique<HorizonMap>(*this->HeightFieldGrid);
+  this->Horizons = sky && this->HeightField
+    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get())
     : nullptr;
   this->Gather->setHorizons(this->Horizons.get());
   this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;

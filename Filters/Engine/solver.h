@@ -17,6 +17,7 @@ namespace terralux
 {
 class Cluster;
 class FinalGather;
+class HorizonMap;
 class HorizonSky;
 class OpenSky;
 class PolygonElement;
@@ -168,6 +169,8 @@ private:
   std::unique_ptr<OpenSky> SkyAtPoints;
   std::unique_ptr<HorizonSky> Horizons;
   bool HeightField = false; // terrains facing up and nothing else: horizons hold (checked only when asked for)
+  const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
+  std::unique_ptr<HorizonMap> PostHorizons;      // its posts' horizons, with the first sky
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on

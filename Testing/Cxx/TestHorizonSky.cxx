@@ -2,6 +2,7 @@
 // closed forms and against brute-force rays.
 
 #include "cie_sky.h"
+#include "horizon_map.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
 #include "sampling.h"
@@ -14,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace terralux;
 using namespace terralux_test;
@@ -104,8 +106,11 @@ TEST(HorizonSky, AgreesWithBruteForceRaysOnRoughTerrainUnderAClearSky)
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(75.0 * degree, 1.0)), 100.0, 7);
   const OpenSky open(sky);
   const HorizonSky horizons(rays, open);
+  // The same from the posts' horizons found all at once (horizon_map.h).
+  const HorizonMap map(*grid);
+  const HorizonSky mapped(rays, open, &map);
   int tested = 0;
-  double sumSquares = 0.0;
+  double sumSquares = 0.0, sumSquaresMapped = 0.0;
   for (int j = 8; j < 60; j += 9)
     for (int i = 8; i < 60; i += 9)
     {
@@ -121,9 +126,17 @@ TEST(HorizonSky, AgreesWithBruteForceRaysOnRoughTerrainUnderAClearSky)
       const double error = (hidden.irradiance[0] - expected) / plane[0];
       EXPECT_NEAR(error, 0.0, 0.01) << i << " " << j << ": " << hidden.irradiance[0] << " against " << expected;
       sumSquares += error * error;
+      const HorizonMap::Post post = map.find(p);
+      ASSERT_TRUE(post);
+      const double mappedError = (mapped.hiddenAt(post, n).irradiance[0] - expected) / plane[0];
+      EXPECT_NEAR(mappedError, 0.0, 0.01) << i << " " << j << " (map)";
+      sumSquaresMapped += mappedError * mappedError;
       ++tested;
     }
   EXPECT_LT(std::sqrt(sumSquares / tested), 0.004);
+  EXPECT_LT(std::sqrt(sumSquaresMapped / tested), 0.004);
+  std::printf("hidden sky against brute force, RMS of the open sky: rays %.5f, map %.5f\n",
+    std::sqrt(sumSquares / tested), std::sqrt(sumSquaresMapped / tested));
 }
 
 TEST(HorizonSky, FoldedGridsAndPolygonsKeepTheRays)

@@ -1,0 +1,246 @@
+#include "horizon_map.h"
+
+#include "angles.h"
+#include "terrain_grid.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace terralux
+{
+namespace
+{
+// Floor division and remainder for a positive divisor.
+int floorDivide(int a, int b)
+{
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+/// Where a line of step g crosses a cell edge or diagonal between two of its posts, as
+/// offsets from the step's first post: at fraction t of the step, on the edge from post
+/// (a0, b0) to (a1, b1) at fraction f, between cells c and d (the same for a diagonal).
+struct Crossing
+{
+  double t, f;
+  int a0, b0, a1, b1;
+  int ci, cj, di, dj;
+};
+
+std::vector<Crossing> crossingsOf(int q, int p)
+{
+  std::vector<Crossing> crossings;
+  const int aq = std::abs(q), ap = std::abs(p), as = std::abs(q + p);
+  // Columns u = U between rows B and B + 1.
+  for (int k = 1; k < aq; ++k)
+  {
+    const int U = q > 0 ? k : -k, B = floorDivide(p * k, aq);
+    crossings.push_back({ static_cast<double>(k) / aq, static_cast<double>(p * k - B * aq) / aq, U, B, U, B + 1,
+      U - 1, B, U, B });
+  }
+  // Rows v = V between columns A and A + 1.
+  for (int k = 1; k < ap; ++k)
+  {
+    const int V = p > 0 ? k : -k, A = floorDivide(q * k, ap);
+    crossings.push_back({ static_cast<double>(k) / ap, static_cast<double>(q * k - A * ap) / ap, A, V, A + 1, V,
+      A, V - 1, A, V });
+  }
+  // Diagonals u + v = n inside cell (A, B), from (A + 1, B) to (A, B + 1): never at a
+  // post or an edge when q and p have no common factor.
+  for (int m = 1; m < as; ++m)
+  {
+    const int A = floorDivide(q * m, as), B = floorDivide(p * m, as);
+    crossings.push_back({ static_cast<double>(m) / as, static_cast<double>(p * m - B * as) / as, A + 1, B, A, B + 1,
+      A, B, A, B });
+  }
+  std::sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
+  return crossings;
+}
+
+/// The 32 steps: slopes 0, 1/5, 2/5, 2/3 and 1 in each octant.
+std::vector<std::array<int, 2>> stepsOfAllAzimuths()
+{
+  std::vector<std::array<int, 2>> steps;
+  for (const std::array<int, 2>& s : { std::array<int, 2>{ 1, 0 }, { 5, 1 }, { 5, 2 }, { 3, 2 }, { 1, 1 } })
+    for (int mirror = 0; mirror < 8; ++mirror)
+    {
+      int q = mirror & 1 ? s[1] : s[0], p = mirror & 1 ? s[0] : s[1];
+      q = mirror & 2 ? -q : q;
+      p = mirror & 4 ? -p : p;
+      if (std::find(steps.begin(), steps.end(), std::array<int, 2>{ q, p }) == steps.end())
+        steps.push_back({ q, p });
+    }
+  return steps;
+}
+} // namespace
+
+HorizonMap::HorizonMap(const TerrainGrid& terrain)
+  : Terrain(terrain)
+{
+  this->fitMeanMap();
+  // Azimuths in increasing order, each step's slot its rank.
+  const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths();
+  std::vector<double> azimuths;
+  for (const auto& g : steps)
+  {
+    const double a = std::atan2(this->Uy * g[0] + this->Vy * g[1], this->Ux * g[0] + this->Vx * g[1]);
+    azimuths.push_back(a < 0.0 ? a + 2.0 * pi : a);
+  }
+  std::vector<int> order(steps.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return azimuths[a] < azimuths[b]; });
+  this->Elevations.assign(static_cast<std::size_t>(terrain.postsX()) * terrain.postsY() * azimuthCount, 0);
+  for (std::size_t slot = 0; slot < order.size(); ++slot)
+  {
+    this->Azimuths.push_back(azimuths[order[slot]]);
+    this->sweep(steps[order[slot]][0], steps[order[slot]][1], static_cast<int>(slot));
+  }
+}
+
+void HorizonMap::fitMeanMap()
+{
+  // Mean steps along u and v over the valid cells, and the mean offset: posts outside
+  // valid cells may hold anything.
+  const TerrainGrid& t = this->Terrain;
+  double sx = 0, sy = 0, ux = 0, uy = 0, vx = 0, vy = 0, si = 0, sj = 0;
+  std::size_t count = 0;
+  for (int j = 0; j < t.cellsY(); ++j)
+    for (int i = 0; i < t.cellsX(); ++i)
+      if (t.cellValid(i, j))
+      {
+        const Vec3 p00 = t.post(i, j) - t.origin(), p10 = t.post(i + 1, j) - t.origin(),
+                   p01 = t.post(i, j + 1) - t.origin();
+        ux += p10.x - p00.x, uy += p10.y - p00.y, vx += p01.x - p00.x, vy += p01.y - p00.y;
+        sx += p00.x, sy += p00.y, si += i, sj += j;
+        ++count;
+      }
+  if (count == 0)
+    return;
+  const double n = static_cast<double>(count);
+  this->Ux = ux / n, this->Uy = uy / n, this->Vx = vx / n, this->Vy = vy / n;
+  this->X0 = (sx - this->Ux * si - this->Vx * sj) / n;
+  this->Y0 = (sy - this->Uy * si - this->Vy * sj) / n;
+}
+
+void HorizonMap::sweep(int q, int p, int slot)
+{
+  const TerrainGrid& t = this->Terrain;
+  const int nx = t.postsX(), ny = t.postsY();
+  const std::size_t slots = azimuthCount;
+  const std::vector<Crossing> crossings = crossingsOf(q, p);
+  // Distance along the line: positions projected on the step's mean direction.
+  double dx = this->Ux * q + this->Vx * p, dy = this->Uy * q + this->Vy * p;
+  const double length = std::hypot(dx, dy);
+  if (!(length > 0.0))
+    return;
+  dx /= length, dy /= length;
+  const float* xyz = t.vertices();
+  auto position = [&](int i, int j) { return xyz + 3 * (static_cast<std::size_t>(j) * nx + i); };
+  auto inGrid = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx && j < ny; };
+  auto cellValid = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx - 1 && j < ny - 1 && t.cellValid(i, j); };
+  auto postUsed = [&](int i, int j) {
+    return cellValid(i - 1, j - 1) || cellValid(i, j - 1) || cellValid(i - 1, j) || cellValid(i, j);
+  };
+
+  // A line starts at each post whose step back leaves the grid.
+  std::vector<std::array<int, 2>> starts;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      if (!inGrid(i - q, j - p))
+        starts.push_back({ i, j });
+
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, starts.size(), 16), [&](const tbb::blocked_range<std::size_t>& r) {
+    struct Point
+    {
+      double x, z;
+    };
+    std::vector<Point> hull; // the upper hull of what lies ahead; the nearest last
+    // Drops the hull's nearest points that (x, z) and the next one hide: they are
+    // below the segment between them, so no point nearer sees them as its horizon.
+    auto pop = [&](double x, double z) {
+      while (hull.size() >= 2)
+      {
+        const Point& a = hull[hull.size() - 1];
+        const Point& b = hull[hull.size() - 2];
+        if ((a.z - z) * (b.x - x) <= (b.z - z) * (a.x - x))
+          hull.pop_back();
+        else
+          break;
+      }
+    };
+    for (std::size_t line = r.begin(); line != r.end(); ++line)
+    {
+      const int i0 = starts[line][0], j0 = starts[line][1];
+      int posts = 1;
+      while (inGrid(i0 + posts * q, j0 + posts * p))
+        ++posts;
+      hull.clear();
+      for (int k = posts - 1; k >= 0; --k)
+      {
+        const int i = i0 + k * q, j = j0 + k * p;
+        // The crossings ahead of this post, farthest first (past the last post, those
+        // still inside the grid).
+        for (auto c = crossings.rbegin(); c != crossings.rend(); ++c)
+        {
+          if (!inGrid(i + c->a0, j + c->b0) || !inGrid(i + c->a1, j + c->b1) ||
+            !(cellValid(i + c->ci, j + c->cj) || cellValid(i + c->di, j + c->dj)))
+            continue;
+          const float* a = position(i + c->a0, j + c->b0);
+          const float* b = position(i + c->a1, j + c->b1);
+          const double x = (a[0] + c->f * (b[0] - a[0])) * dx + (a[1] + c->f * (b[1] - a[1])) * dy;
+          const double z = a[2] + c->f * (b[2] - a[2]);
+          pop(x, z);
+          hull.push_back({ x, z });
+        }
+        if (!postUsed(i, j))
+          continue;
+        const float* o = position(i, j);
+        const double x = o[0] * dx + o[1] * dy, z = o[2];
+        pop(x, z);
+        if (!hull.empty() && hull.back().x > x)
+        {
+          const double tangent = (hull.back().z - z) / (hull.back().x - x);
+          if (tangent > 0.0)
+          {
+            const double quantised = std::round(std::atan(tangent) / (0.5 * pi) * 65535.0);
+            this->Elevations[(static_cast<std::size_t>(j) * nx + i) * slots + slot] =
+              static_cast<std::uint16_t>(std::min(65535.0, quantised));
+          }
+        }
+        hull.push_back({ x, z });
+      }
+    }
+  });
+}
+
+HorizonMap::Post HorizonMap::find(const Vec3& point) const
+{
+  const TerrainGrid& t = this->Terrain;
+  const Vec3 r = point - t.origin();
+  const double det = this->Ux * this->Vy - this->Vx * this->Uy;
+  const double x = r.x - this->X0, y = r.y - this->Y0;
+  const double u = (this->Vy * x - this->Vx * y) / det, v = (this->Ux * y - this->Uy * x) / det;
+  if (!(u > -1.0 && v > -1.0 && u < t.postsX() && v < t.postsY()))
+    return {}; // also where the map is singular (NaN)
+  const double tolerance = 0.01 * std::min(std::hypot(this->Ux, this->Uy), std::hypot(this->Vx, this->Vy));
+  const int ic = static_cast<int>(std::lround(u)), jc = static_cast<int>(std::lround(v));
+  for (int j = std::max(0, jc - 1); j <= std::min(t.postsY() - 1, jc + 1); ++j)
+    for (int i = std::max(0, ic - 1); i <= std::min(t.postsX() - 1, ic + 1); ++i)
+      if (glm::length(t.post(i, j) - point) <= tolerance && t.postUsed(i, j))
+        return { true, static_cast<std::size_t>(j) * t.postsX() + i };
+  return {};
+}
+
+double HorizonMap::elevation(const Post& post, int a) const
+{
+  return this->Elevations[post.index * azimuthCount + a] * (0.5 * pi / 65535.0);
+}
+
+std::size_t HorizonMap::memoryBytes() const
+{
+  return this->Elevations.size() * sizeof(std::uint16_t);
+}
+} // namespace terralux

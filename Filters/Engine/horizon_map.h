@@ -1,0 +1,63 @@
+#pragma once
+// The horizon of every post of a height-field terrain grid toward 32 azimuths, found
+// for all posts at once (a scene of one terrain: several grids would hide each other). Toward an azimuth whose step in the grid is a whole number of
+// posts, g = (q, p) (slopes 0, 1/5, 2/5, 2/3, 1 and their mirrors: azimuths 10.5 to
+// 11.9 deg apart on square cells), the posts lie on lines that repeat g, and the
+// terrain along a line is linear between its crossings of cell edges and diagonals,
+// whose pattern is the same on every step. Swept from its far end, a line keeps the
+// upper convex hull of the crossings ahead; the horizon of each post is its tangent to
+// that hull (Dozier, Bruno & Downey 1981; Stewart 1998 for the sectors): amortised
+// constant work per crossing, a few per post and azimuth, instead of a search per post.
+// The horizons are those of the grid's own triangles, as rays see them, at the post
+// itself. Each line is placed by the grid's mean map from parameters to positions: on
+// a grid bent by the Earth's curvature its azimuth is the mean one, to a small fraction
+// of a degree.
+
+#include "radiosity_types.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace terralux
+{
+class TerrainGrid;
+
+class HorizonMap
+{
+public:
+  /// A grid whose cells all face up (TerrainGrid::facesUp), alone in its scene; it
+  /// must outlive this.
+  explicit HorizonMap(const TerrainGrid& terrain);
+  static constexpr int azimuthCount = 32;
+
+  /// A post of the grid.
+  struct Post
+  {
+    bool found = false;
+    std::size_t index = 0; ///< j * postsX + i
+    explicit operator bool() const { return this->found; }
+  };
+  /// The post at `point` (within a hundredth of a cell), or none.
+  Post find(const Vec3& point) const;
+
+  /// The azimuths: radians counter-clockwise from +x, increasing, in [0, 2 pi).
+  const std::vector<double>& azimuths() const { return this->Azimuths; }
+  /// The horizon's elevation at a post toward azimuth a (radians, 0 where nothing
+  /// rises above the horizontal), to 2.4e-5 rad.
+  double elevation(const Post& post, int a) const;
+
+  std::size_t memoryBytes() const;
+
+private:
+  void fitMeanMap();
+  void sweep(int q, int p, int slot);
+
+  const TerrainGrid& Terrain;
+  /// The mean affine map from parameters to xy: x = X0 + Ux u + Vx v, and so on.
+  double X0 = 0.0, Y0 = 0.0, Ux = 1.0, Uy = 0.0, Vx = 0.0, Vy = 1.0;
+  std::vector<double> Azimuths;
+  /// Post by post, each post's azimuths in order; elevation / (pi / 2) x 65535.
+  std::vector<std::uint16_t> Elevations;
+};
+} // namespace terralux
