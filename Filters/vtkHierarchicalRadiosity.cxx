@@ -398,6 +398,7 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   addValue("SecondsRefine", stats.secondsRefine);
   addValue("SecondsGather", stats.secondsGather);
   addValue("SecondsPushPull", stats.secondsPushPull);
+  addValue("SecondsHorizons", stats.secondsHorizons);
   addValue("SecondsPoints", secondsPoints);
   addValue("RaysRefine", static_cast<double>(stats.raysRefine));
   addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));

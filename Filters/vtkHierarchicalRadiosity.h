@@ -35,8 +35,9 @@
  * polygon, e.g. blanked no-data posts); field
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons`, `SkippedCells`
  * (vertex and line cells, and polygons of fewer than 3 points: no area, no light), seconds per
- * phase (`SecondsVisibilityBuild`, `SecondsRefine`, `SecondsGather`, `SecondsPushPull`,
- * `SecondsPoints` for output 0's point values) and rays per phase (`RaysRefine`,
+ * phase (`SecondsVisibilityBuild`, `SecondsHorizons` for the horizons of every post,
+ * `SecondsRefine`, `SecondsGather`, `SecondsPushPull`, `SecondsPoints` for output 0's
+ * point values) and rays per phase (`RaysRefine`,
  * `RaysPushPull` for gather and push-pull, `RaysPoints`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
  * `Level`, and the same point arrays (SkyViewFactor: the leaves' own, under a sky),

@@ -126,7 +126,11 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
   this->Gather->setSky(this->SkyAtPoints.get());
   if (sky && this->HeightFieldGrid && !this->PostHorizons)
+  {
+    const auto start = std::chrono::steady_clock::now();
     this->PostHorizons = std::make_unique<HorizonMap>(*this->HeightFieldGrid);
+    this->Stats.secondsHorizons = secondsSince(start);
+  }
   this->Horizons = sky && this->HeightField
     ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get())
     : nullptr;

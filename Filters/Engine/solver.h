@@ -67,6 +67,7 @@ struct RadiosityStatistics
   double secondsRefine = 0.0;
   double secondsGather = 0.0;
   double secondsPushPull = 0.0;
+  double secondsHorizons = 0.0; ///< the horizons of every post (HorizonMap), with the sky
   /// Rays of each phase of the solve (link visibility in refinement; leaf kernels in
   /// gather and push-pull); the point evaluation's are raysCast() minus their sum.
   std::uint64_t raysRefine = 0;

@@ -73,16 +73,17 @@ def phases(runs):
     rows = [r for r in runs if r["tolerance"] == 1e-3 and "phase_rays" in r]
     if not rows:
         return []
-    lines = ["Time and rays by phase at tolerance 1e-3 (visibility build, refinement, gather and "
-             "push-pull, point values):", "",
+    lines = ["Time and rays by phase at tolerance 1e-3 (visibility build and the posts' horizons, refinement, "
+             "gather and push-pull, point values):", "",
              "| method | time: build / refine / gather, push-pull / points | rays: refine / gather, push-pull / points |",
              "|---|---|---|"]
     for run in rows:
         t, n = run["phase_seconds"], run["phase_rays"]
-        total_t = max(1e-12, t["visibility"] + t["refine"] + t["gather"] + t["push_pull"] + t["points"])
+        build = t["visibility"] + t.get("horizons", 0.0)
+        total_t = max(1e-12, build + t["refine"] + t["gather"] + t["push_pull"] + t["points"])
         total_n = max(1, n["refine"] + n["gather_push_pull"] + n["points"])
         lines.append("| %s | %.0f / %.0f / %.0f / %.0f %% | %.0f / %.0f / %.0f %% |" % (
-            METHODS.get(run["method"], run["method"]), 100 * t["visibility"] / total_t, 100 * t["refine"] / total_t,
+            METHODS.get(run["method"], run["method"]), 100 * build / total_t, 100 * t["refine"] / total_t,
             100 * (t["gather"] + t["push_pull"]) / total_t, 100 * t["points"] / total_t,
             100 * n["refine"] / total_n, 100 * n["gather_push_pull"] / total_n, 100 * n["points"] / total_n))
     lines.append("")

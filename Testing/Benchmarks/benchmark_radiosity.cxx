@@ -72,7 +72,8 @@ int main(int argc, char* argv[])
 
   std::cout << "tolerance " << argv[2] << "  samples " << argv[3] << "  time " << seconds << " s  peak RSS " << usage.ru_maxrss / 1024.0
             << " MiB  elements " << stat("Elements") << "  links " << stat("Links") << "  rays " << stat("Rays")
-            << "  iterations " << stat("Iterations") << "  points " << stat("SecondsPoints") << " s, "
+            << "  iterations " << stat("Iterations") << "  horizons " << stat("SecondsHorizons") << " s  points "
+            << stat("SecondsPoints") << " s, "
             << stat("RaysPoints") << " rays";
   if (argc == 6 && std::strcmp(argv[4], "--write") == 0)
   {
