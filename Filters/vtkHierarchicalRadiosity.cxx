@@ -328,6 +328,10 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
       << ". Raise MaximumIterations.");
   }
 
+  if (this->EvaluateAtPoints)
+  {
+    solver->findPostHorizons();
+  }
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.
   const auto pointsStart = std::chrono::steady_clock::now();

@@ -81,6 +81,9 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
   : Terrain(terrain)
 {
   this->fitMeanMap();
+  for (int j = 0; j < terrain.cellsY() && this->Complete; ++j)
+    for (int i = 0; i < terrain.cellsX() && this->Complete; ++i)
+      this->Complete = terrain.cellValid(i, j);
   // Azimuths in increasing order, each step's slot its rank.
   const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths();
   std::vector<double> azimuths;
@@ -145,6 +148,7 @@ void HorizonMap::sweep(int q, int p, int slot)
     return cellValid(i - 1, j - 1) || cellValid(i, j - 1) || cellValid(i - 1, j) || cellValid(i, j);
   };
 
+  const bool complete = this->Complete;
   // A line starts at each post whose step back leaves the grid.
   std::vector<std::array<int, 2>> starts;
   for (int j = 0; j < ny; ++j)
@@ -181,12 +185,16 @@ void HorizonMap::sweep(int q, int p, int slot)
       for (int k = posts - 1; k >= 0; --k)
       {
         const int i = i0 + k * q, j = j0 + k * p;
+        // Where the step ahead lies inside a grid without missing cells, every crossing
+        // is on terrain and needs no check (most of a DEM).
+        const bool checked = !complete || !inGrid(i + q, j + p);
         // The crossings ahead of this post, farthest first (past the last post, those
         // still inside the grid).
         for (auto c = crossings.rbegin(); c != crossings.rend(); ++c)
         {
-          if (!inGrid(i + c->a0, j + c->b0) || !inGrid(i + c->a1, j + c->b1) ||
-            !(cellValid(i + c->ci, j + c->cj) || cellValid(i + c->di, j + c->dj)))
+          if (checked &&
+            (!inGrid(i + c->a0, j + c->b0) || !inGrid(i + c->a1, j + c->b1) ||
+              !(cellValid(i + c->ci, j + c->cj) || cellValid(i + c->di, j + c->dj))))
             continue;
           const float* a = position(i + c->a0, j + c->b0);
           const float* b = position(i + c->a1, j + c->b1);
@@ -195,7 +203,7 @@ void HorizonMap::sweep(int q, int p, int slot)
           pop(x, z);
           hull.push_back({ x, z });
         }
-        if (!postUsed(i, j))
+        if (!complete && !postUsed(i, j))
           continue;
         const float* o = position(i, j);
         const double x = o[0] * dx + o[1] * dy, z = o[2];

@@ -125,17 +125,22 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->Sky = sky;
   this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
   this->Gather->setSky(this->SkyAtPoints.get());
-  if (sky && this->HeightFieldGrid && !this->PostHorizons)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    this->PostHorizons = std::make_unique<HorizonMap>(*this->HeightFieldGrid);
-    this->Stats.secondsHorizons = secondsSince(start);
-  }
   this->Horizons = sky && this->HeightField
     ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get())
     : nullptr;
   this->Gather->setHorizons(this->Horizons.get());
   this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
+}
+
+void HierarchicalRadiosity::findPostHorizons()
+{
+  if (!this->Horizons || !this->HeightFieldGrid || this->PostHorizons)
+    return;
+  const auto start = std::chrono::steady_clock::now();
+  this->PostHorizons = std::make_unique<HorizonMap>(*this->HeightFieldGrid);
+  this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get());
+  this->Gather->setHorizons(this->Horizons.get());
+  this->Stats.secondsHorizons = secondsSince(start);
 }
 
 OracleSettings HierarchicalRadiosity::oracleSettings() const

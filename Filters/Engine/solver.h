@@ -110,6 +110,10 @@ public:
 
   /// Solves; returns false when aborted through `progress`.
   bool solve(RadiosityProgress* progress = nullptr);
+  /// Before posts are evaluated in a scene of one height-field terrain under a sky:
+  /// the horizons of all its posts at once (HorizonMap), which their sky then reads
+  /// instead of casting rays. Elsewhere it does nothing.
+  void findPostHorizons();
 
   const RadiosityStatistics& statistics() const { return this->Stats; }
   /// Rays cast so far: the solve's and those of later point evaluations.
@@ -171,7 +175,7 @@ private:
   std::unique_ptr<HorizonSky> Horizons;
   bool HeightField = false; // terrains facing up and nothing else: horizons hold (checked only when asked for)
   const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
-  std::unique_ptr<HorizonMap> PostHorizons;      // its posts' horizons, with the first sky
+  std::unique_ptr<HorizonMap> PostHorizons;      // its posts' horizons (findPostHorizons)
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on
