@@ -132,7 +132,9 @@ void HorizonMap::sweep(int q, int p, int slot)
 {
   const TerrainGrid& t = this->Terrain;
   const int nx = t.postsX(), ny = t.postsY();
-  const std::size_t slots = azimuthCount;
+  // Azimuth by azimuth: neighbouring lines, swept one after another, write
+  // neighbouring posts.
+  const std::size_t gridPosts = static_cast<std::size_t>(nx) * ny;
   const std::vector<Crossing> crossings = crossingsOf(q, p);
   // Distance along the line: positions projected on the step's mean direction.
   double dx = this->Ux * q + this->Vx * p, dy = this->Uy * q + this->Vy * p;
@@ -178,11 +180,11 @@ void HorizonMap::sweep(int q, int p, int slot)
     for (std::size_t line = r.begin(); line != r.end(); ++line)
     {
       const int i0 = starts[line][0], j0 = starts[line][1];
-      int posts = 1;
-      while (inGrid(i0 + posts * q, j0 + posts * p))
-        ++posts;
+      int onLine = 1;
+      while (inGrid(i0 + onLine * q, j0 + onLine * p))
+        ++onLine;
       hull.clear();
-      for (int k = posts - 1; k >= 0; --k)
+      for (int k = onLine - 1; k >= 0; --k)
       {
         const int i = i0 + k * q, j = j0 + k * p;
         // Where the step ahead lies inside a grid without missing cells, every crossing
@@ -214,7 +216,7 @@ void HorizonMap::sweep(int q, int p, int slot)
           if (tangent > 0.0)
           {
             const double quantised = std::round(std::atan(tangent) / (0.5 * pi) * 65535.0);
-            this->Elevations[(static_cast<std::size_t>(j) * nx + i) * slots + slot] =
+            this->Elevations[slot * gridPosts + static_cast<std::size_t>(j) * nx + i] =
               static_cast<std::uint16_t>(std::min(65535.0, quantised));
           }
         }
@@ -244,7 +246,8 @@ HorizonMap::Post HorizonMap::find(const Vec3& point) const
 
 double HorizonMap::elevation(const Post& post, int a) const
 {
-  return this->Elevations[post.index * azimuthCount + a] * (0.5 * pi / 65535.0);
+  const std::size_t posts = static_cast<std::size_t>(this->Terrain.postsX()) * this->Terrain.postsY();
+  return this->Elevations[a * posts + post.index] * (0.5 * pi / 65535.0);
 }
 
 std::size_t HorizonMap::memoryBytes() const

@@ -58,7 +58,7 @@ private:
   double X0 = 0.0, Y0 = 0.0, Ux = 1.0, Uy = 0.0, Vx = 0.0, Vy = 1.0;
   bool Complete = true; ///< no missing cells
   std::vector<double> Azimuths;
-  /// Post by post, each post's azimuths in order; elevation / (pi / 2) x 65535.
+  /// Azimuth by azimuth, each azimuth's posts in order; elevation / (pi / 2) x 65535.
   std::vector<std::uint16_t> Elevations;
 };
 } // namespace terralux

@@ -4,6 +4,7 @@
 // receives pi L (1 + cos b) / 2.
 #include "vtk_test_support.h"
 
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkHierarchicalRadiosity.h"
 #include "vtkImageData.h"
@@ -102,5 +103,40 @@ TEST(SkyTransport, TiltedPlaneUnderAUniformSky)
     const double expected = 100.0 * (1.0 + std::cos(slope * M_PI / 180.0)) / 2.0;
     for (bool atPoints : { true, false })
       EXPECT_LT(worstSkyError(terrain, sky, atPoints, expected), 1e-3) << atPoints;
+  }
+}
+
+TEST(SkyTransport, ValleyBottomPostsSeeCosOfTheSlopeFromTheirHorizons)
+{
+  // A straight V valley 2 km long whose sides rise at `slope` to 50 m: a post on its
+  // floor sees a uniform sky's cos(slope) (horizons at atan(tan b |sin phi|) across
+  // the valley's axis). Evaluated at the posts, the sky comes from the horizons of all
+  // posts found at once (SecondsHorizons), not from rays.
+  for (double slope : { 20.0, 40.0 })
+  {
+    SCOPED_TRACE(slope);
+    const double t = std::tan(slope * M_PI / 180.0);
+    auto terrain = heightField(201, 10.0, [t](double, double y) { return std::min(50.0, std::abs(y - 1000.0) * t); });
+    vtkNew<vtkSkySource> sky;
+    sky->UseSunSourceOff();
+    sky->SetSkyModelToUniform();
+    sky->SetDiffuseHorizontalIrradiance(100.0);
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputConnection(terrain->GetOutputPort());
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    radiosity->SetDefaultReflectance(0.0);
+    vtkNew<MessageCatcher> messages;
+    ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+    vtkDataSet* output = vtkDataSet::SafeDownCast(radiosity->GetOutput());
+    EXPECT_GT(output->GetFieldData()->GetArray("SecondsHorizons")->GetTuple1(0), 0.0);
+    vtkDataArray* values = output->GetPointData()->GetArray("SkyIrradiance");
+    // The floor's posts (row 100), away from the valley's ends.
+    for (int i = 60; i <= 140; i += 8)
+      EXPECT_NEAR(values->GetComponent(i + 100 * 201, 0), 100.0 * std::cos(slope * M_PI / 180.0), 0.5) << i;
+    // The interpolated output needs no horizons.
+    radiosity->SetEvaluateAtPoints(false);
+    ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+    output = vtkDataSet::SafeDownCast(radiosity->GetOutput());
+    EXPECT_EQ(output->GetFieldData()->GetArray("SecondsHorizons")->GetTuple1(0), 0.0);
   }
 }
