@@ -136,6 +136,11 @@ void HierarchicalRadiosity::findPostHorizons()
 {
   if (!this->Horizons || !this->HeightFieldGrid || this->PostHorizons)
     return;
+  // 64 bytes a post: beyond 2 GiB (5,800^2 posts) the posts keep the rays' horizons,
+  // slower but within the memory the rest of the solve needs.
+  const double bytes = 2.0 * HorizonMap::azimuthCount * this->HeightFieldGrid->postsX() * this->HeightFieldGrid->postsY();
+  if (bytes > 2147483648.0)
+    return;
   const auto start = std::chrono::steady_clock::now();
   this->PostHorizons = std::make_unique<HorizonMap>(*this->HeightFieldGrid);
   this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get());

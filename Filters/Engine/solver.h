@@ -111,8 +111,8 @@ public:
   /// Solves; returns false when aborted through `progress`.
   bool solve(RadiosityProgress* progress = nullptr);
   /// Before posts are evaluated in a scene of one height-field terrain under a sky:
-  /// the horizons of all its posts at once (HorizonMap), which their sky then reads
-  /// instead of casting rays. Elsewhere it does nothing.
+  /// the horizons of all its posts at once (HorizonMap, 64 bytes a post, up to 2 GiB),
+  /// which their sky then reads instead of casting rays. Elsewhere it does nothing.
   void findPostHorizons();
 
   const RadiosityStatistics& statistics() const { return this->Stats; }
