@@ -231,10 +231,12 @@ HorizonMap::Post HorizonMap::find(const Vec3& point) const
   const TerrainGrid& t = this->Terrain;
   const Vec3 r = point - t.origin();
   const double det = this->Ux * this->Vy - this->Vx * this->Uy;
+  if (!(std::abs(det) > 0.0))
+    return {}; // a grid without area has no posts to find
   const double x = r.x - this->X0, y = r.y - this->Y0;
   const double u = (this->Vy * x - this->Vx * y) / det, v = (this->Ux * y - this->Uy * x) / det;
   if (!(u > -1.0 && v > -1.0 && u < t.postsX() && v < t.postsY()))
-    return {}; // also where the map is singular (NaN)
+    return {}; // also for points that are not numbers
   const double tolerance = 0.01 * std::min(std::hypot(this->Ux, this->Uy), std::hypot(this->Vx, this->Vy));
   const int ic = static_cast<int>(std::lround(u)), jc = static_cast<int>(std::lround(v));
   for (int j = std::max(0, jc - 1); j <= std::min(t.postsY() - 1, jc + 1); ++j)
