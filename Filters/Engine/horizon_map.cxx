@@ -81,9 +81,6 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
   : Terrain(terrain)
 {
   this->fitMeanMap();
-  for (int j = 0; j < terrain.cellsY() && this->Complete; ++j)
-    for (int i = 0; i < terrain.cellsX() && this->Complete; ++i)
-      this->Complete = terrain.cellValid(i, j);
   // Azimuths in increasing order, each step's slot its rank.
   const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths();
   std::vector<double> azimuths;
@@ -106,7 +103,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
 void HorizonMap::fitMeanMap()
 {
   // Mean steps along u and v over the valid cells, and the mean offset: posts outside
-  // valid cells may hold anything.
+  // valid cells may hold anything. Counting them also tells whether any is missing.
   const TerrainGrid& t = this->Terrain;
   double sx = 0, sy = 0, ux = 0, uy = 0, vx = 0, vy = 0, si = 0, sj = 0;
   std::size_t count = 0;
@@ -120,6 +117,7 @@ void HorizonMap::fitMeanMap()
         sx += p00.x, sy += p00.y, si += i, sj += j;
         ++count;
       }
+  this->Complete = count == static_cast<std::size_t>(t.cellsX()) * t.cellsY();
   if (count == 0)
     return;
   const double n = static_cast<double>(count);
@@ -146,9 +144,6 @@ void HorizonMap::sweep(int q, int p, int slot)
   auto position = [&](int i, int j) { return xyz + 3 * (static_cast<std::size_t>(j) * nx + i); };
   auto inGrid = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx && j < ny; };
   auto cellValid = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx - 1 && j < ny - 1 && t.cellValid(i, j); };
-  auto postUsed = [&](int i, int j) {
-    return cellValid(i - 1, j - 1) || cellValid(i, j - 1) || cellValid(i - 1, j) || cellValid(i, j);
-  };
 
   const bool complete = this->Complete;
   // A line starts at each post whose step back leaves the grid.
@@ -205,7 +200,7 @@ void HorizonMap::sweep(int q, int p, int slot)
           pop(x, z);
           hull.push_back({ x, z });
         }
-        if (!complete && !postUsed(i, j))
+        if (!complete && !t.postUsed(i, j))
           continue;
         const float* o = position(i, j);
         const double x = o[0] * dx + o[1] * dy, z = o[2];
@@ -250,10 +245,5 @@ double HorizonMap::elevation(const Post& post, int a) const
 {
   const std::size_t posts = static_cast<std::size_t>(this->Terrain.postsX()) * this->Terrain.postsY();
   return this->Elevations[a * posts + post.index] * (0.5 * pi / 65535.0);
-}
-
-std::size_t HorizonMap::memoryBytes() const
-{
-  return this->Elevations.size() * sizeof(std::uint16_t);
 }
 } // namespace terralux

@@ -1,8 +1,9 @@
 #pragma once
 // The horizon of every post of a height-field terrain grid toward 32 azimuths, found
-// for all posts at once (a scene of one terrain: several grids would hide each other). Toward an azimuth whose step in the grid is a whole number of
-// posts, g = (q, p) (slopes 0, 1/5, 2/5, 2/3, 1 and their mirrors: azimuths 10.5 to
-// 11.9 deg apart on square cells), the posts lie on lines that repeat g, and the
+// for all posts at once (a scene of one terrain: several grids would hide each other).
+// Toward an azimuth whose step in the grid is a whole number of posts, g = (q, p)
+// (slopes 0, 1/5, 2/5, 2/3, 1 and their mirrors: azimuths 10.5 to 11.9 deg apart on
+// square cells), the posts lie on lines that repeat g, and the
 // terrain along a line is linear between its crossings of cell edges and diagonals,
 // whose pattern is the same on every step. Swept from its far end, a line keeps the
 // upper convex hull of the crossings ahead; the horizon of each post is its tangent to
@@ -47,8 +48,6 @@ public:
   /// rises above the horizontal), to 2.4e-5 rad.
   double elevation(const Post& post, int a) const;
 
-  std::size_t memoryBytes() const;
-
 private:
   void fitMeanMap();
   void sweep(int q, int p, int slot);
@@ -56,7 +55,7 @@ private:
   const TerrainGrid& Terrain;
   /// The mean affine map from parameters to xy: x = X0 + Ux u + Vx v, and so on.
   double X0 = 0.0, Y0 = 0.0, Ux = 1.0, Uy = 0.0, Vx = 0.0, Vy = 1.0;
-  bool Complete = true; ///< no missing cells
+  bool Complete = true; ///< no missing cells (from fitMeanMap)
   std::vector<double> Azimuths;
   /// Azimuth by azimuth, each azimuth's posts in order; elevation / (pi / 2) x 65535.
   std::vector<std::uint16_t> Elevations;
