@@ -5,12 +5,15 @@
 #include "sky_importance.h"
 #include "link_transport.h"
 #include "open_sky.h"
+#include "post_sky.h"
 #include "sampling.h"
+#include "terrain_directions.h"
 #include "terrain_patch.h"
 #include "visibility.h"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace terralux
 {
@@ -47,6 +50,13 @@ void FinalGather::setSky(const OpenSky* sky)
   this->SkySamples = sky ? std::make_unique<SkyImportance>(*sky) : nullptr;
 }
 
+void FinalGather::setHorizons(const HorizonSky* horizons)
+{
+  this->Horizons = horizons;
+  this->TerrainDirectionsOfPosts =
+    horizons && horizons->map() ? std::make_unique<TerrainDirectionTable>(*horizons->map()) : nullptr;
+}
+
 void FinalGather::prepareSuns()
 {
   this->SunCumulative.clear();
@@ -78,10 +88,13 @@ Spectrum FinalGather::radiosityAt(
     for (int band = 0; band < maxBands; ++band)
       sun[band] = transport * flux[band];
   }
+  // The sky at a hit on a terrain whose posts' skies are known: between its posts.
+  Spectrum sky = e[SkyLight];
+  if (this->PostSkies && hit.terrain == 0) // the scene's one terrain
+    this->PostSkies->interpolate(hit.u, hit.v, sky);
   Spectrum b;
   for (int band = 0; band < maxBands; ++band)
-    b[band] =
-      leaf.emission()[band] + leaf.reflectance()[band] * (sun[band] + e[SkyLight][band] + e[ReflectedLight][band]);
+    b[band] = leaf.emission()[band] + leaf.reflectance()[band] * (sun[band] + sky[band] + e[ReflectedLight][band]);
   return b;
 }
 
@@ -166,36 +179,48 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   std::uint64_t seed, double directIrradiance, bool surfacesSend, const HorizonMap::Post& post) const
 {
   GatheredLight result;
-  Spectrum open{};
-  double openOmega = 0.0;
-  if (this->Sky)
-    this->Sky->irradiance(normal, open, openOmega);
-  // The sky the scene hides: over a height field from the point's horizon, elsewhere
-  // from rays drawn by the sky's radiance. What is left is the sky the point receives.
+  // The sky the scene hides: over a height field from the point's horizon (at a post of
+  // the horizons' map, read from it), elsewhere from rays drawn by the sky's radiance.
+  // What is left of the open sky is the sky the point receives.
   const bool horizons = this->Sky && this->Horizons;
-  Spectrum hidden{};
-  if (horizons)
+  double openOmega = 0.0; // projected solid angle of the sky seen
+  if (horizons && post && this->Horizons->map())
   {
-    const HiddenSky horizon = post && this->Horizons->map()
-      ? this->Horizons->hiddenAt(post, normal)
-      : this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull, budget.coarseHorizon);
-    hidden = horizon.irradiance;
-    openOmega = std::max(0.0, openOmega - horizon.projectedSolidAngle);
-    result.rays += horizon.rays;
+    PostSky::Value value;
+    if (!this->PostSkies || !this->PostSkies->found(post, normal, value))
+      value = PostSky::at(post, normal, *this->Horizons, *this->Sky);
+    result.sky = value.irradiance;
+    openOmega = pi * value.skyViewFactor;
   }
   else if (this->Sky)
   {
+    Spectrum open{}, hidden{};
+    this->Sky->irradiance(normal, open, openOmega);
     double hiddenOmega = 0.0;
-    hidden = this->hiddenSkyByRadiance(
-      point, normal, budget, seed, directIrradiance + largestBand(open), hiddenOmega, result.rays);
+    if (horizons)
+    {
+      const HiddenSky horizon =
+        this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull, budget.coarseHorizon);
+      hidden = horizon.irradiance;
+      hiddenOmega = horizon.projectedSolidAngle;
+      result.rays += horizon.rays;
+    }
+    else
+      hidden = this->hiddenSkyByRadiance(
+        point, normal, budget, seed, directIrradiance + largestBand(open), hiddenOmega, result.rays);
     openOmega = std::max(0.0, openOmega - hiddenOmega);
+    for (int band = 0; band < maxBands; ++band)
+      result.sky[band] = std::max(0.0, open[band] - hidden[band]);
   }
-  for (int band = 0; band < maxBands; ++band)
-    result.sky[band] = std::max(0.0, open[band] - hidden[band]);
 
-  // Light from surfaces by cosine-weighted rays.
-  Spectrum surfaces{};
-  // Each ray's share of what surfaces send (largest band); its spread sets how many
+  // Light from surfaces by rays: at a post of the horizons' map drawn below its horizon
+  // (the sky above it is counted already), elsewhere cosine-weighted over the hemisphere.
+  std::optional<TerrainDirections> belowHorizon;
+  if (horizons && post && this->TerrainDirectionsOfPosts)
+    belowHorizon.emplace(*this->TerrainDirectionsOfPosts, post, normal);
+  Spectrum surfaces{}, skyCorrection{};
+  double skyViewCorrection = 0.0; // projected solid angle
+  // Each ray's estimate of what surfaces send (largest band); its spread sets how many
   // rays are needed. A pilot of budget.pilot rays of their own sets how many rays the
   // point needs; the estimate then comes from that many fresh stratified rays. Rays that
   // decided when to stop would be biased: they stop early where they happened to miss
@@ -209,33 +234,55 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     const double sunStart = this->SunCumulative.empty() ? 0.0 : random.uniform();
     sum = sumOfSquares = 0.0;
     surfaces = Spectrum{};
-    for (int k = 0; k < count; ++k)
-    {
-      double s, t;
-      stratifiedPoint(k, count, random, s, t);
-      const Vec3 d = frame.direction(s, t);
+    skyCorrection = Spectrum{};
+    skyViewCorrection = 0.0;
+    // One ray's estimate of what the point receives beyond the exact sky (largest band).
+    auto gather = [&](int k, double s, double t) -> double {
+      TerrainDirections::Sample below;
+      if (belowHorizon)
+        below = belowHorizon->sample(s, t);
+      const double weight = belowHorizon ? below.weight : 1.0;
+      const Vec3 d = belowHorizon ? below.direction : frame.direction(s, t);
+      if (!(weight > 0.0))
+        return 0.0;
       SurfaceHit hit;
-      if (!this->Rays.firstHit(point, normal, d, hit))
-        continue;
-      const PolygonElement* leaf = this->leafAt(hit);
+      const bool met = this->Rays.firstHit(point, normal, d, hit);
+      double value = 0.0;
+      // Below the horizon: where the interpolated horizon was wrong, the sky it took as
+      // hidden is seen, or the sky it took as seen is hidden (see TerrainDirections).
+      if (belowHorizon && below.skyTaken == (met ? -1 : 1))
+      {
+        const Spectrum l = this->Sky->radiance(d);
+        for (int band = 0; band < maxBands; ++band)
+          skyCorrection[band] += below.skyTaken * pi * weight * l[band];
+        skyViewCorrection += below.skyTaken * pi * weight;
+        value += below.skyTaken * pi * weight * largestBand(l);
+      }
+      const PolygonElement* leaf = met ? this->leafAt(hit) : nullptr;
       if (!leaf)
-        continue;
+        return value;
       // The triangle's own normal, turned to the side its leaf faces; the back of a
       // one-sided surface sends nothing.
       const Vec3 front = glm::dot(hit.normal, leaf->normal()) < 0.0 ? -hit.normal : hit.normal;
       if (!(glm::dot(front, d) < 0.0))
-        continue;
+        return value;
       const double sunSample = std::fmod(sunStart + 0.61803398874989485 * k, 1.0);
       const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample);
       for (int band = 0; band < maxBands; ++band)
-        surfaces[band] += b[band];
-      const double value = largestBand(b);
+        surfaces[band] += weight * b[band];
+      return value + weight * largestBand(b);
+    };
+    for (int k = 0; k < count; ++k)
+    {
+      double s, t;
+      stratifiedPoint(k, count, random, s, t);
+      const double value = gather(k, s, t);
       sum += value;
       sumOfSquares += value * value;
     }
   };
   SampleGenerator pilotRandom(seed ^ 0x5851F42D4C957F2Dull), random(seed);
-  int count = surfacesSend ? budget.maximum : 0;
+  int count = surfacesSend && !(belowHorizon && belowHorizon->empty()) ? budget.maximum : 0;
   if (count > 0 && pilotDecides(budget))
   {
     cast(budget.pilot, pilotRandom);
@@ -246,9 +293,14 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // E = pi x the mean radiance over cosine-weighted directions: the mean radiosity.
   const double perRay = count > 0 ? 1.0 / count : 0.0;
   for (int band = 0; band < maxBands; ++band)
+  {
     result.surfaces[band] = surfaces[band] * perRay;
+    result.sky[band] = std::max(0.0, result.sky[band] + skyCorrection[band] * perRay);
+  }
   if (this->Sky)
-    result.skyViewFactor = openOmega / pi;
+    // Within what the plane could see of the sky at most, whatever the corrections' noise.
+    result.skyViewFactor =
+      std::clamp((openOmega + skyViewCorrection * perRay) / pi, 0.0, 0.5 * (1.0 + std::clamp(normal.z, -1.0, 1.0)));
   result.rays += count;
   return result;
 }

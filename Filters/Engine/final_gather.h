@@ -17,7 +17,9 @@ class HElement;
 class HorizonSky;
 class OpenSky;
 class PolygonElement;
+class PostSky;
 class SkyImportance;
+class TerrainDirectionTable;
 class TerrainPatch;
 class Visibility;
 
@@ -75,7 +77,12 @@ public:
   /// With horizons (a scene that is a height field), the sky the scene hides comes from
   /// the point's horizon instead of the rays, which then gather surfaces alone.
   /// Without them, the hidden sky comes from occlusion rays drawn by the sky's radiance.
-  void setHorizons(const HorizonSky* horizons) { this->Horizons = horizons; }
+  /// At a post of the horizons' map, the surfaces' rays are drawn below the post's
+  /// horizon only (TerrainDirections): the sky above it is the horizons' part.
+  void setHorizons(const HorizonSky* horizons);
+  /// The skies of the posts of the scene's one terrain (a height field): a hit on it
+  /// sends the sky read between them instead of its leaf's average.
+  void setPostSkies(const PostSky* skies) { this->PostSkies = skies; }
   /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
   /// at every hit; more (the sun positions of a day or a year, summed in one solve)
   /// would multiply the gather's rays, so a hit then takes one sun, chosen in
@@ -104,7 +111,9 @@ private:
   const std::vector<HElement*>& Suns;
   const OpenSky* Sky = nullptr;
   const HorizonSky* Horizons = nullptr;
+  const PostSky* PostSkies = nullptr;
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
+  std::unique_ptr<TerrainDirectionTable> TerrainDirectionsOfPosts; // with the horizons' map
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };
 

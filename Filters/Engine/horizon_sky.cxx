@@ -43,6 +43,25 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const Horizon
     const double u = k * 0.5 * pi / fineTerms;
     this->Terms.push_back(elevationTerms(u, std::sin(u), std::cos(u)));
   }
+  this->ColumnSums.resize(static_cast<std::size_t>(this->Side) * (this->Side + 1));
+  for (int iv = 0; iv < this->Side; ++iv)
+  {
+    RadianceTerms sum{};
+    RadianceTerms* column = &this->ColumnSums[static_cast<std::size_t>(iv) * (this->Side + 1)];
+    column[0] = sum;
+    for (int row = 0; row < this->Side; ++row)
+    {
+      const ElevationTerms& low = this->Terms[row * (fineTerms / this->Side)];
+      const ElevationTerms& high = this->Terms[(row + 1) * (fineTerms / this->Side)];
+      const Spectrum& l = sky.cellRadiance(row, iv);
+      for (int band = 0; band < maxBands; ++band)
+      {
+        sum.along[band] += l[band] * (high.along - low.along);
+        sum.up[band] += l[band] * (high.up - low.up);
+      }
+      column[row + 1] = sum;
+    }
+  }
   for (int m = 0; m < this->Side; ++m)
   {
     const double phi = this->CellStart + m * this->CellWidth;
@@ -203,7 +222,11 @@ double HorizonSky::lowerBound(const Vec3& normal, const SinCos& a)
   // Below the plane's own horizon the plane receives nothing, below the world's the
   // sky sends nothing.
   const double toward = normal.x * a.cos + normal.y * a.sin;
-  return toward >= 0.0 && normal.z > 0.0 ? 0.0 : std::max(0.0, std::atan2(-toward, normal.z));
+  if (toward >= 0.0 && normal.z > 0.0)
+    return 0.0;
+  // The plane's elevation there, asin(-toward / |(toward, nz)|), by its sine.
+  return normal.z > 0.0 ? std::asin(-toward / std::sqrt(toward * toward + normal.z * normal.z))
+                        : std::max(0.0, std::atan2(-toward, normal.z));
 }
 
 void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1,
@@ -235,29 +258,40 @@ void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const S
     at = next;
     ++m;
   }
-  int row = std::min(this->Side - 1, static_cast<int>(u0 / this->CellHeight));
-  ElevationTerms low = this->termsAt(u0);
-  for (double a = u0; a < u1; ++row)
+  // Each column at once, from the running sums of its radiance-weighted terms (the
+  // cosine is linear in them, so it needs no cell-by-cell loop). A column whose band
+  // lies behind the plane on balance counts nothing.
+  const ElevationTerms low = this->termsAt(u0), high = this->termsAt(u1);
+  for (int c = 0; c < count; ++c)
   {
-    const double boundary = (row + 1) * this->CellHeight;
-    const bool last = boundary >= u1 || row + 1 >= this->Side;
-    // A cell boundary is an entry of the table (the sky's cells per side divide it).
-    const ElevationTerms high = last ? this->termsAt(u1) : this->Terms[(row + 1) * (fineTerms / this->Side)];
-    for (int c = 0; c < count; ++c)
-    {
-      const Column& column = columns[c];
-      const double weight = share *
-        std::max(0.0, column.across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
-      if (!(weight > 0.0))
-        continue;
-      const Spectrum& l = this->Sky.cellRadiance(row, column.iv);
-      result.projectedSolidAngle += weight;
-      for (int band = 0; band < maxBands; ++band)
-        result.irradiance[band] += weight * l[band];
-    }
-    a = last ? u1 : boundary;
-    low = high;
+    const Column& column = columns[c];
+    const double weight = share *
+      (column.across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
+    if (!(weight > 0.0))
+      continue;
+    const RadianceTerms bottom = this->columnSumAt(column.iv, u0, low);
+    const RadianceTerms top = this->columnSumAt(column.iv, u1, high);
+    result.projectedSolidAngle += weight;
+    for (int band = 0; band < maxBands; ++band)
+      result.irradiance[band] += std::max(0.0, share *
+        (column.across * (top.along[band] - bottom.along[band]) +
+          normal.z * column.width * (top.up[band] - bottom.up[band])));
   }
+}
+
+HorizonSky::RadianceTerms HorizonSky::columnSumAt(int iv, double u, const ElevationTerms& terms) const
+{
+  // The sums up to the row boundary below u, and the part of u's row up to u.
+  const int row = std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1);
+  RadianceTerms sum = this->ColumnSums[static_cast<std::size_t>(iv) * (this->Side + 1) + row];
+  const ElevationTerms& boundary = this->Terms[row * (fineTerms / this->Side)];
+  const Spectrum& l = this->Sky.cellRadiance(row, iv);
+  for (int band = 0; band < maxBands; ++band)
+  {
+    sum.along[band] += l[band] * (terms.along - boundary.along);
+    sum.up[band] += l[band] * (terms.up - boundary.up);
+  }
+  return sum;
 }
 
 HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const

@@ -87,6 +87,15 @@ private:
   double CellStart = 0.0;   // the first azimuth cell boundary
   int FirstColumn = 0;      // the sky's azimuth index of the cell before CellStart, + 1
   std::vector<ElevationTerms> Terms;         // at fineTerms + 1 elevations, 0 to pi / 2
+  /// Column by column of the sky, the radiance-weighted elevation terms summed from the
+  /// horizon up to each row boundary (Side + 1 per column): a band of any height costs
+  /// its two ends, not a cell per row.
+  struct RadianceTerms
+  {
+    Spectrum along, up;
+  };
+  std::vector<RadianceTerms> ColumnSums;
+  RadianceTerms columnSumAt(int iv, double u, const ElevationTerms& terms) const;
   std::vector<SinCos> ColumnBoundaries;      // at each azimuth cell boundary
   std::vector<SinCos> PieceBoundaries, PieceMiddles; // of the pieces, before a point's turn
   struct MapPiece

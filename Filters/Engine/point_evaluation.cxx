@@ -91,6 +91,12 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     budget.maximum = this->Options.gatherSamples;
     budget.minimum = std::min(budget.minimum, budget.maximum);
     budget.relativeError = this->Options.gatherError;
+    // A terrain post's horizons come from the map, found for all posts at once.
+    const HorizonMap::Post post = this->PostHorizons ? this->PostHorizons->find(point) : HorizonMap::Post{};
+    // There the rays are drawn below the post's horizon, where nearly every one meets
+    // terrain: far fewer are needed than over the hemisphere (see TerrainDirections).
+    if (post)
+      budget.pilot = budget.minimum = std::min(budget.maximum, 16);
     // A leaf the solution found open (nearly all the sky its plane could see, next to
     // no light from surfaces) needs no pilot: its points take the fewest rays. The
     // decision comes from the solution, not from rays the estimate uses, so it keeps
@@ -104,8 +110,6 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // into the leaf, toward a centre across a crease, can end that far below the
     // surface the point's normal lifts from.
     const Vec3 lifted = inside + 2.0 * this->Rays->offset() * normal;
-    // A terrain post's horizons come from the map, found for all posts at once.
-    const HorizonMap::Post post = this->PostHorizons ? this->PostHorizons->find(point) : HorizonMap::Post{};
     const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
       largestBand(sun), this->LargestRadiosity > 0.0, post);
     irradiance[ReflectedLight] = light.surfaces;

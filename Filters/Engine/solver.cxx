@@ -6,6 +6,7 @@
 #include "error.h"
 #include "final_gather.h"
 #include "horizon_sky.h"
+#include "post_sky.h"
 #include "open_sky.h"
 #include "link_transport.h"
 #include "polygon_element.h"
@@ -145,6 +146,9 @@ void HierarchicalRadiosity::findPostHorizons()
   this->PostHorizons = std::make_unique<HorizonMap>(*this->HeightFieldGrid);
   this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get());
   this->Gather->setHorizons(this->Horizons.get());
+  this->PostSkies =
+    std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints);
+  this->Gather->setPostSkies(this->PostSkies.get());
   this->Stats.secondsHorizons = secondsSince(start);
 }
 

@@ -19,6 +19,7 @@ class Cluster;
 class FinalGather;
 class HorizonMap;
 class HorizonSky;
+class PostSky;
 class OpenSky;
 class PolygonElement;
 class SkyHierarchy;
@@ -176,6 +177,7 @@ private:
   bool HeightField = false; // terrains facing up and nothing else: horizons hold (checked only when asked for)
   const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
   std::unique_ptr<HorizonMap> PostHorizons;      // its posts' horizons (findPostHorizons)
+  std::unique_ptr<PostSky> PostSkies;            // and the sky each of them receives
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on

@@ -1,0 +1,94 @@
+#include "post_sky.h"
+
+#include "angles.h"
+#include "horizon_sky.h"
+#include "open_sky.h"
+#include "terrain_grid.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace terralux
+{
+PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky)
+  : Terrain(terrain)
+{
+  const int nx = terrain.postsX(), ny = terrain.postsY();
+  const std::size_t posts = static_cast<std::size_t>(nx) * ny;
+  this->Values.assign(posts, {});
+  this->Used.assign(posts, 0);
+  tbb::parallel_for(0, ny, [&](int j) {
+    for (int i = 0; i < nx; ++i)
+    {
+      if (!terrain.postUsed(i, j))
+        continue;
+      HorizonMap::Post post;
+      post.found = true;
+      post.index = static_cast<std::size_t>(j) * nx + i;
+      const Value value = at(post, terrain.postNormal(i, j), horizons, sky);
+      for (int band = 0; band < maxBands; ++band)
+        this->Values[post.index][band] = static_cast<float>(value.irradiance[band]);
+      this->Values[post.index][maxBands] = static_cast<float>(value.skyViewFactor);
+      this->Used[post.index] = 1;
+    }
+  });
+}
+
+PostSky::Value PostSky::at(const HorizonMap::Post& post, const Vec3& normal, const HorizonSky& horizons, const OpenSky& sky)
+{
+  Value result;
+  Spectrum open{};
+  double openOmega = 0.0;
+  sky.irradiance(normal, open, openOmega);
+  const HiddenSky hidden = horizons.hiddenAt(post, normal);
+  for (int band = 0; band < maxBands; ++band)
+    result.irradiance[band] = std::max(0.0, open[band] - hidden.irradiance[band]);
+  result.skyViewFactor = std::max(0.0, openOmega - hidden.projectedSolidAngle) / pi;
+  return result;
+}
+
+bool PostSky::found(const HorizonMap::Post& post, const Vec3& normal, Value& value) const
+{
+  if (!post || post.index >= this->Used.size() || !this->Used[post.index])
+    return false;
+  const int nx = this->Terrain.postsX();
+  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
+  // Stored as floats: the same normal to 1e-6 gives the same sky to about 1e-6.
+  if (glm::length(this->Terrain.postNormal(i, j) - normal) > 1e-6)
+    return false;
+  for (int band = 0; band < maxBands; ++band)
+    value.irradiance[band] = this->Values[post.index][band];
+  value.skyViewFactor = this->Values[post.index][maxBands];
+  return true;
+}
+
+bool PostSky::interpolate(double u, double v, Spectrum& irradiance) const
+{
+  const int nx = this->Terrain.postsX(), ny = this->Terrain.postsY();
+  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, std::max(0, nx - 2));
+  const int j = std::clamp(static_cast<int>(std::floor(v)), 0, std::max(0, ny - 2));
+  const double fu = std::clamp(u - i, 0.0, 1.0), fv = std::clamp(v - j, 0.0, 1.0);
+  irradiance = Spectrum{};
+  double total = 0.0;
+  for (int dj = 0; dj < 2; ++dj)
+    for (int di = 0; di < 2; ++di)
+    {
+      if (i + di >= nx || j + dj >= ny)
+        continue;
+      const std::size_t index = static_cast<std::size_t>(j + dj) * nx + (i + di);
+      const double w = (di ? fu : 1.0 - fu) * (dj ? fv : 1.0 - fv);
+      if (!this->Used[index] || !(w > 0.0))
+        continue;
+      total += w;
+      for (int band = 0; band < maxBands; ++band)
+        irradiance[band] += w * this->Values[index][band];
+    }
+  if (!(total > 0.0))
+    return false;
+  for (double& band : irradiance)
+    band /= total;
+  return true;
+}
+} // namespace terralux

@@ -1,0 +1,50 @@
+#pragma once
+// The sky each post of a height-field terrain receives, found once from the horizons'
+// map, and read between posts where a final gather's ray meets the terrain. What a hit
+// sends is its reflectance times what it receives; taken from its leaf, the sky part is
+// the leaf's average, and a leaf that holds a pit or the foot of a slope averages the
+// open sky of its rims into the shadowed bottom (on a rough fractal DEM, posts in pits
+// then gathered 2 to 4 times the reference's reflected light from their walls).
+// Between posts the sky is interpolated bilinearly from the posts of the hit's cell.
+
+#include "horizon_map.h"
+#include "radiosity_types.h"
+
+#include <array>
+#include <vector>
+
+namespace terralux
+{
+class HorizonSky;
+class OpenSky;
+class TerrainGrid;
+
+class PostSky
+{
+public:
+  /// Every used post of the map's terrain, on its area-weighted normal (in parallel).
+  PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky);
+
+  struct Value
+  {
+    Spectrum irradiance{};
+    double skyViewFactor = 0.0;
+  };
+  /// The sky a post receives on a plane of unit normal n: the open sky less what its
+  /// horizon hides (as the final gather takes it at a post).
+  static Value at(const HorizonMap::Post& post, const Vec3& normal, const HorizonSky& horizons, const OpenSky& sky);
+
+  /// The sky found for a post, when `normal` is the one it was found on (the grid's own
+  /// post normal: the default of the terrain's points); false otherwise.
+  bool found(const HorizonMap::Post& post, const Vec3& normal, Value& value) const;
+
+  /// The sky irradiance at grid parameters (u, v), between the used posts of its cell;
+  /// false where the cell has none.
+  bool interpolate(double u, double v, Spectrum& irradiance) const;
+
+private:
+  const TerrainGrid& Terrain;
+  std::vector<std::array<float, maxBands + 1>> Values; // per post, row by row: irradiance, sky view factor
+  std::vector<std::uint8_t> Used;
+};
+} // namespace terralux
