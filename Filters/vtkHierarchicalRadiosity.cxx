@@ -21,6 +21,8 @@
 #include "error.h"
 #include "finite_parameters.h"
 #include "solver.h"
+#include "terrain_grid.h"
+#include "terrain_patch.h"
 
 #include <chrono>
 #include <vector>
@@ -335,6 +337,16 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.
   const auto pointsStart = std::chrono::steady_clock::now();
+  // A lattice of the terrain's posts gathered first, at the normals the outputs use
+  // (the whole grid on every rank, so that pieces agree with one process).
+  if (this->EvaluateAtPoints && solver->terrainRoots().size() == 1 && solver->terrainRoots().front())
+  {
+    const terralux::TerrainPatch& root = *solver->terrainRoots().front();
+    const terralux::TerrainGrid& grid = root.grid();
+    const bool horn = this->PostNormals == HORN_NORMALS;
+    solver->gatherPostLattice(
+      root, [&](int i, int j) { return horn ? grid.hornNormal(i, j) : grid.postNormal(i, j); });
+  }
   vtkRadiosityOutputs::PointOptions pointOptions;
   pointOptions.bands = this->NumberOfBands;
   pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;

@@ -199,7 +199,8 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
     if (evaluateAtPoints)
     {
       // Every post evaluated at itself from its most lit leaf, with the normal of the
-      // cells around it, in parallel.
+      // cells around it, in parallel (a lattice of them was gathered first, see
+      // HierarchicalRadiosity::gatherPostLattice).
       vtkSMPTools::For(j0, j1 + 1, [&](vtkIdType first, vtkIdType last) {
         for (int j = static_cast<int>(first); j < last; ++j)
           for (int i = i0; i <= i1; ++i)

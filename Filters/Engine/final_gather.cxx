@@ -5,6 +5,7 @@
 #include "sky_importance.h"
 #include "link_transport.h"
 #include "open_sky.h"
+#include "post_lattice.h"
 #include "post_sky.h"
 #include "sampling.h"
 #include "terrain_directions.h"
@@ -88,13 +89,16 @@ Spectrum FinalGather::radiosityAt(
     for (int band = 0; band < maxBands; ++band)
       sun[band] = transport * flux[band];
   }
-  // The sky at a hit on a terrain whose posts' skies are known: between its posts.
-  Spectrum sky = e[SkyLight];
-  if (this->PostSkies && hit.terrain == 0) // the scene's one terrain
+  // On a terrain whose posts' skies are known (the scene's one terrain), the sky at a
+  // hit comes from its cell's posts and the light from surfaces from the lattice's.
+  Spectrum sky = e[SkyLight], reflected = e[ReflectedLight];
+  if (hit.terrain == 0 && this->PostSkies)
     this->PostSkies->interpolate(hit.u, hit.v, sky);
+  if (hit.terrain == 0 && this->Lattice)
+    this->Lattice->reflectedAt(hit.u, hit.v, reflected);
   Spectrum b;
   for (int band = 0; band < maxBands; ++band)
-    b[band] = leaf.emission()[band] + leaf.reflectance()[band] * (sun[band] + sky[band] + e[ReflectedLight][band]);
+    b[band] = leaf.emission()[band] + leaf.reflectance()[band] * (sun[band] + sky[band] + reflected[band]);
   return b;
 }
 
@@ -115,14 +119,19 @@ namespace
 // budget.relativeError x `received`, from a pilot's sum and sum of squares (as for
 // independent rays), between budget.minimum and budget.maximum: a whole square of
 // strata, since a partly filled last row would leave a band of directions unsampled.
-int raysNeeded(const GatherBudget& budget, double sum, double sumOfSquares, double received)
+int raysFor(const GatherBudget& budget, double variance, double received)
 {
-  const double mean = sum / budget.pilot;
-  const double variance = std::max(0.0, sumOfSquares / budget.pilot - mean * mean);
   const double target = budget.relativeError * std::max(received, 1e-12);
   const double needed = std::clamp<double>(std::ceil(variance / (target * target)), budget.minimum, budget.maximum);
   const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
   return side * side;
+}
+
+// The same from a pilot's sum and sum of squares.
+int raysNeeded(const GatherBudget& budget, double sum, double sumOfSquares, double received)
+{
+  const double mean = sum / budget.pilot;
+  return raysFor(budget, std::max(0.0, sumOfSquares / budget.pilot - mean * mean), received);
 }
 
 bool pilotDecides(const GatherBudget& budget)
@@ -289,6 +298,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     result.rays += budget.pilot;
     count = raysNeeded(budget, sum, sumOfSquares, directIrradiance + largestBand(result.sky) + sum / budget.pilot);
   }
+  else if (count > 0 && budget.knownVariance >= 0.0)
+    count = raysFor(budget, budget.knownVariance, directIrradiance + largestBand(result.sky) + budget.knownSurfaces);
   cast(count, random);
   // E = pi x the mean radiance over cosine-weighted directions: the mean radiosity.
   const double perRay = count > 0 ? 1.0 / count : 0.0;
@@ -302,6 +313,9 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     result.skyViewFactor =
       std::clamp((openOmega + skyViewCorrection * perRay) / pi, 0.0, 0.5 * (1.0 + std::clamp(normal.z, -1.0, 1.0)));
   result.rays += count;
+  result.count = count;
+  if (count > 0)
+    result.variance = std::max(0.0, sumOfSquares * perRay - sum * perRay * sum * perRay);
   return result;
 }
 } // namespace terralux

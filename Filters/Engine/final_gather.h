@@ -17,6 +17,7 @@ class HElement;
 class HorizonSky;
 class OpenSky;
 class PolygonElement;
+class PostLattice;
 class PostSky;
 class SkyImportance;
 class TerrainDirectionTable;
@@ -30,6 +31,8 @@ struct GatheredLight
   Spectrum sky{};
   double skyViewFactor = 0.0;
   int rays = 0;
+  int count = 0; ///< the rays of the estimate (a pilot's aside)
+  double variance = 0.0; ///< of one ray's estimate (largest band), over those rays
 };
 
 /// How many rays a point takes: as many as a pilot of `pilot` rays says bring the
@@ -43,6 +46,11 @@ struct GatherBudget
   double relativeError = 0.003;
   /// Horizons at half the azimuths (a point the solution found open).
   bool coarseHorizon = false;
+  /// The variance of one ray's estimate where neighbours tell it (>= 0): the count then
+  /// follows from it and from knownSurfaces, the light from surfaces expected, with no
+  /// pilot.
+  double knownVariance = -1.0;
+  double knownSurfaces = 0.0;
 };
 
 class FinalGather
@@ -83,6 +91,9 @@ public:
   /// The skies of the posts of the scene's one terrain (a height field): a hit on it
   /// sends the sky read between them instead of its leaf's average.
   void setPostSkies(const PostSky* skies) { this->PostSkies = skies; }
+  /// Posts of that terrain gathered first: a hit on it receives their light from
+  /// surfaces, read between them, instead of its leaf's.
+  void setPostLattice(const PostLattice* lattice) { this->Lattice = lattice; }
   /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
   /// at every hit; more (the sun positions of a day or a year, summed in one solve)
   /// would multiply the gather's rays, so a hit then takes one sun, chosen in
@@ -112,6 +123,7 @@ private:
   const OpenSky* Sky = nullptr;
   const HorizonSky* Horizons = nullptr;
   const PostSky* PostSkies = nullptr;
+  const PostLattice* Lattice = nullptr;
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
   std::unique_ptr<TerrainDirectionTable> TerrainDirectionsOfPosts; // with the horizons' map
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit

@@ -3,6 +3,9 @@
 #include "final_gather.h"
 #include "link_transport.h"
 #include "polygon_element.h"
+#include "post_lattice.h"
+#include "terrain_grid.h"
+#include "terrain_patch.h"
 #include "sampling.h"
 #include "visibility.h"
 
@@ -97,6 +100,18 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // terrain: far fewer are needed than over the hemisphere (see TerrainDirections).
     if (post)
       budget.pilot = budget.minimum = std::min(budget.maximum, 16);
+    // Posts beside a gathered lattice take their count from its spread, with no pilot.
+    if (post && this->Lattice)
+    {
+      const int nx = this->HeightFieldGrid->postsX(), i = static_cast<int>(post.index % nx);
+      const int j = static_cast<int>(post.index / nx);
+      Spectrum expected;
+      budget.knownVariance = this->Lattice->varianceAround(i, j);
+      if (budget.knownVariance >= 0.0 && this->Lattice->reflectedAt(i, j, expected))
+        budget.pilot = 0, budget.knownSurfaces = largestBand(expected);
+      else
+        budget.knownVariance = -1.0;
+    }
     // A leaf the solution found open (nearly all the sky its plane could see, next to
     // no light from surfaces) needs no pilot: its points take the fewest rays. The
     // decision comes from the solution, not from rays the estimate uses, so it keeps
@@ -113,6 +128,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
       largestBand(sun), this->LargestRadiosity > 0.0, post);
     irradiance[ReflectedLight] = light.surfaces;
+    result.gatherVariance = light.variance;
     irradiance[SkyLight] = light.sky;
     result.skyViewFactor = light.skyViewFactor;
   }
@@ -122,6 +138,31 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
 Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours) const
 {
   return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
+}
+
+void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, const std::function<Vec3(int, int)>& normalAt)
+{
+  const bool gathered = this->Options.gatherSamples > 0 && (this->Sky || this->LargestRadiosity > 0.0);
+  if (!gathered || !this->PostHorizons || &root.grid() != this->HeightFieldGrid)
+    return;
+  const TerrainGrid& grid = root.grid();
+  auto lattice = std::make_unique<PostLattice>(grid.postsX(), grid.postsY());
+  this->Lattice.reset(); // its own posts gather from the leaves, with pilots
+  this->Gather->setPostLattice(nullptr);
+  const int step = lattice->step();
+  tbb::parallel_for(0, (grid.postsY() - 1) / step + 1, [&](int lj) {
+    const int j = lj * step;
+    for (int i = 0; i < grid.postsX(); i += step)
+    {
+      const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
+      if (!leaf)
+        continue;
+      const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), normalAt(i, j));
+      lattice->set(i, j, result.irradiance[ReflectedLight], result.gatherVariance);
+    }
+  });
+  this->Lattice = std::move(lattice);
+  this->Gather->setPostLattice(this->Lattice.get());
 }
 
 void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,

@@ -1,6 +1,7 @@
 #include "post_sky.h"
 
 #include "angles.h"
+#include "grid_interpolation.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
 #include "terrain_grid.h"
@@ -66,29 +67,16 @@ bool PostSky::found(const HorizonMap::Post& post, const Vec3& normal, Value& val
 
 bool PostSky::interpolate(double u, double v, Spectrum& irradiance) const
 {
-  const int nx = this->Terrain.postsX(), ny = this->Terrain.postsY();
-  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, std::max(0, nx - 2));
-  const int j = std::clamp(static_cast<int>(std::floor(v)), 0, std::max(0, ny - 2));
-  const double fu = std::clamp(u - i, 0.0, 1.0), fv = std::clamp(v - j, 0.0, 1.0);
-  irradiance = Spectrum{};
-  double total = 0.0;
-  for (int dj = 0; dj < 2; ++dj)
-    for (int di = 0; di < 2; ++di)
-    {
-      if (i + di >= nx || j + dj >= ny)
-        continue;
-      const std::size_t index = static_cast<std::size_t>(j + dj) * nx + (i + di);
-      const double w = (di ? fu : 1.0 - fu) * (dj ? fv : 1.0 - fv);
-      if (!this->Used[index] || !(w > 0.0))
-        continue;
-      total += w;
+  const int nx = this->Terrain.postsX();
+  return interpolateNodes(u, v, nx, this->Terrain.postsY(),
+    [&](int i, int j, Spectrum& value) {
+      const std::size_t index = static_cast<std::size_t>(j) * nx + i;
+      if (!this->Used[index])
+        return false;
       for (int band = 0; band < maxBands; ++band)
-        irradiance[band] += w * this->Values[index][band];
-    }
-  if (!(total > 0.0))
-    return false;
-  for (double& band : irradiance)
-    band /= total;
-  return true;
+        value[band] = this->Values[index][band];
+      return true;
+    },
+    irradiance);
 }
 } // namespace terralux

@@ -6,6 +6,7 @@
 #include "error.h"
 #include "final_gather.h"
 #include "horizon_sky.h"
+#include "post_lattice.h"
 #include "post_sky.h"
 #include "open_sky.h"
 #include "link_transport.h"

@@ -11,6 +11,7 @@
 #include "helement.h"
 #include "radiosity_types.h"
 
+#include <functional>
 #include <memory>
 
 namespace terralux
@@ -19,6 +20,7 @@ class Cluster;
 class FinalGather;
 class HorizonMap;
 class HorizonSky;
+class PostLattice;
 class PostSky;
 class OpenSky;
 class PolygonElement;
@@ -82,6 +84,7 @@ struct PointIrradiance
   std::array<Spectrum, lightCategories> irradiance{};
   double skyViewFactor = 0.0;
   double sunlitHours = 0.0; ///< durations of the suns that reach the point (addSun)
+  double gatherVariance = 0.0; ///< of one final-gather ray's estimate (largest band)
 };
 
 class RadiosityProgress
@@ -141,6 +144,11 @@ public:
   /// the point is shadowed (one ray per sun); zero without a sun. With `sunlitHours`,
   /// also the durations of the suns that reach the point.
   Spectrum directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours = nullptr) const;
+  /// Before the posts of the scene's one terrain (a height field with horizons, see
+  /// findPostHorizons) are evaluated: a lattice of them (PostLattice) first, in
+  /// parallel, at `normalAt`'s normals, so that the others take their light from
+  /// surfaces one bounce more exact and cast no pilot. Does nothing for other scenes.
+  void gatherPostLattice(const TerrainPatch& root, const std::function<Vec3(int, int)>& normalAt);
   /// Many points at once, in parallel.
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
     const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const;
@@ -178,6 +186,7 @@ private:
   const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
   std::unique_ptr<HorizonMap> PostHorizons;      // its posts' horizons (findPostHorizons)
   std::unique_ptr<PostSky> PostSkies;            // and the sky each of them receives
+  std::unique_ptr<PostLattice> Lattice;          // its posts gathered first (gatherPostLattice)
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on

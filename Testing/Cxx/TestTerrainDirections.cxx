@@ -6,6 +6,7 @@
 #include "horizon_map.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
+#include "post_lattice.h"
 #include "post_sky.h"
 #include "sampling.h"
 #include "sky_hierarchy.h"
@@ -204,4 +205,32 @@ TEST(PostSky, PostsHoldTheirSkyAndCellsReadItBetweenThem)
   Spectrum read;
   ASSERT_TRUE(skies.interpolate(15.5, 16.0, read));
   EXPECT_NEAR(read[0], 0.5 * (at(15, 16).irradiance[0] + at(16, 16).irradiance[0]), 1e-4 * open0[0]);
+}
+
+TEST(PostLattice, ReadsBetweenItsPostsAndTellsTheLargestSpreadAround)
+{
+  // 10 x 7 posts, every 4th: lattice posts at i = 0, 4, 8 and j = 0, 4.
+  PostLattice lattice(10, 7, 4);
+  EXPECT_TRUE(lattice.onLattice(8, 4));
+  EXPECT_FALSE(lattice.onLattice(2, 4));
+  EXPECT_EQ(lattice.varianceAround(5, 1), -1.0); // nothing gathered yet
+  Spectrum read;
+  EXPECT_FALSE(lattice.reflectedAt(5.0, 1.0, read));
+  lattice.set(4, 0, uniformSpectrum(10.0), 2.0);
+  lattice.set(8, 0, uniformSpectrum(20.0), 5.0);
+  lattice.set(4, 4, uniformSpectrum(30.0), 1.0);
+  // (8, 4) has no data: the others share its weight.
+  EXPECT_EQ(lattice.varianceAround(5, 1), 5.0);
+  EXPECT_EQ(lattice.varianceAround(9, 6), 5.0); // beyond the last lattice post: its cell
+  ASSERT_TRUE(lattice.reflectedAt(4.0, 0.0, read));
+  EXPECT_DOUBLE_EQ(read[0], 10.0);
+  ASSERT_TRUE(lattice.reflectedAt(6.0, 0.0, read));
+  EXPECT_DOUBLE_EQ(read[0], 15.0);
+  ASSERT_TRUE(lattice.reflectedAt(4.0, 2.0, read));
+  EXPECT_DOUBLE_EQ(read[0], 20.0);
+  // Near the post without data: from the others alone; at it, nothing.
+  ASSERT_TRUE(lattice.reflectedAt(7.0, 3.0, read));
+  EXPECT_GT(read[0], 10.0);
+  EXPECT_LT(read[0], 30.0);
+  EXPECT_FALSE(lattice.reflectedAt(8.0, 4.0, read));
 }

@@ -1,0 +1,48 @@
+#pragma once
+// A coarse lattice of a terrain's posts (every `step` posts each way), gathered before
+// the others. What it learns serves the rest in two ways:
+// - Light from surfaces: a ray's hit sends its reflectance times what it receives; the
+//   light it receives from other surfaces is, from its leaf, the hierarchy's, which
+//   misses the many small exchanges inside rough terrain (issue: about half of them on
+//   a steep fractal DEM). Read between the lattice's gathered posts instead, a hit's
+//   second bounce is as exact as their first.
+// - Rays: a post's gather takes as many rays as a pilot of its own says are needed. The
+//   lattice's posts tell their neighbours the spread of one ray's estimate instead (the
+//   largest at a corner of the lattice cell: neighbours see much the same terrain),
+//   from which each post sets its count against its own irradiance, with no pilot.
+//   The count comes from other posts' rays, not from the post's own, so its estimate
+//   stays unbiased.
+
+#include "radiosity_types.h"
+
+#include <vector>
+
+namespace terralux
+{
+class PostLattice
+{
+public:
+  static constexpr int defaultStep = 4;
+  PostLattice(int postsX, int postsY, int step = defaultStep);
+
+  int step() const { return this->Step; }
+  bool onLattice(int i, int j) const { return i % this->Step == 0 && j % this->Step == 0; }
+  /// Records a lattice post's gathered light from surfaces and the variance of one
+  /// ray's estimate there (from any thread, each post once).
+  void set(int i, int j, const Spectrum& reflected, double variance);
+
+  /// The largest variance at a corner of the lattice cell holding post (i, j); -1
+  /// where none is known.
+  double varianceAround(int i, int j) const;
+  /// Light from surfaces at grid parameters (u, v), bilinear between the lattice's
+  /// posts; false where none around holds a value.
+  bool reflectedAt(double u, double v, Spectrum& reflected) const;
+
+private:
+  std::size_t index(int li, int lj) const { return static_cast<std::size_t>(lj) * this->Nx + li; }
+
+  int Step, Nx, Ny; // lattice posts each way
+  std::vector<Spectrum> Reflected;
+  std::vector<double> Variance; // -1: not gathered (no data there)
+};
+} // namespace terralux
