@@ -87,8 +87,9 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const Horizon
       for (int j = 0; j < piecesPerSector; ++j)
       {
         const double phi0 = from + j * width;
-        table.pieces.push_back(
-          { phi0, phi0 + width, sinCos(phi0), sinCos(phi0 + width), sinCos(phi0 + 0.5 * width) });
+        MapPiece mapPiece{ phi0, phi0 + width, sinCos(phi0), sinCos(phi0 + width), sinCos(phi0 + 0.5 * width) };
+        this->sumPiece(mapPiece);
+        table.pieces.push_back(std::move(mapPiece));
       }
     }
   }
@@ -229,19 +230,66 @@ double HorizonSky::lowerBound(const Vec3& normal, const SinCos& a)
                         : std::max(0.0, std::atan2(-toward, normal.z));
 }
 
-void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1,
-  double share, const Vec3& normal, HiddenSky& result) const
+void HorizonSky::sumPiece(MapPiece& piece) const
 {
-  // The sky between azimuths phi0 and phi1 and elevations u0 and u1 taken as hidden,
-  // with weight `share`, cell by cell of the sky (parts below the plane count nothing).
+  std::array<Column, 16> columns;
+  const int count = this->columnsOf(piece.phi0, piece.phi1, piece.start, piece.end, columns);
+  piece.rows.assign(this->Side + 1, PieceRow{});
+  for (int c = 0; c < count; ++c)
+  {
+    const Column& column = columns[c];
+    piece.dSin += column.dSin;
+    piece.dCos += column.dCos;
+    piece.width += column.width;
+    const RadianceTerms* sums = &this->ColumnSums[static_cast<std::size_t>(column.iv) * (this->Side + 1)];
+    for (int row = 0; row <= this->Side; ++row)
+    {
+      PieceRow& r = piece.rows[row];
+      const Spectrum* l = row < this->Side ? &this->Sky.cellRadiance(row, column.iv) : nullptr;
+      for (int band = 0; band < maxBands; ++band)
+      {
+        r.s[band] += column.dSin * sums[row].along[band];
+        r.c[band] += column.dCos * sums[row].along[band];
+        r.w[band] += column.width * sums[row].up[band];
+        if (l)
+        {
+          r.rowS[band] += column.dSin * (*l)[band];
+          r.rowC[band] += column.dCos * (*l)[band];
+          r.rowW[band] += column.width * (*l)[band];
+        }
+      }
+    }
+  }
+}
+
+void HorizonSky::hidePiece(const MapPiece& piece, double u0, double u1, const Vec3& normal, HiddenSky& result) const
+{
+  // As hideBand, over the piece's columns at once (a piece behind the plane on balance
+  // counts nothing).
   if (!(u0 < u1))
     return;
-  struct Column
-  {
-    double across, width;
-    int iv;
+  const ElevationTerms low = this->termsAt(u0), high = this->termsAt(u1);
+  const double weight = (normal.x * piece.dSin - normal.y * piece.dCos) * (high.along - low.along) +
+    normal.z * piece.width * (high.up - low.up);
+  if (!(weight > 0.0))
+    return;
+  auto sumAt = [&](double u, const ElevationTerms& terms, int band) {
+    const int row = std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1);
+    const PieceRow& r = piece.rows[row];
+    const ElevationTerms& boundary = this->Terms[row * (fineTerms / this->Side)];
+    const double along = terms.along - boundary.along, up = terms.up - boundary.up;
+    return normal.x * (r.s[band] + r.rowS[band] * along) - normal.y * (r.c[band] + r.rowC[band] * along) +
+      normal.z * (r.w[band] + r.rowW[band] * up);
   };
-  std::array<Column, 16> columns;
+  result.projectedSolidAngle += weight;
+  for (int band = 0; band < maxBands; ++band)
+    result.irradiance[band] += std::max(0.0, sumAt(u1, high, band) - sumAt(u0, low, band));
+}
+
+int HorizonSky::columnsOf(
+  double phi0, double phi1, const SinCos& start, const SinCos& end, std::array<Column, 16>& columns) const
+{
+  // The sky's azimuth cells the range crosses, each clipped to it.
   int count = 0;
   int m = static_cast<int>(std::floor((phi0 - this->CellStart) / this->CellWidth)) + 1;
   double b = phi0;
@@ -253,11 +301,23 @@ void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const S
     const SinCos next = last ? end : this->ColumnBoundaries[((m % this->Side) + this->Side) % this->Side];
     const double bEnd = last ? phi1 : boundary;
     const int iv = (((this->FirstColumn - m) % this->Side) + this->Side) % this->Side;
-    columns[count++] = { normal.x * (next.sin - at.sin) - normal.y * (next.cos - at.cos), bEnd - b, iv };
+    columns[count++] = { next.sin - at.sin, next.cos - at.cos, bEnd - b, iv };
     b = bEnd;
     at = next;
     ++m;
   }
+  return count;
+}
+
+void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1,
+  double share, const Vec3& normal, HiddenSky& result) const
+{
+  // The sky between azimuths phi0 and phi1 and elevations u0 and u1 taken as hidden,
+  // with weight `share`, cell by cell of the sky (parts below the plane count nothing).
+  if (!(u0 < u1))
+    return;
+  std::array<Column, 16> columns;
+  const int count = this->columnsOf(phi0, phi1, start, end, columns);
   // Each column at once, from the running sums of its radiance-weighted terms (the
   // cosine is linear in them, so it needs no cell-by-cell loop). A column whose band
   // lies behind the plane on balance counts nothing.
@@ -265,8 +325,9 @@ void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const S
   for (int c = 0; c < count; ++c)
   {
     const Column& column = columns[c];
+    const double across = normal.x * column.dSin - normal.y * column.dCos;
     const double weight = share *
-      (column.across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
+      (across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
     if (!(weight > 0.0))
       continue;
     const RadianceTerms bottom = this->columnSumAt(column.iv, u0, low);
@@ -274,7 +335,7 @@ void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const S
     result.projectedSolidAngle += weight;
     for (int band = 0; band < maxBands; ++band)
       result.irradiance[band] += std::max(0.0, share *
-        (column.across * (top.along[band] - bottom.along[band]) +
+        (across * (top.along[band] - bottom.along[band]) +
           normal.z * column.width * (top.up[band] - bottom.up[band])));
   }
 }
@@ -319,8 +380,8 @@ HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal)
     {
       const MapPiece& piece = table.pieces[a * piecesPerSector + j];
       const double t = (j + 0.5) / piecesPerSector;
-      this->hideBand(piece.phi0, piece.phi1, piece.start, piece.end, lowerBound(normal, piece.middle),
-        (1.0 - t) * elevations[a] + t * elevations[b], 1.0, normal, result);
+      this->hidePiece(piece, lowerBound(normal, piece.middle), (1.0 - t) * elevations[a] + t * elevations[b], normal,
+        result);
     }
   }
   return result;

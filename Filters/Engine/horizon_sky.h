@@ -17,6 +17,7 @@
 #include "horizon_map.h"
 #include "radiosity_types.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -72,6 +73,14 @@ private:
   /// The lowest elevation toward azimuth a whose sky can be hidden: the plane's own
   /// horizon or the world's.
   static double lowerBound(const Vec3& normal, const SinCos& a);
+  /// A sky azimuth cell clipped to a range: the changes of sin and cos of the azimuth
+  /// over it (the cosine's terms across it), its width, its index.
+  struct Column
+  {
+    double dSin, dCos, width;
+    int iv;
+  };
+  int columnsOf(double phi0, double phi1, const SinCos& start, const SinCos& end, std::array<Column, 16>& columns) const;
   void hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1, double share,
     const Vec3& normal, HiddenSky& result) const;
   ElevationTerms termsAt(double u) const; // from the table Terms
@@ -98,11 +107,23 @@ private:
   RadianceTerms columnSumAt(int iv, double u, const ElevationTerms& terms) const;
   std::vector<SinCos> ColumnBoundaries;      // at each azimuth cell boundary
   std::vector<SinCos> PieceBoundaries, PieceMiddles; // of the pieces, before a point's turn
+  /// A map piece's sky, summed over the sky's columns it crosses: per row boundary the
+  /// radiance-weighted terms from the horizon up (s, c: along-terms times the changes
+  /// of sin and cos of the azimuth; w: up-terms times the widths) and the row's own
+  /// radiance in those terms, for the part of a row. A band then costs its two ends.
+  struct PieceRow
+  {
+    Spectrum s, c, w, rowS, rowC, rowW;
+  };
   struct MapPiece
   {
     double phi0, phi1;
     SinCos start, end, middle;
+    double dSin = 0.0, dCos = 0.0, width = 0.0; // over its columns
+    std::vector<PieceRow> rows;                 // Side + 1
   };
+  void sumPiece(MapPiece& piece) const;
+  void hidePiece(const MapPiece& piece, double u0, double u1, const Vec3& normal, HiddenSky& result) const;
   struct MapAzimuths
   {
     std::vector<SinCos> directions;

@@ -97,7 +97,10 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // A terrain post's horizons come from the map, found for all posts at once.
     const HorizonMap::Post post = this->PostHorizons ? this->PostHorizons->find(point) : HorizonMap::Post{};
     // There the rays are drawn below the post's horizon, where nearly every one meets
-    // terrain: far fewer are needed than over the hemisphere (see TerrainDirections).
+    // terrain: far fewer are needed than over the hemisphere (see TerrainDirections). A
+    // pilot of 16 where the lattice does not tell the spread; at least 9 rays (3 x 3
+    // strata) where it does: the 1025^2 fractal took 36 M rays instead of 48 M at 16,
+    // with the accuracy report's errors unchanged (fractal 0.48 %, crater 0.36 %).
     if (post)
       budget.pilot = budget.minimum = std::min(budget.maximum, 16);
     // Posts beside a gathered lattice take their count from its spread, with no pilot.
@@ -108,7 +111,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
       Spectrum expected;
       budget.knownVariance = this->Lattice->varianceAround(i, j);
       if (budget.knownVariance >= 0.0 && this->Lattice->reflectedAt(i, j, expected))
-        budget.pilot = 0, budget.knownSurfaces = largestBand(expected);
+        budget.pilot = 0, budget.minimum = std::min(budget.maximum, 9), budget.knownSurfaces = largestBand(expected);
       else
         budget.knownVariance = -1.0;
     }
