@@ -121,8 +121,11 @@ public:
    * suns, one sun per hit chosen by its irradiance). For each kind of ray a pilot of 64
    * decides how many, from 64 to this, bring the standard error below GatherError x
    * the point's irradiance (points of leaves the solution found open take 64 of each
-   * and no pilot). 0 re-evaluates the hierarchy's links at each point instead (faster,
-   * less accurate in rough terrain). Default is 1024.
+   * and no pilot). At the posts of a scene of one terrain with horizons, rays are drawn
+   * below each post's horizon only; a lattice of every 4th post takes a pilot of 16,
+   * the other posts at least 9 rays, their count from the lattice's spread. 0
+   * re-evaluates the hierarchy's links at each point instead (faster, less accurate in
+   * rough terrain). Default is 1024.
    */
   vtkSetClampMacro(MaximumGatherRays, int, 0, 1 << 20);
   vtkGetMacro(MaximumGatherRays, int);

@@ -44,7 +44,9 @@ struct RadiosityOptions
   /// leaves (FinalGather): as many rays, from 64 to gatherSamples, as a pilot of 64
   /// says bring the standard error below gatherError x the point's irradiance; points
   /// of leaves the solution found open (sky view within 0.1 % of their plane's, light
-  /// from surfaces under 0.2 %) take 64 rays and no pilot.
+  /// from surfaces under 0.2 %) take 64 rays and no pilot. At the posts of one terrain
+  /// with horizons: rays below the horizon only (TerrainDirections), a pilot of 16 on a
+  /// lattice of posts (gatherPostLattice), at least 9 rays and no pilot elsewhere.
   /// gatherSamples 0 re-evaluates the links that reach the point's leaf instead.
   int gatherSamples = 1024;
   double gatherError = 0.003;

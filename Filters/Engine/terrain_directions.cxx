@@ -7,6 +7,23 @@
 
 namespace terralux
 {
+namespace
+{
+// sin x for an elevation, |x| <= pi / 2, by its Taylor series to x^13 (within 7e-10):
+// a post's boxes take three sines each, 192 a post, a twentieth of its time.
+double sinOfElevation(double x)
+{
+  x = std::clamp(x, -0.5 * pi, 0.5 * pi);
+  const double x2 = x * x;
+  return x *
+    (1.0 +
+      x2 * (-1.0 / 6.0 +
+             x2 * (1.0 / 120.0 +
+                    x2 * (-1.0 / 5040.0 +
+                           x2 * (1.0 / 362880.0 + x2 * (-1.0 / 39916800.0 + x2 * (1.0 / 6227020800.0)))))));
+}
+} // namespace
+
 TerrainDirectionTable::TerrainDirectionTable(const HorizonMap& map)
   : Map(map)
 {
@@ -56,14 +73,14 @@ TerrainDirections::TerrainDirections(
       const auto& piece = pieces[a * TerrainDirectionTable::piecesPerSector + j];
       const double t = (j + 0.5) / TerrainDirectionTable::piecesPerSector;
       const double horizon = (1.0 - t) * horizons[a] + t * horizons[(a + 1) % count];
-      const double sinHorizon = std::sin(horizon);
+      const double sinHorizon = sinOfElevation(horizon);
       const double sinPlaneMiddle = planeSinAt(piece.cosMiddle, piece.sinMiddle);
       // A sector with terrain above its lower bounds (HorizonSky's "open" test) reaches
       // above its higher horizon by a margin; one open at both ends does not, or every
       // flat post would cast rays for the rare peak between two open azimuths.
       const bool margin = rises[a] || rises[(a + 1) % count];
       const double sinHigh = margin
-        ? std::sin(std::min(0.5 * pi, std::max(horizons[a], horizons[(a + 1) % count]) + horizonMargin))
+        ? sinOfElevation(std::max(horizons[a], horizons[(a + 1) % count]) + horizonMargin)
         : sinHorizon;
       const double sinPlaneEnd = planeSinAt(piece.cos1, piece.sin1);
       // Down to the plane's lowest elevation over the piece (it dips most at one end
@@ -79,7 +96,7 @@ TerrainDirections::TerrainDirections(
       // Around the interpolated horizon, where its corrections lie, rays are drawn
       // marginDensity times as densely: few there, each would carry a large weight.
       const double sinSkyLow = std::max(0.0, sinPlaneMiddle);
-      const double sinSplit = margin ? std::max(sinLow, std::sin(horizon - horizonMargin)) : sinHigh;
+      const double sinSplit = margin ? std::max(sinLow, sinOfElevation(horizon - horizonMargin)) : sinHigh;
       this->addBox(piece.phi0, piece.width, sinLow, sinSplit, cosine, sinHorizon, sinSkyLow);
       this->addBox(piece.phi0, piece.width, sinSplit, sinHigh, marginDensity * cosine, sinHorizon, sinSkyLow);
     }

@@ -11,27 +11,17 @@ set -euo pipefail
 repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="$(cd "${1:-${repo_dir}/build}" && pwd)"
 shift || true
-command -v grass >/dev/null || { echo "needs GRASS GIS: apt-get install grass-core" >&2; exit 2; }
+source "${repo_dir}/Testing/Benchmarks/rsun_common.sh"
 cmake --build "${build_dir}" --target make_fractal_dem TerraLux::Python >/dev/null 2>&1 || cmake --build "${build_dir}" >/dev/null
-mkdir -p "${build_dir}/bench"
-fractal="${build_dir}/bench/fractal_1025.tif"
-[ -s "${fractal}" ] || "${build_dir}/bin/make_fractal_dem" "${fractal}" 1025 1 30 >/dev/null
+fractal="$(default_fractal "${build_dir}")"
 dems=("$@")
 [ "${#dems[@]}" -gt 0 ] || dems=("${repo_dir}/Testing/Data/External/olinda_dem_utm25s.tif" "${fractal}")
 export PYTHONPATH="${build_dir}/lib/python3.11/dist-packages${PYTHONPATH:+:${PYTHONPATH}}"
-work="$(mktemp -d)"
-trap 'rm -rf "${work}"' EXIT
-seconds() { sed -n 's/^elapsed \([0-9.]*\) peak \([0-9]*\)$/\1/p' "$1"; }
-peak_mib() { sed -n 's/^elapsed \([0-9.]*\) peak \([0-9]*\)$/\2/p' "$1" | awk '{printf "%.0f", $1 / 1024}'; }
 for dem in "${dems[@]}"; do
   name="$(basename "${dem}" .tif)"
   echo "== ${name}"
-  grass -c "${dem}" "${work}/${name}" -e >/dev/null 2>&1
-  cat > "${work}/${name}.sh" <<GRASS
-set -e
-r.in.gdal -o input="${dem}" output=dem --overwrite --quiet
-g.region raster=dem
-r.slope.aspect elevation=dem slope=slope aspect=aspect --overwrite --quiet
+  rsun_script "${dem}" "${work}" "${name}"
+  cat >> "${work}/${name}.sh" <<GRASS
 /usr/bin/time -f "elapsed %e peak %M" -o "${work}/${name}.rsun.time" r.sun elevation=dem slope=slope aspect=aspect \
   day=173 step=0.5 linke_value=3.0 albedo_value=0.2 beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob \
   nprocs=2 --overwrite --quiet

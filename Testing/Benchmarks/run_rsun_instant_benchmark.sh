@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# One instant against GRASS r.sun's instant mode, in one run on the same DEMs (peer
+# benchmark of the fast-per-post issue; needs grass-core, not run by ctest). Whole
+# processes: r.sun with its DEM ingest (r.in.gdal) and slopes (r.slope.aspect), sun and
+# diffuse at 09:00 local solar time of 21 December, Linke 3.0, albedo 0.2, shadows, 2
+# threads; TerraLux's benchmark_radiosity (sun and CIE clear sky at 09:00 of the same
+# day, reflectance 0.2, interreflection, the defaults: tolerance 1e-3, 4 samples) at
+# every post and with EvaluateAtPoints off. Prints the times, peak memory and ratios.
+# Usage: Testing/Benchmarks/run_rsun_instant_benchmark.sh [BUILD_DIR] [DEM ...]
+#   default DEM: the 1025^2 fractal (made by make_fractal_dem).
+set -euo pipefail
+repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build_dir="$(cd "${1:-${repo_dir}/build}" && pwd)"
+shift || true
+source "${repo_dir}/Testing/Benchmarks/rsun_common.sh"
+cmake --build "${build_dir}" --target make_fractal_dem benchmark_radiosity >/dev/null
+fractal="$(default_fractal "${build_dir}")"
+dems=("$@")
+[ "${#dems[@]}" -gt 0 ] || dems=("${fractal}")
+for dem in "${dems[@]}"; do
+  name="$(basename "${dem}" .tif)"
+  echo "== ${name}"
+  rsun_script "${dem}" "${work}" "${name}"
+  cat >> "${work}/${name}.sh" <<GRASS
+r.sun elevation=dem slope=slope aspect=aspect day=356 time=9.0 linke_value=3.0 albedo_value=0.2 \
+  beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob nprocs=2 --overwrite --quiet
+GRASS
+  # The whole GRASS session: ingest, slopes and r.sun, as a user runs them.
+  /usr/bin/time -f "elapsed %e peak %M" -o "${work}/rsun.time" \
+    grass "${work}/${name}/PERMANENT" --exec bash "${work}/${name}.sh" >/dev/null 2>&1
+  /usr/bin/time -f "elapsed %e peak %M" -o "${work}/points.time" \
+    "${build_dir}/bin/benchmark_radiosity" "${dem}" 1e-3 4 > "${work}/points.out"
+  TERRALUX_BENCH_AVERAGED=1 /usr/bin/time -f "elapsed %e peak %M" -o "${work}/fast.time" \
+    "${build_dir}/bin/benchmark_radiosity" "${dem}" 1e-3 4 > "${work}/fast.out"
+  rsun="$(seconds "${work}/rsun.time")"
+  echo "  r.sun instant (with r.in.gdal, r.slope.aspect): $(printf '%6.1f' "${rsun}") s, $(peak_mib "${work}/rsun.time") MiB"
+  for mode in points fast; do
+    t="$(seconds "${work}/${mode}.time")"
+    echo "  TerraLux ${mode}: $(printf '%6.1f' "${t}") s, $(peak_mib "${work}/${mode}.time") MiB," \
+      "$(awk -v a="${t}" -v b="${rsun}" 'BEGIN { printf "%.2f", a / b }') x r.sun"
+    sed 's/^/    /' "${work}/${mode}.out" | tail -n 1
+  done
+done
