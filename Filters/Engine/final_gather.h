@@ -78,7 +78,11 @@ public:
   /// from occlusion rays drawn by the sky's radiance with a pilot of their own
   /// (SkyImportance), which also give the sky view factor. `surfacesSend` false skips
   /// what surfaces send (every radiosity 0): no cosine-weighted rays then. `post`: the
-  /// terrain post the point stands for, whose horizons the horizons' map holds.
+  /// terrain post the point stands for, whose horizons the horizons' map holds; there
+  /// the rays are drawn below its horizon instead (TerrainDirections), correct the
+  /// sky where the interpolated horizon was wrong, and a hit on the terrain sends the
+  /// sky of the posts around it (setPostSkies) and the lattice's light from surfaces
+  /// (setPostLattice) instead of its leaf's.
   GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
     double directIrradiance, bool surfacesSend = true, const HorizonMap::Post& post = {}) const;
   void setSky(const OpenSky* sky);
