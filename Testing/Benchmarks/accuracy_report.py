@@ -20,8 +20,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 COMPONENTS = ("sun", "sky", "reflected", "global")
-METHODS = {"points": "patches, at points", "rays": "patches, at points, sky by rays",
-           "averaged": "patches, averaged", "triangles": "triangles, at points"}
+METHODS = {"points": "patches, at points", "points-previous": "patches, at points, previous release",
+           "rays": "patches, at points, sky by rays", "averaged": "patches, averaged",
+           "triangles": "triangles, at points"}
 
 
 def percent(x):
