@@ -51,13 +51,6 @@ void FinalGather::setSky(const OpenSky* sky)
   this->SkySamples = sky ? std::make_unique<SkyImportance>(*sky) : nullptr;
 }
 
-void FinalGather::setHorizons(const HorizonSky* horizons)
-{
-  this->Horizons = horizons;
-  this->TerrainDirectionsOfPosts =
-    horizons && horizons->map() ? std::make_unique<TerrainDirectionTable>(*horizons->map()) : nullptr;
-}
-
 void FinalGather::prepareSuns()
 {
   this->SunCumulative.clear();
@@ -225,8 +218,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // Light from surfaces by rays: at a post of the horizons' map drawn below its horizon
   // (the sky above it is counted already), elsewhere cosine-weighted over the hemisphere.
   std::optional<TerrainDirections> belowHorizon;
-  if (horizons && post && this->TerrainDirectionsOfPosts)
-    belowHorizon.emplace(*this->TerrainDirectionsOfPosts, post, normal);
+  if (horizons && post && this->Horizons->map())
+    belowHorizon.emplace(*this->Horizons, post, normal);
   Spectrum surfaces{}, skyCorrection{};
   double skyViewCorrection = 0.0; // projected solid angle
   // Each ray's estimate of what surfaces send (largest band); its spread sets how many

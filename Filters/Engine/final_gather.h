@@ -20,7 +20,6 @@ class PolygonElement;
 class PostLattice;
 class PostSky;
 class SkyImportance;
-class TerrainDirectionTable;
 class TerrainPatch;
 class Visibility;
 
@@ -91,7 +90,7 @@ public:
   /// Without them, the hidden sky comes from occlusion rays drawn by the sky's radiance.
   /// At a post of the horizons' map, the surfaces' rays are drawn below the post's
   /// horizon only (TerrainDirections): the sky above it is the horizons' part.
-  void setHorizons(const HorizonSky* horizons);
+  void setHorizons(const HorizonSky* horizons) { this->Horizons = horizons; }
   /// The skies of the posts of the scene's one terrain (a height field): a hit on it
   /// sends the sky read between them instead of its leaf's average.
   void setPostSkies(const PostSky* skies) { this->PostSkies = skies; }
@@ -129,7 +128,6 @@ private:
   const PostSky* PostSkies = nullptr;
   const PostLattice* Lattice = nullptr;
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
-  std::unique_ptr<TerrainDirectionTable> TerrainDirectionsOfPosts; // with the horizons' map
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };
 

@@ -313,7 +313,7 @@ void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const S
   double share, const Vec3& normal, HiddenSky& result) const
 {
   // The sky between azimuths phi0 and phi1 and elevations u0 and u1 taken as hidden,
-  // with weight `share`, cell by cell of the sky (parts below the plane count nothing).
+  // with weight `share`, column by column of the sky.
   if (!(u0 < u1))
     return;
   std::array<Column, 16> columns;
@@ -355,6 +355,19 @@ HorizonSky::RadianceTerms HorizonSky::columnSumAt(int iv, double u, const Elevat
   return sum;
 }
 
+void HorizonSky::mapHorizons(const HorizonMap::Post& post, const Vec3& normal, MapElevations& elevations,
+  std::array<bool, HorizonMap::azimuthCount>& rises) const
+{
+  const std::vector<SinCos>& directions = this->MapTable.directions;
+  for (std::size_t a = 0; a < directions.size(); ++a)
+  {
+    const double lower = lowerBound(normal, directions[a]);
+    const double horizon = this->Map->elevation(post, static_cast<int>(a));
+    rises[a] = horizon > lower;
+    elevations[a] = std::max(lower, horizon);
+  }
+}
+
 HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const
 {
   // The map's azimuths, each with its horizon, interpolated between them over pieces
@@ -362,19 +375,13 @@ HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal)
   HiddenSky result;
   const MapAzimuths& table = this->MapTable;
   const int count = static_cast<int>(table.directions.size());
-  std::array<double, HorizonMap::azimuthCount> elevations;
-  std::array<bool, HorizonMap::azimuthCount> open;
-  for (int a = 0; a < count; ++a)
-  {
-    const double lower = lowerBound(normal, table.directions[a]);
-    const double horizon = this->Map->elevation(post, a);
-    open[a] = !(horizon > lower);
-    elevations[a] = std::max(lower, horizon);
-  }
+  MapElevations elevations;
+  std::array<bool, HorizonMap::azimuthCount> rises;
+  this->mapHorizons(post, normal, elevations, rises);
   for (int a = 0; a < count; ++a)
   {
     const int b = (a + 1) % count;
-    if (open[a] && open[b])
+    if (!rises[a] && !rises[b])
       continue;
     for (int j = 0; j < piecesPerSector; ++j)
     {

@@ -60,14 +60,40 @@ public:
   HiddenSky hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const;
   const HorizonMap* map() const { return this->Map; }
 
+  struct SinCos
+  {
+    double sin, cos;
+  };
+  /// A map piece's sky, summed over the sky's columns it crosses: per row boundary the
+  /// radiance-weighted terms from the horizon up (s, c: along-terms times the changes
+  /// of sin and cos of the azimuth; w: up-terms times the widths) and the row's own
+  /// radiance in those terms, for the part of a row. A band then costs its two ends.
+  struct PieceRow
+  {
+    Spectrum s, c, w, rowS, rowC, rowW;
+  };
+  /// A piece of azimuth between two of the map's azimuths (piecesPerSector after each),
+  /// over which the map's horizon is interpolated linearly, at its middle.
+  struct MapPiece
+  {
+    double phi0, phi1; ///< radians counter-clockwise from +x
+    SinCos start, end, middle;
+    double dSin = 0.0, dCos = 0.0, width = 0.0; // over its sky columns
+    std::vector<PieceRow> rows;                 // Side + 1
+  };
+  /// The map's pieces, azimuth by azimuth (empty without a map).
+  const std::vector<MapPiece>& mapPieces() const { return this->MapTable.pieces; }
+  using MapElevations = std::array<double, HorizonMap::azimuthCount>;
+  /// A post's horizon at each of the map's azimuths as the hidden sky takes it: never
+  /// below the lowest elevation whose sky can be hidden (the plane's own horizon or the
+  /// world's); `rises`: whether terrain stands above that bound there.
+  void mapHorizons(const HorizonMap::Post& post, const Vec3& normal, MapElevations& elevations,
+    std::array<bool, HorizonMap::azimuthCount>& rises) const;
+
 private:
   struct ElevationTerms
   {
     double along, up; // antiderivatives of cos^2 u and of sin u cos u
-  };
-  struct SinCos
-  {
-    double sin, cos;
   };
   static ElevationTerms elevationTerms(double u, double sinU, double cosU);
   /// The lowest elevation toward azimuth a whose sky can be hidden: the plane's own
@@ -107,21 +133,6 @@ private:
   RadianceTerms columnSumAt(int iv, double u, const ElevationTerms& terms) const;
   std::vector<SinCos> ColumnBoundaries;      // at each azimuth cell boundary
   std::vector<SinCos> PieceBoundaries, PieceMiddles; // of the pieces, before a point's turn
-  /// A map piece's sky, summed over the sky's columns it crosses: per row boundary the
-  /// radiance-weighted terms from the horizon up (s, c: along-terms times the changes
-  /// of sin and cos of the azimuth; w: up-terms times the widths) and the row's own
-  /// radiance in those terms, for the part of a row. A band then costs its two ends.
-  struct PieceRow
-  {
-    Spectrum s, c, w, rowS, rowC, rowW;
-  };
-  struct MapPiece
-  {
-    double phi0, phi1;
-    SinCos start, end, middle;
-    double dSin = 0.0, dCos = 0.0, width = 0.0; // over its columns
-    std::vector<PieceRow> rows;                 // Side + 1
-  };
   void sumPiece(MapPiece& piece) const;
   void hidePiece(const MapPiece& piece, double u0, double u1, const Vec3& normal, HiddenSky& result) const;
   struct MapAzimuths

@@ -24,65 +24,41 @@ double sinOfElevation(double x)
 }
 } // namespace
 
-TerrainDirectionTable::TerrainDirectionTable(const HorizonMap& map)
-  : Map(map)
-{
-  const std::vector<double>& azimuths = map.azimuths();
-  for (std::size_t a = 0; a < azimuths.size(); ++a)
-  {
-    const double to = a + 1 < azimuths.size() ? azimuths[a + 1] : azimuths[0] + 2.0 * pi;
-    const double width = (to - azimuths[a]) / piecesPerSector;
-    for (int j = 0; j < piecesPerSector; ++j)
-    {
-      const double phi0 = azimuths[a] + j * width, middle = phi0 + 0.5 * width;
-      this->Pieces.push_back({ phi0, width, std::cos(phi0), std::sin(phi0), std::cos(phi0 + width),
-        std::sin(phi0 + width), std::cos(middle), std::sin(middle) });
-    }
-  }
-}
-
-TerrainDirections::TerrainDirections(
-  const TerrainDirectionTable& table, const HorizonMap::Post& post, const Vec3& normal)
+TerrainDirections::TerrainDirections(const HorizonSky& horizons, const HorizonMap::Post& post, const Vec3& normal)
   : Normal(normal)
 {
-  const HorizonMap& map = table.map();
   // The sine of the post's plane's elevation toward an azimuth (negative where it
   // dips): elevations are compared and sampled by their sines, which need no angle.
-  auto planeSinAt = [&](double c, double s) {
-    const double toward = normal.x * c + normal.y * s;
+  auto planeSinAt = [&](const HorizonSky::SinCos& a) {
+    const double toward = normal.x * a.cos + normal.y * a.sin;
     return -toward / std::sqrt(toward * toward + normal.z * normal.z);
   };
-  // The horizon as HorizonSky takes it: never below the plane's own or the world's.
-  const int count = static_cast<int>(map.azimuths().size());
-  std::array<double, HorizonMap::azimuthCount> horizons;
-  std::array<bool, HorizonMap::azimuthCount> rises; // terrain above the lower bound
-  const auto& pieces = table.pieces();
+  // The horizon as the hidden sky takes it, over the same pieces, so that the two
+  // partition the hemisphere.
+  HorizonSky::MapElevations elevations;
+  std::array<bool, HorizonMap::azimuthCount> rises;
+  horizons.mapHorizons(post, normal, elevations, rises);
+  const std::vector<HorizonSky::MapPiece>& pieces = horizons.mapPieces();
+  const int count = static_cast<int>(pieces.size()) / HorizonSky::piecesPerSector;
+  double sinPlaneStart = planeSinAt(pieces[0].start);
   for (int a = 0; a < count; ++a)
   {
-    const auto& start = pieces[a * TerrainDirectionTable::piecesPerSector];
-    const double sinPlane = planeSinAt(start.cos0, start.sin0);
-    const double lower = sinPlane > 0.0 ? std::asin(sinPlane) : 0.0, elevation = map.elevation(post, a);
-    rises[a] = elevation > lower;
-    horizons[a] = std::max(elevation, lower);
-  }
-  double sinPlaneStart = planeSinAt(pieces[0].cos0, pieces[0].sin0);
-  for (int a = 0; a < count; ++a)
-  {
-    for (int j = 0; j < TerrainDirectionTable::piecesPerSector; ++j)
+    const int b = (a + 1) % count;
+    for (int j = 0; j < HorizonSky::piecesPerSector; ++j)
     {
-      const auto& piece = pieces[a * TerrainDirectionTable::piecesPerSector + j];
-      const double t = (j + 0.5) / TerrainDirectionTable::piecesPerSector;
-      const double horizon = (1.0 - t) * horizons[a] + t * horizons[(a + 1) % count];
+      const HorizonSky::MapPiece& piece = pieces[a * HorizonSky::piecesPerSector + j];
+      const double width = piece.phi1 - piece.phi0;
+      const double t = (j + 0.5) / HorizonSky::piecesPerSector;
+      const double horizon = (1.0 - t) * elevations[a] + t * elevations[b];
       const double sinHorizon = sinOfElevation(horizon);
-      const double sinPlaneMiddle = planeSinAt(piece.cosMiddle, piece.sinMiddle);
+      const double sinPlaneMiddle = planeSinAt(piece.middle);
       // A sector with terrain above its lower bounds (HorizonSky's "open" test) reaches
       // above its higher horizon by a margin; one open at both ends does not, or every
       // flat post would cast rays for the rare peak between two open azimuths.
-      const bool margin = rises[a] || rises[(a + 1) % count];
-      const double sinHigh = margin
-        ? sinOfElevation(std::max(horizons[a], horizons[(a + 1) % count]) + horizonMargin)
-        : sinHorizon;
-      const double sinPlaneEnd = planeSinAt(piece.cos1, piece.sin1);
+      const bool margin = rises[a] || rises[b];
+      const double sinHigh =
+        margin ? sinOfElevation(std::max(elevations[a], elevations[b]) + horizonMargin) : sinHorizon;
+      const double sinPlaneEnd = planeSinAt(piece.end);
       // Down to the plane's lowest elevation over the piece (it dips most at one end
       // or, near the slope's fall line, in between).
       const double sinLow = std::min({ sinPlaneMiddle, sinPlaneStart, sinPlaneEnd });
@@ -92,13 +68,13 @@ TerrainDirections::TerrainDirections(
       // The cosine toward the box's middle, the density's shape within it.
       const double sinMiddle = 0.5 * (sinLow + sinHigh), cosMiddle = std::sqrt(1.0 - sinMiddle * sinMiddle);
       const double cosine = std::max(0.02,
-        normal.x * cosMiddle * piece.cosMiddle + normal.y * cosMiddle * piece.sinMiddle + normal.z * sinMiddle);
+        normal.x * cosMiddle * piece.middle.cos + normal.y * cosMiddle * piece.middle.sin + normal.z * sinMiddle);
       // Around the interpolated horizon, where its corrections lie, rays are drawn
       // marginDensity times as densely: few there, each would carry a large weight.
       const double sinSkyLow = std::max(0.0, sinPlaneMiddle);
       const double sinSplit = margin ? std::max(sinLow, sinOfElevation(horizon - horizonMargin)) : sinHigh;
-      this->addBox(piece.phi0, piece.width, sinLow, sinSplit, cosine, sinHorizon, sinSkyLow);
-      this->addBox(piece.phi0, piece.width, sinSplit, sinHigh, marginDensity * cosine, sinHorizon, sinSkyLow);
+      this->addBox(piece.phi0, width, sinLow, sinSplit, cosine, sinHorizon, sinSkyLow);
+      this->addBox(piece.phi0, width, sinSplit, sinHigh, marginDensity * cosine, sinHorizon, sinSkyLow);
     }
   }
 }

@@ -15,41 +15,20 @@
 // terrain together stay unbiased against the true horizon.
 
 #include "horizon_map.h"
+#include "horizon_sky.h"
 #include "radiosity_types.h"
 
 #include <array>
-#include <vector>
 
 namespace terralux
 {
-/// The map's pieces of azimuth (piecesPerSector between two of its azimuths), made
-/// once per map.
-class TerrainDirectionTable
-{
-public:
-  static constexpr int piecesPerSector = 2;
-  explicit TerrainDirectionTable(const HorizonMap& map);
-  const HorizonMap& map() const { return this->Map; }
-
-  struct Piece
-  {
-    double phi0, width;               ///< radians counter-clockwise from +x
-    double cos0, sin0, cos1, sin1;    ///< at its two ends
-    double cosMiddle, sinMiddle;
-  };
-  const std::vector<Piece>& pieces() const { return this->Pieces; }
-
-private:
-  const HorizonMap& Map;
-  std::vector<Piece> Pieces;
-};
-
 /// One post's terrain directions, as boxes of azimuth and elevation a piece wide, from
 /// which rays are drawn with a density close to the cosine's.
 class TerrainDirections
 {
 public:
-  TerrainDirections(const TerrainDirectionTable& table, const HorizonMap::Post& post, const Vec3& normal);
+  /// `horizons` must hold the map (HorizonSky::map) whose post this is.
+  TerrainDirections(const HorizonSky& horizons, const HorizonMap::Post& post, const Vec3& normal);
   /// No direction where terrain can be seen (rays would all be wasted).
   bool empty() const { return !(this->Total > 0.0); }
   struct Sample
@@ -80,7 +59,7 @@ private:
   };
   void addBox(double phi0, double width, double sinLow, double sinHigh, double cosine, double sinHorizon,
     double sinSkyLow);
-  std::array<Box, 2 * HorizonMap::azimuthCount * TerrainDirectionTable::piecesPerSector> Boxes;
+  std::array<Box, 2 * HorizonMap::azimuthCount * HorizonSky::piecesPerSector> Boxes;
   int Count = 0;
   double Total = 0.0;
   Vec3 Normal;

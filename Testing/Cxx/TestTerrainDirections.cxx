@@ -35,6 +35,25 @@ RadiosityScene sceneOf(const TerrainGrid& grid)
   return scene;
 }
 
+// The pieces and horizons a post's terrain directions share with the sky it hides
+// (the sky's radiance plays no part in the directions).
+struct MappedHorizons
+{
+  explicit MappedHorizons(const TerrainGrid& grid)
+    : scene(sceneOf(grid))
+    , rays(scene)
+    , map(grid)
+    , horizons(rays, open, &map)
+  {
+  }
+  RadiosityScene scene;
+  Visibility rays;
+  SkyHierarchy sky{ UniformSky(), 100.0, 6 };
+  OpenSky open{ sky };
+  HorizonMap map;
+  HorizonSky horizons;
+};
+
 struct Estimate
 {
   double mean = 0.0, standardError = 0.0;
@@ -83,11 +102,10 @@ Estimate viewFactorOverHemisphere(const Visibility& rays, const Vec3& from, cons
 TEST(TerrainDirections, FlatOpenPostsHaveNoneAndNeedNoRay)
 {
   const auto grid = makeGrid(33, 33, 10.0, [](double, double) { return 0.0; });
-  const HorizonMap map(*grid);
-  const TerrainDirectionTable table(map);
-  const HorizonMap::Post post = map.find(grid->post(16, 16));
+  const MappedHorizons mapped(*grid);
+  const HorizonMap::Post post = mapped.map.find(grid->post(16, 16));
   ASSERT_TRUE(post);
-  EXPECT_TRUE(TerrainDirections(table, post, Vec3(0, 0, 1)).empty());
+  EXPECT_TRUE(TerrainDirections(mapped.horizons, post, Vec3(0, 0, 1)).empty());
 }
 
 TEST(TerrainDirections, ValleyBottomSeesOneMinusCosOfTheSlopeInTerrain)
@@ -101,14 +119,12 @@ TEST(TerrainDirections, ValleyBottomSeesOneMinusCosOfTheSlopeInTerrain)
     const auto grid = makeGrid(
       201, 161, 2.0, [&](double, double y) { return std::min(50.0, std::abs(y - half) * std::tan(slope * degree)); },
       [](int, int) { return true; }, [](int i) { return -2000.0 + 20.0 * i; });
-    const RadiosityScene scene = sceneOf(*grid);
-    const Visibility rays(scene);
-    const HorizonMap map(*grid);
-    const TerrainDirectionTable table(map);
+    const MappedHorizons mapped(*grid);
+    const Visibility& rays = mapped.rays;
     const Vec3 p(0, half, 0), n(0, 0, 1);
-    const HorizonMap::Post post = map.find(p);
+    const HorizonMap::Post post = mapped.map.find(p);
     ASSERT_TRUE(post);
-    const TerrainDirections directions(table, post, n);
+    const TerrainDirections directions(mapped.horizons, post, n);
     const Estimate below = viewFactorBelowHorizon(directions, rays, p + 2.0 * rays.offset() * n, n, 4096);
     EXPECT_NEAR(below.mean, 1.0 - std::cos(slope * degree), 0.01) << slope;
     // Hit or miss over the hemisphere: sqrt(p (1 - p) / 4096), 0.0066 at 40 deg.
@@ -128,19 +144,17 @@ TEST(TerrainDirections, AgreeWithHemisphereRaysOnRoughTerrain)
       8.0 * std::sin(x / 7.0 + 1.3) * std::sin(y / 9.0);
   });
   ASSERT_TRUE(grid->facesUp());
-  const RadiosityScene scene = sceneOf(*grid);
-  const Visibility rays(scene);
-  const HorizonMap map(*grid);
-  const TerrainDirectionTable table(map);
+  const MappedHorizons mapped(*grid);
+  const Visibility& rays = mapped.rays;
   double sumBelow = 0.0, sumHemisphere = 0.0, sumVariance = 0.0, spreadBelow = 0.0, spreadHemisphere = 0.0;
   int posts = 0;
   for (int j = 8; j < 60; j += 6)
     for (int i = 8; i < 60; i += 6)
     {
       const Vec3 n = grid->postNormal(i, j), from = grid->post(i, j) + 2.0 * rays.offset() * n;
-      const HorizonMap::Post post = map.find(grid->post(i, j));
+      const HorizonMap::Post post = mapped.map.find(grid->post(i, j));
       ASSERT_TRUE(post);
-      const TerrainDirections directions(table, post, n);
+      const TerrainDirections directions(mapped.horizons, post, n);
       const Estimate below = viewFactorBelowHorizon(directions, rays, from, n, 1024);
       const Estimate hemisphere = viewFactorOverHemisphere(rays, from, n, 16384);
       const double se = std::hypot(below.standardError, hemisphere.standardError);
