@@ -21,8 +21,6 @@
 #include "error.h"
 #include "finite_parameters.h"
 #include "solver.h"
-#include "terrain_grid.h"
-#include "terrain_patch.h"
 
 #include <chrono>
 #include <vector>
@@ -330,9 +328,10 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
       << ". Raise MaximumIterations.");
   }
 
+  const bool hornNormals = this->PostNormals == HORN_NORMALS;
   if (this->EvaluateAtPoints)
   {
-    solver->findPostHorizons();
+    solver->findPostHorizons(hornNormals);
   }
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.
@@ -341,16 +340,12 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   // (the whole grid on every rank, so that pieces agree with one process).
   if (this->EvaluateAtPoints && solver->terrainRoots().size() == 1 && solver->terrainRoots().front())
   {
-    const terralux::TerrainPatch& root = *solver->terrainRoots().front();
-    const terralux::TerrainGrid& grid = root.grid();
-    const bool horn = this->PostNormals == HORN_NORMALS;
-    solver->gatherPostLattice(
-      root, [&](int i, int j) { return horn ? grid.hornNormal(i, j) : grid.postNormal(i, j); });
+    solver->gatherPostLattice(*solver->terrainRoots().front(), hornNormals);
   }
   vtkRadiosityOutputs::PointOptions pointOptions;
   pointOptions.bands = this->NumberOfBands;
   pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;
-  pointOptions.hornNormals = this->PostNormals == HORN_NORMALS;
+  pointOptions.hornNormals = hornNormals;
   pointOptions.sunshine = scene.SunshineDuration;
   int index = 0;
   auto withResults = [&](vtkDataSet* input) {

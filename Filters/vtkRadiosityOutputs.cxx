@@ -195,7 +195,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
     const int j0 = options.allPosts() ? 0 : std::max(0, options.posts[2]);
     const int j1 = options.allPosts() ? ny - 1 : std::min(ny - 1, options.posts[3]);
     auto asked = [&](int i, int j) { return i >= i0 && i <= i1 && j >= j0 && j <= j1; };
-    auto normalAt = [&](int i, int j) { return options.hornNormals ? grid.hornNormal(i, j) : grid.postNormal(i, j); };
+    auto normalAt = [&](int i, int j) { return grid.normalAt(i, j, options.hornNormals); };
     if (evaluateAtPoints)
     {
       // Every post evaluated at itself from its most lit leaf, with the normal of the

@@ -143,7 +143,7 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
   return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
 }
 
-void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, const std::function<Vec3(int, int)>& normalAt)
+void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hornNormals)
 {
   const bool gathered = this->Options.gatherSamples > 0 && (this->Sky || this->LargestRadiosity > 0.0);
   if (!gathered || !this->PostHorizons || &root.grid() != this->HeightFieldGrid)
@@ -160,7 +160,7 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, const st
       const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
       if (!leaf)
         continue;
-      const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), normalAt(i, j));
+      const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), grid.normalAt(i, j, hornNormals));
       lattice->set(i, j, result.irradiance[ReflectedLight], result.gatherVariance);
     }
   });

@@ -13,8 +13,9 @@
 
 namespace terralux
 {
-PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky)
+PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals)
   : Terrain(terrain)
+  , HornNormals(hornNormals)
 {
   const int nx = terrain.postsX(), ny = terrain.postsY();
   const std::size_t posts = static_cast<std::size_t>(nx) * ny;
@@ -28,7 +29,7 @@ PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const O
       HorizonMap::Post post;
       post.found = true;
       post.index = static_cast<std::size_t>(j) * nx + i;
-      const Value value = at(post, terrain.postNormal(i, j), horizons, sky);
+      const Value value = at(post, terrain.normalAt(i, j, hornNormals), horizons, sky);
       for (int band = 0; band < maxBands; ++band)
         this->Values[post.index][band] = static_cast<float>(value.irradiance[band]);
       this->Values[post.index][maxBands] = static_cast<float>(value.skyViewFactor);
@@ -57,7 +58,7 @@ bool PostSky::found(const HorizonMap::Post& post, const Vec3& normal, Value& val
   const int nx = this->Terrain.postsX();
   const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
   // Stored as floats: the same normal to 1e-6 gives the same sky to about 1e-6.
-  if (glm::length(this->Terrain.postNormal(i, j) - normal) > 1e-6)
+  if (glm::length(this->Terrain.normalAt(i, j, this->HornNormals) - normal) > 1e-6)
     return false;
   for (int band = 0; band < maxBands; ++band)
     value.irradiance[band] = this->Values[post.index][band];

@@ -22,8 +22,9 @@ class TerrainGrid;
 class PostSky
 {
 public:
-  /// Every used post of the map's terrain, on its area-weighted normal (in parallel).
-  PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky);
+  /// Every used post of the map's terrain, on its normal (Horn's where `hornNormals`,
+  /// the area-weighted one otherwise: the outputs' choice), in parallel.
+  PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals = false);
 
   struct Value
   {
@@ -34,8 +35,8 @@ public:
   /// horizon hides (as the final gather takes it at a post).
   static Value at(const HorizonMap::Post& post, const Vec3& normal, const HorizonSky& horizons, const OpenSky& sky);
 
-  /// The sky found for a post, when `normal` is the one it was found on (the grid's own
-  /// post normal: the default of the terrain's points); false otherwise.
+  /// The sky found for a post, when `normal` is the one it was found on; false
+  /// otherwise.
   bool found(const HorizonMap::Post& post, const Vec3& normal, Value& value) const;
 
   /// The sky irradiance at grid parameters (u, v), between the used posts of its cell;
@@ -44,6 +45,7 @@ public:
 
 private:
   const TerrainGrid& Terrain;
+  bool HornNormals;
   std::vector<std::array<float, maxBands + 1>> Values; // per post, row by row: irradiance, sky view factor
   std::vector<std::uint8_t> Used;
 };

@@ -134,7 +134,7 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
 }
 
-void HierarchicalRadiosity::findPostHorizons()
+void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
 {
   if (!this->Horizons || !this->HeightFieldGrid || this->PostHorizons)
     return;
@@ -148,7 +148,7 @@ void HierarchicalRadiosity::findPostHorizons()
   this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get());
   this->Gather->setHorizons(this->Horizons.get());
   this->PostSkies =
-    std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints);
+    std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals);
   this->Gather->setPostSkies(this->PostSkies.get());
   this->Stats.secondsHorizons = secondsSince(start);
 }

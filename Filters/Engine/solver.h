@@ -11,7 +11,6 @@
 #include "helement.h"
 #include "radiosity_types.h"
 
-#include <functional>
 #include <memory>
 
 namespace terralux
@@ -118,8 +117,10 @@ public:
   bool solve(RadiosityProgress* progress = nullptr);
   /// Before posts are evaluated in a scene of one height-field terrain under a sky:
   /// the horizons of all its posts at once (HorizonMap, 64 bytes a post, up to 2 GiB),
-  /// which their sky then reads instead of casting rays. Elsewhere it does nothing.
-  void findPostHorizons();
+  /// which their sky then reads instead of casting rays, and the sky of every post
+  /// (PostSky) at the normals the outputs use (Horn's where `hornNormals`). Elsewhere it
+  /// does nothing.
+  void findPostHorizons(bool hornNormals = false);
 
   const RadiosityStatistics& statistics() const { return this->Stats; }
   /// Rays cast so far: the solve's and those of later point evaluations.
@@ -148,9 +149,10 @@ public:
   Spectrum directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours = nullptr) const;
   /// Before the posts of the scene's one terrain (a height field with horizons, see
   /// findPostHorizons) are evaluated: a lattice of them (PostLattice) first, in
-  /// parallel, at `normalAt`'s normals, so that the others take their light from
-  /// surfaces one bounce more exact and cast no pilot. Does nothing for other scenes.
-  void gatherPostLattice(const TerrainPatch& root, const std::function<Vec3(int, int)>& normalAt);
+  /// parallel, at the normals the outputs use (Horn's where `hornNormals`), so that the
+  /// others take their light from surfaces one bounce more exact and cast no pilot.
+  /// Does nothing for other scenes.
+  void gatherPostLattice(const TerrainPatch& root, bool hornNormals);
   /// Many points at once, in parallel.
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
     const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const;

@@ -81,6 +81,9 @@ public:
   /// their cross product. Where a neighbour is missing (border, no data) the post's
   /// area-weighted normal instead.
   Vec3 hornNormal(int i, int j) const;
+  /// The normal of post (i, j) by either convention (the outputs' choice, see the
+  /// filter's PostNormals): Horn's where `horn`, the area-weighted one otherwise.
+  Vec3 normalAt(int i, int j, bool horn) const { return horn ? this->hornNormal(i, j) : this->postNormal(i, j); }
   /// True when every triangle of the valid cells faces up (+z): the surface is then a
   /// height field over the ground plane, as a DEM is, and not a folded grid.
   bool facesUp() const;
