@@ -332,6 +332,7 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   if (this->EvaluateAtPoints)
   {
     solver->findPostHorizons(hornNormals);
+    solver->gatherLeaves();
   }
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.

@@ -2,6 +2,7 @@
 
 #include "angles.h"
 #include "horizon_sky.h"
+#include "leaf_light.h"
 #include "sky_importance.h"
 #include "link_transport.h"
 #include "open_sky.h"
@@ -85,6 +86,8 @@ Spectrum FinalGather::radiosityAt(
   // On a terrain whose posts' skies are known (the scene's one terrain), the sky at a
   // hit comes from its cell's posts and the light from surfaces from the lattice's.
   Spectrum sky = e[SkyLight], reflected = e[ReflectedLight];
+  if (this->Leaves)
+    this->Leaves->at(leaf.id(), sky, reflected);
   if (hit.terrain == 0 && this->PostSkies)
     this->PostSkies->interpolate(hit.u, hit.v, sky);
   if (hit.terrain == 0 && this->Lattice)
@@ -93,6 +96,23 @@ Spectrum FinalGather::radiosityAt(
   for (int band = 0; band < maxBands; ++band)
     b[band] = leaf.emission()[band] + leaf.reflectance()[band] * (sun[band] + sky[band] + reflected[band]);
   return b;
+}
+
+int FinalGather::openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed) const
+{
+  const CosineFrame frame(normal);
+  SampleGenerator random(seed);
+  int open = 0;
+  for (int k = 0; k < strata * strata; ++k)
+  {
+    double s, t;
+    stratifiedPoint(k, strata * strata, random, s, t);
+    const Vec3 d = frame.direction(s, t);
+    SurfaceHit hit;
+    const PolygonElement* leaf = this->Rays.firstHit(point, normal, d, hit) ? this->leafAt(hit) : nullptr;
+    open += !leaf || glm::dot(hit.normal, d) * glm::dot(hit.normal, leaf->normal()) < 0.0;
+  }
+  return open;
 }
 
 const PolygonElement* FinalGather::leafAt(const SurfaceHit& hit) const
@@ -168,7 +188,7 @@ Spectrum FinalGather::hiddenSkyByRadiance(const Vec3& point, const Vec3& normal,
   if (pilotDecides(budget))
   {
     cast(budget.pilot, pilotRandom);
-    count = raysNeeded(budget, sum, sumOfSquares, received);
+    count = std::max(raysNeeded(budget, sum, sumOfSquares, received), std::min(budget.skyMinimum, budget.maximum));
   }
   cast(count, random);
   for (double& band : hidden)
@@ -228,6 +248,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // decided when to stop would be biased: they stop early where they happened to miss
   // a bright hit.
   double sum = 0.0, sumOfSquares = 0.0;
+  int backRays = 0;
   const CosineFrame frame(normal);
   auto cast = [&](int count, SampleGenerator& random)
   {
@@ -235,6 +256,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     // spread over the suns for any count, and unrelated to the rays' strata.
     const double sunStart = this->SunCumulative.empty() ? 0.0 : random.uniform();
     sum = sumOfSquares = 0.0;
+    backRays = 0;
     surfaces = Spectrum{};
     skyCorrection = Spectrum{};
     skyViewCorrection = 0.0;
@@ -267,7 +289,10 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       // one-sided surface sends nothing.
       const Vec3 front = glm::dot(hit.normal, leaf->normal()) < 0.0 ? -hit.normal : hit.normal;
       if (!(glm::dot(front, d) < 0.0))
+      {
+        ++backRays;
         return value;
+      }
       const double sunSample = std::fmod(sunStart + 0.61803398874989485 * k, 1.0);
       const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample);
       for (int band = 0; band < maxBands; ++band)
@@ -307,6 +332,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       std::clamp((openOmega + skyViewCorrection * perRay) / pi, 0.0, 0.5 * (1.0 + std::clamp(normal.z, -1.0, 1.0)));
   result.rays += count;
   result.count = count;
+  result.backRays = backRays;
   if (count > 0)
     result.variance = std::max(0.0, sumOfSquares * perRay - sum * perRay * sum * perRay);
   return result;

@@ -15,6 +15,7 @@ namespace terralux
 {
 class HElement;
 class HorizonSky;
+class LeafLight;
 class OpenSky;
 class PolygonElement;
 class PostLattice;
@@ -32,6 +33,7 @@ struct GatheredLight
   int rays = 0;
   int count = 0; ///< the rays of the estimate (a pilot's aside)
   double variance = 0.0; ///< of one ray's estimate (largest band), over those rays
+  int backRays = 0; ///< of those rays, the ones that met the back of a surface
 };
 
 /// How many rays a point takes: as many as a pilot of `pilot` rays says bring the
@@ -43,6 +45,10 @@ struct GatherBudget
   int minimum = 64;
   int maximum = 1024;
   double relativeError = 0.003;
+  /// Rays drawn by the sky's radiance (the sky a scene with buildings hides): at least
+  /// this many, or maximum if less. A small occluder hides a few percent of the sky,
+  /// which a pilot of 64 sees once or not at all.
+  int skyMinimum = 256;
   /// Horizons at half the azimuths (a point the solution found open).
   bool coarseHorizon = false;
   /// The variance of one ray's estimate where neighbours tell it (>= 0): the count then
@@ -97,6 +103,9 @@ public:
   /// Posts of that terrain gathered first: a hit on it receives their light from
   /// surfaces, read between them, instead of its leaf's.
   void setPostLattice(const PostLattice* lattice) { this->Lattice = lattice; }
+  /// What leaves receive, gathered from each (LeafLight): a hit on one of them sends
+  /// that instead of the hierarchy's values (null: the hierarchy's).
+  void setLeafLight(const LeafLight* leaves) { this->Leaves = leaves; }
   /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
   /// at every hit; more (the sun positions of a day or a year, summed in one solve)
   /// would multiply the gather's rays, so a hit then takes one sun, chosen in
@@ -105,6 +114,11 @@ public:
   void prepareSuns();
   static constexpr std::size_t maximumSunsPerHit = 4;
 
+  /// How many of strata x strata stratified cosine-weighted rays from a point escape or
+  /// meet the front of a surface: how open its side is (a point that sees the back of
+  /// a one-sided surface lies inside something, as a post on the line of a house's wall
+  /// may).
+  int openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed) const;
   /// The leaf a ray's hit lies on (null where nothing solved is there).
   const PolygonElement* leafAt(const struct SurfaceHit& hit) const;
   /// Radiosity leaving a hit on `leaf`, its direct sunlight taken at the hit;
@@ -127,6 +141,7 @@ private:
   const HorizonSky* Horizons = nullptr;
   const PostSky* PostSkies = nullptr;
   const PostLattice* Lattice = nullptr;
+  const LeafLight* Leaves = nullptr;
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };

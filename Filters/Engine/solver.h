@@ -19,6 +19,7 @@ class Cluster;
 class FinalGather;
 class HorizonMap;
 class HorizonSky;
+class LeafLight;
 class PostLattice;
 class PostSky;
 class OpenSky;
@@ -153,11 +154,24 @@ public:
   /// others take their light from surfaces one bounce more exact and cast no pilot.
   /// Does nothing for other scenes.
   void gatherPostLattice(const TerrainPatch& root, bool hornNormals);
+  /// Before points are evaluated (after findPostHorizons): what every leaf receives
+  /// from the sky and from surfaces, by a gather of leafGatherRays from its centre over
+  /// the hierarchy's values (LeafLight), in parallel; gather rays that meet a leaf then
+  /// send that instead. Leaves of a terrain whose posts' skies are known are left out
+  /// (their hits read PostSky and PostLattice).
+  void gatherLeaves();
+  static constexpr int leafGatherRays = 64;
   /// Many points at once, in parallel.
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
     const std::vector<Vec3>& normals, std::vector<PointIrradiance>& results) const;
 
 private:
+  /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
+  /// leaf) unless that sees the back of a surface, then the most open of four points two
+  /// ray offsets from it diagonally in its plane, if clearly more open (the reference's
+  /// rule, Testing/Reference): a post on the line of a house's wall is judged from
+  /// outside the house, not from its dark inside.
+  Vec3 openSideOf(const Vec3& point, const Vec3& inside, const Vec3& normal, std::uint64_t seed) const;
   /// Refines pending links; returns how many were split.
   std::size_t refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated);
   std::size_t splitShadowedLeaves();
@@ -191,6 +205,7 @@ private:
   std::unique_ptr<HorizonMap> PostHorizons;      // its posts' horizons (findPostHorizons)
   std::unique_ptr<PostSky> PostSkies;            // and the sky each of them receives
   std::unique_ptr<PostLattice> Lattice;          // its posts gathered first (gatherPostLattice)
+  std::unique_ptr<LeafLight> Leaves;             // what leaves receive, gathered (gatherLeaves)
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on

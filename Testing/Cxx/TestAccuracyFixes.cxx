@@ -16,6 +16,7 @@
 #include "vtkSkySource.h"
 #include "vtkStructuredGrid.h"
 #include "vtkSunSource.h"
+#include "vtkTessellatedBoxSource.h"
 #include "vtkTerrainSource.h"
 
 #include <gtest/gtest.h>
@@ -38,13 +39,13 @@ vtkSmartPointer<vtkPolyData> ground(double half, int resolution)
   return plane->GetOutput();
 }
 
-vtkSmartPointer<vtkPolyData> building(double x, double y, double height)
+vtkSmartPointer<vtkPolyData> building(double x, double y, double height, double base = 0.0)
 {
   vtkNew<vtkCubeSource> cube;
   cube->SetXLength(x);
   cube->SetYLength(y);
-  cube->SetZLength(height);
-  cube->SetCenter(0, 0, 0.5 * height);
+  cube->SetZLength(height - base);
+  cube->SetCenter(0, 0, 0.5 * (height + base));
   cube->Update();
   return cube->GetOutput();
 }
@@ -117,6 +118,51 @@ TEST(AccuracyFixes, FootAndCornerOfABuildingSeeTheirShareOfTheSky)
       EXPECT_GT(valueAt(floor, "SkyIrradiance", 5.0, 0.0, 0.0), 20.0);
       EXPECT_LT(valueAt(floor, "SkyIrradiance", 5.0, 0.0, 0.0), 100.0);
     }
+  }
+}
+
+TEST(AccuracyFixes, AWallsPartBelowTheGroundSendsNothingAndHidesNothing)
+{
+  // A house on a terrain whose walls reach 1 m below the ground, as houses modelled on
+  // terrain do: the posts at its foot see the part above the ground only, so they read
+  // what they read beside a house standing on the ground. The walls' lowest leaves
+  // straddle the ground: averaged with their buried part, they sent 20-40 % too little
+  // onto those posts (38 % at the house of the accuracy report).
+  vtkNew<vtkSkySource> sky;
+  sky->UseSunSourceOff();
+  sky->SetSkyModelToUniform();
+  sky->SetDiffuseHorizontalIrradiance(100.0);
+  vtkNew<vtkImageData> heights;
+  heights->SetDimensions(41, 41, 1);
+  heights->SetSpacing(2.0, 2.0, 1.0);
+  heights->SetOrigin(-40.0, -40.0, 0.0);
+  heights->AllocateScalars(VTK_FLOAT, 1);
+  heights->GetPointData()->GetScalars()->Fill(0.0);
+  vtkNew<vtkTerrainSource> terrain;
+  terrain->SetInputData(heights);
+  double reflected[2][5];
+  for (int buried : { 0, 1 })
+  {
+    vtkNew<vtkTessellatedBoxSource> house;
+    house->SetBounds(-5, 5, -4, 4, buried ? -1.0 : 0.0, 6.0);
+    house->SetLevel(2);
+    house->QuadsOn();
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputConnection(terrain->GetOutputPort());
+    radiosity->AddInputConnection(house->GetOutputPort());
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    radiosity->SetDefaultReflectance(0.3);
+    vtkNew<MessageCatcher> messages;
+    ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+    auto* ground = vtkDataSet::SafeDownCast(vtkMultiBlockDataSet::SafeDownCast(radiosity->GetOutput())->GetBlock(0));
+    for (int k = 0; k < 5; ++k) // posts on the south wall's line
+      reflected[buried][k] = valueAt(ground, "ReflectedIrradiance", -4.0 + 2.0 * k, -4.0, 0.0);
+  }
+  for (int k = 0; k < 5; ++k)
+  {
+    // About half the wall's radiosity: 0.3 x (50 of sky + what the ground sends) / 2.
+    EXPECT_GT(reflected[0][k], 6.0) << k;
+    EXPECT_NEAR(reflected[1][k], reflected[0][k], 0.05 * reflected[0][k]) << k;
   }
 }
 

@@ -95,8 +95,10 @@ TEST(OpenSky, TheTableOverNormalsHoldsTheExactValues)
 {
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(60.0 * degree, 2.2)), 100.0, 7);
   const OpenSky exact(sky);
-  OpenSky table(sky);
+  OpenSky table(sky), coarse(sky);
   table.tabulate(128);
+  coarse.tabulate(64); // for fewer points (under 200,000)
+  double coarseWorst = 0.0, coarseSum = 0.0;
   double worst = 0.0, worstOmega = 0.0, sum = 0.0;
   int count = 0;
   for (double slope = 0.0; slope < 87.0; slope += 3.7)
@@ -112,12 +114,19 @@ TEST(OpenSky, TheTableOverNormalsHoldsTheExactValues)
       worstOmega = std::max(worstOmega, std::abs(tableOmega - omega) / omega);
       sum += std::abs(t[0] / e[0] - 1.0);
       ++count;
+      coarse.irradiance(n, t, tableOmega);
+      coarseWorst = std::max(coarseWorst, std::abs(t[0] / e[0] - 1.0));
+      coarseSum += std::abs(t[0] / e[0] - 1.0);
     }
   // Smooth in the normal, but for steps where the split of a patch across the plane's
   // horizon starts or stops: within 0.1 % everywhere, 0.02 % on average.
   EXPECT_LT(worst, 1e-3);
   EXPECT_LT(sum / count, 2e-4);
   EXPECT_LT(worstOmega, 3e-4);
+  std::printf("open sky table: worst %.2e mean %.2e at side 128; worst %.2e mean %.2e at side 64\n", worst,
+    sum / count, coarseWorst, coarseSum / count);
+  EXPECT_LT(coarseWorst, 2e-3);
+  EXPECT_LT(coarseSum / count, 4e-4);
   // Below the table's reach (normals near the horizon and under it): exact.
   Spectrum e, t;
   double omega = 0.0, tableOmega = 0.0;
@@ -162,8 +171,9 @@ TEST(FinalGather, ClosedBoxReadsItsRadiosityAtCornersEdgesAndFaces)
 TEST(FinalGather, OpenGroundTakesTheFewestRaysAndThePitMore)
 {
   // Work follows the scene: a post that sees nothing but sky needs only the pilots'
-  // verdicts (of the sky's rays and of the surfaces' rays) and the fewest rays of each;
-  // the floor of a pit needs many more, and its sky there is the open cone's.
+  // verdicts (of the sky's rays and of the surfaces' rays) and the fewest rays of each
+  // (skyMinimum for the sky's); the floor of a pit needs many more, and its sky there
+  // is the open cone's.
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(40.0 * degree, 2.0)), 100.0, 6);
   const OpenSky open(sky);
   RadiosityScene scene;
@@ -176,20 +186,22 @@ TEST(FinalGather, OpenGroundTakesTheFewestRaysAndThePitMore)
   gather.setSky(&open);
   const GatherBudget budget;
   const GatheredLight high = gather.irradianceAt(Vec3(5, 5, 0.0), Vec3(0, 0, 1), budget, 1, 0.0);
-  EXPECT_EQ(high.rays, 2 * (budget.pilot + budget.minimum));
+  EXPECT_EQ(high.rays, 2 * budget.pilot + budget.skyMinimum + budget.minimum);
   EXPECT_NEAR(high.sky[0], 100.0, 0.1);
   EXPECT_DOUBLE_EQ(high.skyViewFactor, 1.0);
   const GatheredLight floor = gather.irradianceAt(Vec3(0, 0, -1), Vec3(0, 0, 1), budget, 1, 0.0);
-  EXPECT_GT(floor.rays, 4 * high.rays);
+  EXPECT_GT(floor.rays, 5 * high.rays / 2);
   // The pit's opening is a cone of half-angle 45 deg: sky view factor sin^2 45 deg.
   EXPECT_NEAR(floor.skyViewFactor, 0.5, 0.02);
 }
 
-TEST(FinalGather, PointsOfLeavesTheSolutionFoundOpenTakeNoPilot)
+TEST(FinalGather, PointsOfOpenGroundTakeTheFewestRays)
 {
-  // Open flat ground under a clear sky: the solved leaf sees all the sky its plane can,
-  // so its points take the fewest rays (64 drawn by the sky's radiance, 64 for the
-  // surfaces) and no pilot; the sky there is still exact.
+  // Open flat ground under a clear sky: its points take the fewest rays (the pilots',
+  // then 256 drawn by the sky's radiance and 64 for the surfaces); the sky there is
+  // still exact. Only over a height field does a leaf the solution found open skip the
+  // pilots: with buildings, a tree or a house the leaf's links missed may hide a few
+  // percent of the sky.
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(40.0 * degree, 2.0)), 100.0, 6);
   RadiosityScene scene;
   addPolygon(scene, { { -10, -10, 0 }, { 10, -10, 0 }, { 10, 10, 0 }, { -10, 10, 0 } }, 0.2);
@@ -200,7 +212,9 @@ TEST(FinalGather, PointsOfLeavesTheSolutionFoundOpenTakeNoPilot)
   const Vec3 p(1.0, 2.0, 0.0);
   const std::uint64_t before = solver.raysCast();
   const PointIrradiance open = solver.irradianceAt(*ground.leafHolding(p), p);
-  EXPECT_EQ(solver.raysCast() - before, 128u);
+  const GatherBudget defaults;
+  // Besides, 36 probes of the point's open side (HierarchicalRadiosity::openSideOf).
+  EXPECT_EQ(solver.raysCast() - before, 2u * defaults.pilot + defaults.skyMinimum + defaults.minimum + 36u);
   EXPECT_NEAR(open.irradiance[SkyLight][0], 100.0, 0.1);
   // Beside a wall the leaf is not open: a pilot and more rays.
   RadiosityScene walled;
@@ -212,7 +226,7 @@ TEST(FinalGather, PointsOfLeavesTheSolutionFoundOpenTakeNoPilot)
   const PolygonElement& floor = *beside.polygonRoots()[0];
   const std::uint64_t start = beside.raysCast();
   beside.irradianceAt(*floor.leafHolding(q), q);
-  EXPECT_GT(beside.raysCast() - start, 256u);
+  EXPECT_GT(beside.raysCast() - start, 2u * (2u * defaults.pilot + defaults.skyMinimum + defaults.minimum));
 }
 
 TEST(SkyImportance, RaysDrawnByRadianceIntegrateTheOpenSky)
@@ -287,4 +301,52 @@ TEST(FinalGather, AWallHidingTheBrightSkyNearTheSunIsFound)
       EXPECT_NEAR(light.sky[0], expected, 0.01 * plane[0]) << azimuth << " " << p.x << " " << p.y;
     }
   }
+}
+
+TEST(FinalGather, LeavesGatheredFirstBringTheBoxOneBounceCloser)
+{
+  // Inward cube, emission 100, reflectance 0.5: E = 200 everywhere. A hit sends
+  // emission + 0.5 x its leaf's irradiance: from the hierarchy, whose links each carry
+  // a bounded error, or gathered at the leaf first (gatherLeaves), which halves that
+  // error at every point (one more bounce of reflectance 0.5).
+  // Each face of 8 x 8 cells, each two triangles (as vtkTessellatedBoxSource makes).
+  RadiosityScene scene;
+  const Vec3 corners[6][3] = { { { 0, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 } }, { { 0, 0, 1 }, { 1, 0, 0 }, { 0, 1, 0 } },
+    { { 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 0 } }, { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 } }, { { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 0 } } };
+  constexpr int cells = 8;
+  for (const auto& face : corners)
+    for (int i = 0; i < cells; ++i)
+      for (int j = 0; j < cells; ++j)
+      {
+        // origin + a-step x i + b-step x j; a x b points into the cube.
+        const Vec3 o = face[0], a = face[2] / double(cells), b = face[1] / double(cells);
+        const Vec3 p00 = o + double(i) * a + double(j) * b, p10 = p00 + a, p01 = p00 + b, p11 = p00 + a + b;
+        addPolygon(scene, { p00, p10, p11 }, 0.5, 100.0);
+        addPolygon(scene, { p00, p11, p01 }, 0.5, 100.0);
+      }
+  RadiosityOptions options;
+  HierarchicalRadiosity solver(scene, options);
+  ASSERT_TRUE(solver.solve());
+  // Points of the floor's triangles (the first 128 polygons): corners, edges, inside.
+  auto meanError = [&]() {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = 0; k < 2 * cells * cells; k += 7)
+    {
+      const PolygonElement& cell = *solver.polygonRoots()[k];
+      for (const Vec3& p : { cell.centre(), scene.points[scene.polygons[k].vertices[0]] })
+      {
+        sum += solver.irradianceAt(*cell.leafHolding(p), p).irradiance[ReflectedLight][0] - 200.0;
+        ++count;
+      }
+    }
+    return sum / count;
+  };
+  const double fromHierarchy = meanError();
+  solver.gatherLeaves();
+  const double fromLeaves = meanError();
+  std::printf("box: mean error %.3f W/m^2 from the hierarchy, %.3f from the leaves\n", fromHierarchy, fromLeaves);
+  EXPECT_LT(std::abs(fromLeaves), 0.7 * std::abs(fromHierarchy));
+  EXPECT_LT(std::abs(fromLeaves), 1.0);
 }
