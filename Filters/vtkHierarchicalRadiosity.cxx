@@ -65,7 +65,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   : ErrorTolerance(1e-3)
   , MinimumElementArea(0.0)
   , VisibilitySamples(4)
-  , MaximumGatherRays(1024)
+  , MaximumGatherRays(4096)
   , GatherError(0.003)
   , MaximumIterations(30)
   , ConvergenceTolerance(1e-3)
@@ -332,8 +332,10 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   if (this->EvaluateAtPoints)
   {
     solver->findPostHorizons(hornNormals);
-    solver->gatherLeaves();
   }
+  // Leaves gathered first: at points, what gather rays meet; averaged, the polygons'
+  // values themselves (terrain patches keep the hierarchy's: the fast mode of a DEM).
+  solver->gatherLeaves(this->EvaluateAtPoints != 0);
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.
   const auto pointsStart = std::chrono::steady_clock::now();

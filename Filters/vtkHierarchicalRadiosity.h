@@ -114,18 +114,22 @@ public:
    * Set/Get the most rays per point of the final gather that gives, with
    * EvaluateAtPoints on, the sky and the light from surfaces at each point. The sky is
    * the open sky of the point's plane (exact, or from a table over normals within
-   * 0.1 % of it where more than 200,000 points are evaluated) minus what the scene
+   * 0.1 % of it where more than 8,450 points are evaluated) minus what the scene
    * hides: from the point's horizon (see SkyFromHorizons) or from occlusion rays drawn
-   * by the sky's radiance. Light from surfaces: cosine-weighted rays meet the solved
-   * leaves (their radiosity, with direct sunlight taken at the hit itself; with many
-   * suns, one sun per hit chosen by its irradiance). For each kind of ray a pilot of 64
-   * decides how many, from 64 to this, bring the standard error below GatherError x
-   * the point's irradiance (points of leaves the solution found open take 64 of each
-   * and no pilot). At the posts of a scene of one terrain with horizons, rays are drawn
-   * below each post's horizon only; a lattice of every 4th post takes a pilot of 16,
-   * the other posts at least 9 rays, their count from the lattice's spread. 0
-   * re-evaluates the hierarchy's links at each point instead (faster, less accurate in
-   * rough terrain). Default is 1024.
+   * by the sky's radiance (a pilot of 64, then at least 256). Light from surfaces:
+   * cosine-weighted rays meet the solved leaves and send what each leaf receives,
+   * gathered first from a few of its points (with direct sunlight taken at the hit
+   * itself; with many suns, one sun per hit chosen by its irradiance). For each kind of
+   * ray a pilot of 64 decides how many, from 64 to this, bring the standard error
+   * below GatherError x the point's irradiance (over a height field, points of leaves
+   * the solution found open take 64 of each and no pilot). At the posts of a scene of
+   * one terrain with horizons, rays are drawn below each post's horizon only, at most a
+   * quarter of this; a lattice of every 4th post takes a pilot of 16, the other posts
+   * at least 9 rays, their count from the lattice's spread. A point's rays start two
+   * ray offsets toward the centre of the cells around it (the limit from inside its
+   * surface), or, where that sees the back of a surface, from the most open point two
+   * offsets away diagonally. 0 re-evaluates the hierarchy's links at each point
+   * instead (faster, less accurate in rough terrain). Default is 4096.
    */
   vtkSetClampMacro(MaximumGatherRays, int, 0, 1 << 20);
   vtkGetMacro(MaximumGatherRays, int);

@@ -303,6 +303,8 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     // another (ground under a building), the point takes the value of its most open
     // leaf, the limit a user sees from the visible side.
     std::vector<const terralux::PolygonElement*> otherLeaves;
+    Vec3 centroidSum{ 0.0 }; // area-weighted centres of its polygons: where the point moves
+    double polygonArea = 0.0;
     Values leafSum{};      // averaged mode: area-weighted leaf values
     double leafWeight = 0.0;
     double skyView = 0.0;
@@ -333,6 +335,8 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
       side->otherLeaves.push_back(leaf);
     }
     side->normalSum += root->area() * n;
+    side->centroidSum += root->area() * root->centre();
+    side->polygonArea += root->area();
     side->area += averagingWeight(*root);
     if (!evaluateAtPoints)
     {
@@ -386,13 +390,22 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
 
   // One evaluation per side of each point, in parallel.
   std::vector<const terralux::PolygonElement*> leaves;
-  std::vector<Vec3> points, normals;
+  std::vector<Vec3> points, normals, towards;
   std::vector<std::pair<vtkIdType, const Side*>> owners;
   for (vtkIdType p = 0; p < count; ++p)
     for (const Side& side : sides[p])
     {
       const double length = glm::length(side.normalSum);
       leaves.push_back(side.leaf);
+      // The point moves toward the centre of its side's cells (the limit from inside
+      // the surface, whatever leaf holds it); where that centre is the point itself
+      // (cells all around it: a ground vertex at a building's corner, some cells under
+      // the building), toward its leaf's, and the side's other leaves are tried too.
+      const Vec3 point = scene.Scene.points[input.firstPoint + p];
+      const Vec3 centroid = side.polygonArea > 0.0 ? side.centroidSum / side.polygonArea : side.leaf->centre();
+      towards.push_back(glm::length(centroid - point) > 1e-3 * glm::length(side.leaf->centre() - point)
+          ? centroid
+          : side.leaf->centre());
       points.push_back(scene.Scene.points[input.firstPoint + p]);
       normals.push_back(length > 0.0 ? side.normalSum / length : side.leaf->normal());
       owners.emplace_back(p, &side);
@@ -403,7 +416,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   {
     // The first leaf of each side, then the side's other leaves; the most open wins.
     std::vector<const terralux::PolygonElement*> allLeaves = leaves;
-    std::vector<Vec3> allPoints = points, allNormals = normals;
+    std::vector<Vec3> allPoints = points, allNormals = normals, allTowards = towards;
     std::vector<std::size_t> evaluationOf;
     for (std::size_t k = 0; k < owners.size(); ++k)
       for (const terralux::PolygonElement* other : owners[k].second->otherLeaves)
@@ -411,10 +424,11 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
         allLeaves.push_back(other);
         allPoints.push_back(points[k]);
         allNormals.push_back(normals[k]);
+        allTowards.push_back(other->centre());
         evaluationOf.push_back(k);
       }
     std::vector<terralux::PointIrradiance> results;
-    solver.irradianceAt(allLeaves, allPoints, allNormals, results);
+    solver.irradianceAt(allLeaves, allPoints, allNormals, allTowards, results);
     auto openness = [](const terralux::PointIrradiance& r) {
       return r.irradiance[0][0] + r.irradiance[1][0] + r.irradiance[2][0];
     };

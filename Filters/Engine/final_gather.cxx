@@ -87,7 +87,7 @@ Spectrum FinalGather::radiosityAt(
   // hit comes from its cell's posts and the light from surfaces from the lattice's.
   Spectrum sky = e[SkyLight], reflected = e[ReflectedLight];
   if (this->Leaves)
-    this->Leaves->at(leaf.id(), sky, reflected);
+    this->Leaves->at(leaf.id(), hit.point, sky, reflected);
   if (hit.terrain == 0 && this->PostSkies)
     this->PostSkies->interpolate(hit.u, hit.v, sky);
   if (hit.terrain == 0 && this->Lattice)

@@ -1,27 +1,95 @@
 #include "leaf_light.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace terralux
 {
-LeafLight::LeafLight(std::size_t elements)
-  : Sky(elements)
-  , Reflected(elements)
-  , Known(elements, 0)
+LeafLight::LeafLight(std::size_t elements, const std::vector<std::uint64_t>& leaves)
+  : Slot(elements, -1)
+  , Fits(leaves.size())
 {
+  for (std::size_t k = 0; k < leaves.size(); ++k)
+    this->Slot[leaves[k]] = static_cast<std::int32_t>(k);
 }
 
-void LeafLight::set(std::uint64_t id, const Spectrum& sky, const Spectrum& reflected)
+double LeafLight::Plane::at(int band, const Vec3& offset) const
 {
-  this->Sky[id] = sky;
-  this->Reflected[id] = reflected;
-  this->Known[id] = 1;
+  return std::clamp(this->mean[band] + glm::dot(this->slope[band], offset), this->low[band], this->high[band]);
 }
 
-bool LeafLight::at(std::uint64_t id, Spectrum& sky, Spectrum& reflected) const
+void LeafLight::set(std::size_t k, const Vec3& normal, const std::vector<Sample>& samples)
 {
-  if (id >= this->Known.size() || !this->Known[id])
+  if (samples.empty())
+    return;
+  Fit& fit = this->Fits[k];
+  const double n = static_cast<double>(samples.size());
+  for (const Sample& s : samples)
+    fit.centre += s.point / n;
+  // Coordinates in the leaf's plane; the normal equations of a plane through the mean.
+  const Vec3 a = std::abs(normal.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
+  const Vec3 u = glm::normalize(glm::cross(a, normal)), v = glm::cross(normal, u);
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+  for (const Sample& s : samples)
+  {
+    const double x = glm::dot(s.point - fit.centre, u), y = glm::dot(s.point - fit.centre, v);
+    xx += x * x, xy += x * y, yy += y * y;
+  }
+  const double determinant = xx * yy - xy * xy;
+  // Fewer than three points, or all on a line: the mean alone.
+  const bool sloped = samples.size() >= 3 && determinant > 1e-6 * (xx + yy) * (xx + yy);
+  auto fitPlane = [&](Plane& plane, auto value) {
+    for (int band = 0; band < maxBands; ++band)
+    {
+      double mean = 0.0, xf = 0.0, yf = 0.0, low = value(samples[0], band), high = low;
+      for (const Sample& s : samples)
+        mean += value(s, band) / n;
+      for (const Sample& s : samples)
+      {
+        const double f = value(s, band) - mean;
+        xf += glm::dot(s.point - fit.centre, u) * f, yf += glm::dot(s.point - fit.centre, v) * f;
+        low = std::min(low, value(s, band)), high = std::max(high, value(s, band));
+      }
+      plane.mean[band] = mean, plane.low[band] = low, plane.high[band] = high;
+      if (sloped)
+        plane.slope[band] = ((yy * xf - xy * yf) / determinant) * u + ((xx * yf - xy * xf) / determinant) * v;
+    }
+  };
+  fitPlane(fit.sky, [](const Sample& s, int band) { return s.sky[band]; });
+  fitPlane(fit.reflected, [](const Sample& s, int band) { return s.reflected[band]; });
+  fit.known = true;
+}
+
+const LeafLight::Fit* LeafLight::fitOf(std::uint64_t id) const
+{
+  if (id >= this->Slot.size() || this->Slot[id] < 0)
+    return nullptr;
+  const Fit& fit = this->Fits[static_cast<std::size_t>(this->Slot[id])];
+  return fit.known ? &fit : nullptr;
+}
+
+bool LeafLight::mean(std::uint64_t id, Spectrum& sky, Spectrum& reflected) const
+{
+  const Fit* fit = this->fitOf(id);
+  if (!fit)
     return false;
-  sky = this->Sky[id];
-  reflected = this->Reflected[id];
+  sky = fit->sky.mean;
+  reflected = fit->reflected.mean;
+  return true;
+}
+
+bool LeafLight::at(std::uint64_t id, const Vec3& point, Spectrum& sky, Spectrum& reflected) const
+{
+  const Fit* found = this->fitOf(id);
+  if (!found)
+    return false;
+  const Fit& fit = *found;
+  const Vec3 offset = point - fit.centre;
+  for (int band = 0; band < maxBands; ++band)
+  {
+    sky[band] = fit.sky.at(band, offset);
+    reflected[band] = fit.reflected.at(band, offset);
+  }
   return true;
 }
 } // namespace terralux

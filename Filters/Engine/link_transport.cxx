@@ -72,19 +72,24 @@ std::array<Vec3, 5> receiverPoints(const PolygonElement& p)
 double visibilityBetween(HElement& receiver, HElement& sender, const Visibility& visibility,
   int samples, SampleGenerator& random)
 {
+  // Pairs of points that face each other, as many as `samples` asks; where none of
+  // them did (a cluster of several faces of a box, whose samples all fell on faces
+  // turned away), more rounds, up to four: visibility 0 drops the link, and in a closed
+  // box of 4 samples such unlucky links left the leaves at one edge 20-37 % short.
   int counted = 0, visible = 0;
-  for (int k = 0; k < samples; ++k)
-  {
-    const SurfaceSample x = receiver.sample(k, samples, random);
-    const SurfaceSample y = sender.sample(k, samples, random);
-    const Vec3 xy = y.position - x.position;
-    if (glm::dot(x.normal, xy) <= 0.0 || glm::dot(y.normal, xy) >= 0.0)
+  for (int round = 0; round < 4 && counted == 0; ++round)
+    for (int k = 0; k < samples; ++k)
     {
-      continue; // the pair does not face each other
+      const SurfaceSample x = receiver.sample(k, samples, random);
+      const SurfaceSample y = sender.sample(k, samples, random);
+      const Vec3 xy = y.position - x.position;
+      if (glm::dot(x.normal, xy) <= 0.0 || glm::dot(y.normal, xy) >= 0.0)
+      {
+        continue; // the pair does not face each other
+      }
+      ++counted;
+      visible += !visibility.occluded(x.position, x.normal, y.position, y.normal);
     }
-    ++counted;
-    visible += !visibility.occluded(x.position, x.normal, y.position, y.normal);
-  }
   return counted ? static_cast<double>(visible) / counted : 0.0;
 }
 

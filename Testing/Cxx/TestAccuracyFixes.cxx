@@ -4,6 +4,10 @@
 #include "vtk_test_support.h"
 
 #include "vtkCubeSource.h"
+#include "vtkTriangleFilter.h"
+#include "vtkReverseSense.h"
+#include "vtkDoubleArray.h"
+#include "vtkCellData.h"
 #include "vtkFloatArray.h"
 #include "vtkHierarchicalRadiosity.h"
 #include "vtkImageData.h"
@@ -22,6 +26,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 using terralux_test::MessageCatcher;
 using terralux_test::runPipeline;
@@ -163,6 +168,62 @@ TEST(AccuracyFixes, AWallsPartBelowTheGroundSendsNothingAndHidesNothing)
     // About half the wall's radiosity: 0.3 x (50 of sky + what the ground sends) / 2.
     EXPECT_GT(reflected[0][k], 6.0) << k;
     EXPECT_NEAR(reflected[1][k], reflected[0][k], 0.05 * reflected[0][k]) << k;
+  }
+}
+
+TEST(AccuracyFixes, ClosedBoxesReadTheirRadiosityEverywhereInBothModes)
+{
+  // Inward faces, emission 100, reflectance 0.5: radiosity 200 at every corner, edge and
+  // face point. Averaged over leaves, the tessellated box read 155 at an edge: a link
+  // between clusters whose 4 visibility samples all fell on faces turned away from each
+  // other counted as occluded and was dropped.
+  for (int level : { 0, 4 })
+  {
+    vtkSmartPointer<vtkPolyData> faces;
+    if (level == 0)
+    {
+      vtkNew<vtkCubeSource> cube;
+      cube->Update();
+      faces = cube->GetOutput();
+    }
+    else
+    {
+      vtkNew<vtkTessellatedBoxSource> box;
+      box->SetLevel(level);
+      box->QuadsOn();
+      box->Update();
+      faces = box->GetOutput();
+    }
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(faces);
+    vtkNew<vtkReverseSense> inward;
+    inward->SetInputConnection(triangles->GetOutputPort());
+    inward->ReverseCellsOn();
+    inward->Update();
+    auto closed = vtkSmartPointer<vtkPolyData>::New();
+    closed->DeepCopy(inward->GetOutput());
+    vtkNew<vtkDoubleArray> emission;
+    emission->SetName("Emission");
+    emission->SetNumberOfTuples(closed->GetNumberOfCells());
+    emission->Fill(100.0);
+    closed->GetCellData()->AddArray(emission);
+    for (bool atPoints : { true, false })
+    {
+      SCOPED_TRACE(std::to_string(level) + (atPoints ? " at points" : " averaged"));
+      vtkNew<vtkHierarchicalRadiosity> radiosity;
+      radiosity->SetInputData(closed);
+      radiosity->SetEmissionArrayName("Emission");
+      radiosity->SetDefaultReflectance(0.5);
+      radiosity->SetEvaluateAtPoints(atPoints);
+      vtkNew<MessageCatcher> messages;
+      ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+      auto* output = vtkDataSet::SafeDownCast(radiosity->GetOutput());
+      ASSERT_NE(output, nullptr);
+      vtkDataArray* b = output->GetPointData()->GetArray("Radiosity");
+      ASSERT_NE(b, nullptr);
+      for (vtkIdType k = 0; k < b->GetNumberOfTuples(); ++k)
+        EXPECT_NEAR(b->GetComponent(k, 0), 200.0, 2.0) << k;
+    }
   }
 }
 
