@@ -4,10 +4,6 @@
 #include "vtk_test_support.h"
 
 #include "vtkCubeSource.h"
-#include "vtkTriangleFilter.h"
-#include "vtkReverseSense.h"
-#include "vtkDoubleArray.h"
-#include "vtkCellData.h"
 #include "vtkFloatArray.h"
 #include "vtkHierarchicalRadiosity.h"
 #include "vtkImageData.h"
@@ -179,34 +175,12 @@ TEST(AccuracyFixes, ClosedBoxesReadTheirRadiosityEverywhereInBothModes)
   // other counted as occluded and was dropped.
   for (int level : { 0, 4 })
   {
-    vtkSmartPointer<vtkPolyData> faces;
-    if (level == 0)
-    {
-      vtkNew<vtkCubeSource> cube;
-      cube->Update();
-      faces = cube->GetOutput();
-    }
-    else
-    {
-      vtkNew<vtkTessellatedBoxSource> box;
-      box->SetLevel(level);
-      box->QuadsOn();
-      box->Update();
-      faces = box->GetOutput();
-    }
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputData(faces);
-    vtkNew<vtkReverseSense> inward;
-    inward->SetInputConnection(triangles->GetOutputPort());
-    inward->ReverseCellsOn();
-    inward->Update();
-    auto closed = vtkSmartPointer<vtkPolyData>::New();
-    closed->DeepCopy(inward->GetOutput());
-    vtkNew<vtkDoubleArray> emission;
-    emission->SetName("Emission");
-    emission->SetNumberOfTuples(closed->GetNumberOfCells());
-    emission->Fill(100.0);
-    closed->GetCellData()->AddArray(emission);
+    vtkNew<vtkCubeSource> cube;
+    vtkNew<vtkTessellatedBoxSource> tessellated;
+    tessellated->SetLevel(level);
+    tessellated->QuadsOn();
+    const vtkSmartPointer<vtkPolyData> closed =
+      terralux_test::inwardBox(level == 0 ? static_cast<vtkAlgorithm*>(cube) : tessellated, 100.0);
     for (bool atPoints : { true, false })
     {
       SCOPED_TRACE(std::to_string(level) + (atPoints ? " at points" : " averaged"));

@@ -83,21 +83,7 @@ vtkSmartPointer<vtkPolyData> inwardBox(double size, double emission)
   cube->SetXLength(size);
   cube->SetYLength(size);
   cube->SetZLength(size);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(cube->GetOutputPort());
-  vtkNew<vtkReverseSense> inward;
-  inward->SetInputConnection(triangles->GetOutputPort());
-  inward->ReverseCellsOn();
-  inward->ReverseNormalsOn();
-  inward->Update();
-  auto box = vtkSmartPointer<vtkPolyData>::New();
-  box->DeepCopy(inward->GetOutput());
-  vtkNew<vtkDoubleArray> array;
-  array->SetName("Emission");
-  array->SetNumberOfTuples(box->GetNumberOfCells());
-  array->Fill(emission);
-  box->GetCellData()->AddArray(array);
-  return box;
+  return terralux_test::inwardBox(cube, emission);
 }
 
 double meanOf(vtkDataSet* data, const char* name, int component = 0)

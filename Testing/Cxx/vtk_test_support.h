@@ -2,9 +2,15 @@
 // Test support for the VTK adapters: run a pipeline and catch what it reports.
 
 #include "vtkAlgorithm.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkReverseSense.h"
 #include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
 
 #include <string>
 
@@ -36,5 +42,26 @@ inline int runPipeline(vtkAlgorithm* algorithm, MessageCatcher* messages)
   algorithm->RemoveObserver(b);
   algorithm->GetExecutive()->RemoveObserver(c);
   return status;
+}
+/// A closed box of inward faces from the outward faces of `source` (vtkCubeSource,
+/// vtkTessellatedBoxSource), triangulated, with cell array Emission: under reflectance
+/// rho its radiosity is emission / (1 - rho) everywhere.
+inline vtkSmartPointer<vtkPolyData> inwardBox(vtkAlgorithm* source, double emission)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkReverseSense> inward;
+  inward->SetInputConnection(triangles->GetOutputPort());
+  inward->ReverseCellsOn();
+  inward->ReverseNormalsOn();
+  inward->Update();
+  auto box = vtkSmartPointer<vtkPolyData>::New();
+  box->DeepCopy(inward->GetOutput());
+  vtkNew<vtkDoubleArray> array;
+  array->SetName("Emission");
+  array->SetNumberOfTuples(box->GetNumberOfCells());
+  array->Fill(emission);
+  box->GetCellData()->AddArray(array);
+  return box;
 }
 } // namespace terralux_test
