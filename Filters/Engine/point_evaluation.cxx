@@ -226,7 +226,6 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
   std::vector<std::uint64_t> ids(leaves.size());
   for (std::size_t k = 0; k < leaves.size(); ++k)
     ids[k] = leaves[k]->id();
-  auto light = std::make_unique<LeafLight>(this->Store->size(), ids);
   // A few points of each leaf, a few rays from each, no pilot: a point's rays meet many
   // leaves, whose noise averages out.
   constexpr int points = 4, morePoints = 16;
@@ -234,37 +233,45 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
   budget.pilot = 0;
   budget.minimum = budget.maximum = std::max(1, std::min(leafGatherRays, this->Options.gatherSamples) / points);
   const bool surfacesSend = this->LargestRadiosity > 0.0;
-  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
-    const PolygonElement& leaf = *leaves[k];
-    SampleGenerator random(leaf.id() * 0xD1342543DE82EF95ull + 1);
-    std::vector<LeafLight::Sample> seen;
-    int buried = 0;
-    auto gatherAt = [&](int p, int n) {
-      const SurfaceSample at = leaf.sample(p, n, random);
-      // Lifted as points are (three ray offsets), above a rough patch's crease.
-      const Vec3 from = at.position + 3.0 * this->Rays->offset() * at.normal;
-      const GatheredLight received =
-        this->Gather->irradianceAt(from, at.normal, budget, this->Rays->seedOf(from), 0.0, surfacesSend);
-      // A point whose rays meet the backs of surfaces lies inside something (the part
-      // of a house's wall below the ground): the light of the leaf is that of its
-      // other points, which hits can reach.
-      if (4 * received.backRays > received.count)
-        ++buried;
-      else
-        seen.push_back({ at.position, received.sky, received.surfaces });
-    };
-    for (int p = 0; p < points; ++p)
-      gatherAt(p, points);
-    // A partly buried leaf: its open part may be a thin strip (a wall's foot above
-    // sloping ground), which hits meet most from nearby; sought with more points.
-    if (buried > 0)
-    {
-      seen.clear();
-      for (int p = 0; p < morePoints; ++p)
-        gatherAt(p, morePoints);
-    }
-    light->set(k, leaf.normal(), seen);
-  });
+  std::unique_ptr<LeafLight> light;
+  for (int pass = 0; pass < leafGatherPasses; ++pass)
+  {
+    // The first pass gathers over the hierarchy's values, the next over the last pass's.
+    auto next = std::make_unique<LeafLight>(this->Store->size(), ids);
+    tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
+      const PolygonElement& leaf = *leaves[k];
+      SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
+      std::vector<LeafLight::Sample> seen;
+      int buried = 0;
+      auto gatherAt = [&](int p, int n) {
+        const SurfaceSample at = leaf.sample(p, n, random);
+        // Lifted as points are (three ray offsets), above a rough patch's crease.
+        const Vec3 from = at.position + 3.0 * this->Rays->offset() * at.normal;
+        const GatheredLight received = this->Gather->irradianceAt(
+          from, at.normal, budget, this->Rays->seedOf(from) ^ static_cast<std::uint64_t>(pass), 0.0, surfacesSend);
+        // A point whose rays meet the backs of surfaces lies inside something (the part
+        // of a house's wall below the ground): the light of the leaf is that of its
+        // other points, which hits can reach.
+        if (4 * received.backRays > received.count)
+          ++buried;
+        else
+          seen.push_back({ at.position, received.sky, received.surfaces });
+      };
+      for (int p = 0; p < points; ++p)
+        gatherAt(p, points);
+      // A partly buried leaf: its open part may be a thin strip (a wall's foot above
+      // sloping ground), which hits meet most from nearby; sought with more points.
+      if (buried > 0)
+      {
+        seen.clear();
+        for (int p = 0; p < morePoints; ++p)
+          gatherAt(p, morePoints);
+      }
+      next->set(k, leaf.normal(), seen);
+    });
+    this->Gather->setLeafLight(next.get());
+    light = std::move(next);
+  }
   // The leaves' own values become the gathered means (what averaged outputs show),
   // once every gather has read the hierarchy's.
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {

@@ -165,15 +165,18 @@ public:
   void gatherPostLattice(const TerrainPatch& root, bool hornNormals);
   /// After the solve (and findPostHorizons): what every leaf receives from the sky and
   /// from surfaces, by a gather of leafGatherRays from 4 of its points (16 where some
-  /// lie inside something) over the hierarchy's values, fitted by a plane across the
-  /// leaf (LeafLight), in parallel. Gather rays that meet a leaf then send that, and the
-  /// leaf's own values become the gathered means. Leaves of a terrain whose posts'
-  /// skies are known are left out (their hits read PostSky and PostLattice), and all
-  /// terrain leaves when `terrains` is false (averaged outputs of a DEM stay fast). 64
-  /// rays left the canyon's street 0.84 % off (RMS of global), 256 0.65 %, 1024 0.61 %
-  /// at twice the time.
+  /// lie inside something), fitted by a plane across the leaf (LeafLight), in parallel;
+  /// leafGatherPasses passes, the first over the hierarchy's values, each next over the
+  /// last pass's (one more bounce each). Gather rays that meet a leaf then send that,
+  /// and the leaf's own values become the gathered means. Leaves of a terrain whose
+  /// posts' skies are known are left out (their hits read PostSky and PostLattice), and
+  /// all terrain leaves when `terrains` is false (averaged outputs of a DEM stay fast).
+  /// The canyon's street (RMS of global): 64 rays 0.84 %, 256 0.65 %, 1024 0.61 % at
+  /// twice the time (at most 1024 rays a point); at 4096 a point, 1 pass 0.44 %, 2 0.39 %
+  /// and its wall foot's mean bias from 1.8 % to 1.0 %, 3 0.38 % and 0.5 %.
   void gatherLeaves(bool terrains = true);
   static constexpr int leafGatherRays = 256;
+  static constexpr int leafGatherPasses = 3;
   /// Many points at once, in parallel, each moved toward its own centre (see above).
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
     const std::vector<Vec3>& normals, const std::vector<Vec3>& towards, std::vector<PointIrradiance>& results) const;
