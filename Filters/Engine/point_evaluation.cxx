@@ -243,10 +243,24 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
       SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
       std::vector<LeafLight::Sample> seen;
       int buried = 0;
+      // Lifted as points are (three ray offsets), above a rough patch's crease; a
+      // non-planar quad's points (on its bilinear surface) also by how far the input
+      // quad's corners leave its plane, above both triangles rays meet (else, on a
+      // displaced vtkPlaneSource, points under them saw backs and nearly every leaf
+      // looked buried, at four times the rays).
+      double lift = 3.0 * this->Rays->offset();
+      if (!dynamic_cast<const TerrainPatch*>(&leaf))
+      {
+        const PolygonElement* root = &leaf;
+        while (root->Parent && root->Parent->isSurface())
+          root = static_cast<const PolygonElement*>(root->Parent);
+        for (int c = 0; c < root->cornerCount(); ++c)
+          lift = std::max(lift,
+            3.0 * this->Rays->offset() + std::abs(glm::dot(root->corners()[c] - root->centre(), root->normal())));
+      }
       auto gatherAt = [&](int p, int n) {
         const SurfaceSample at = leaf.sample(p, n, random);
-        // Lifted as points are (three ray offsets), above a rough patch's crease.
-        const Vec3 from = at.position + 3.0 * this->Rays->offset() * at.normal;
+        const Vec3 from = at.position + lift * at.normal;
         const GatheredLight received = this->Gather->irradianceAt(
           from, at.normal, budget, this->Rays->seedOf(from) ^ static_cast<std::uint64_t>(pass), 0.0, surfacesSend);
         // A point whose rays meet the backs of surfaces lies inside something (the part
