@@ -303,8 +303,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     // another (ground under a building), the point takes the value of its most open
     // leaf, the limit a user sees from the visible side.
     std::vector<const terralux::PolygonElement*> otherLeaves;
-    Vec3 centroidSum{ 0.0 }; // area-weighted centres of its polygons: where the point moves
-    double polygonArea = 0.0;
+    Vec3 centroidSum{ 0.0 }; // centres of its polygons weighted as `area`: where the point moves
     Values leafSum{};      // averaged mode: area-weighted leaf values
     double leafWeight = 0.0;
     double skyView = 0.0;
@@ -335,8 +334,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
       side->otherLeaves.push_back(leaf);
     }
     side->normalSum += root->area() * n;
-    side->centroidSum += root->area() * root->centre();
-    side->polygonArea += root->area();
+    side->centroidSum += averagingWeight(*root) * root->centre();
     side->area += averagingWeight(*root);
     if (!evaluateAtPoints)
     {
@@ -402,11 +400,11 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
       // (cells all around it: a ground vertex at a building's corner, some cells under
       // the building), toward its leaf's, and the side's other leaves are tried too.
       const Vec3 point = scene.Scene.points[input.firstPoint + p];
-      const Vec3 centroid = side.polygonArea > 0.0 ? side.centroidSum / side.polygonArea : side.leaf->centre();
+      const Vec3 centroid = side.centroidSum / side.area;
       towards.push_back(glm::length(centroid - point) > 1e-3 * glm::length(side.leaf->centre() - point)
           ? centroid
           : side.leaf->centre());
-      points.push_back(scene.Scene.points[input.firstPoint + p]);
+      points.push_back(point);
       normals.push_back(length > 0.0 ? side.normalSum / length : side.leaf->normal());
       owners.emplace_back(p, &side);
     }

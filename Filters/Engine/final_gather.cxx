@@ -22,9 +22,7 @@ namespace terralux
 CosineFrame::CosineFrame(const Vec3& n)
   : N(n)
 {
-  const Vec3 a = std::abs(n.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
-  this->U = glm::normalize(glm::cross(a, n));
-  this->V = glm::cross(n, this->U);
+  tangentsOf(n, this->U, this->V);
 }
 
 Vec3 CosineFrame::direction(double s, double t) const
@@ -110,9 +108,14 @@ int FinalGather::openRays(const Vec3& point, const Vec3& normal, int strata, std
     const Vec3 d = frame.direction(s, t);
     SurfaceHit hit;
     const PolygonElement* leaf = this->Rays.firstHit(point, normal, d, hit) ? this->leafAt(hit) : nullptr;
-    open += !leaf || glm::dot(hit.normal, d) * glm::dot(hit.normal, leaf->normal()) < 0.0;
+    open += !leaf || glm::dot(frontAt(hit, *leaf), d) < 0.0;
   }
   return open;
+}
+
+Vec3 FinalGather::frontAt(const SurfaceHit& hit, const PolygonElement& leaf)
+{
+  return glm::dot(hit.normal, leaf.normal()) < 0.0 ? -hit.normal : hit.normal;
 }
 
 const PolygonElement* FinalGather::leafAt(const SurfaceHit& hit) const
@@ -285,9 +288,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       const PolygonElement* leaf = met ? this->leafAt(hit) : nullptr;
       if (!leaf)
         return value;
-      // The triangle's own normal, turned to the side its leaf faces; the back of a
-      // one-sided surface sends nothing.
-      const Vec3 front = glm::dot(hit.normal, leaf->normal()) < 0.0 ? -hit.normal : hit.normal;
+      // The back of a one-sided surface sends nothing.
+      const Vec3 front = frontAt(hit, *leaf);
       if (!(glm::dot(front, d) < 0.0))
       {
         ++backRays;

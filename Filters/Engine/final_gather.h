@@ -119,6 +119,8 @@ public:
   /// a one-sided surface lies inside something, as a post on the line of a house's wall
   /// may).
   int openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed) const;
+  /// The triangle's own normal at a hit, turned to the side its leaf faces.
+  static Vec3 frontAt(const struct SurfaceHit& hit, const PolygonElement& leaf);
   /// The leaf a ray's hit lies on (null where nothing solved is there).
   const PolygonElement* leafAt(const struct SurfaceHit& hit) const;
   /// Radiosity leaving a hit on `leaf`, its direct sunlight taken at the hit;

@@ -27,12 +27,14 @@ void LeafLight::set(std::size_t k, const Vec3& normal, const std::vector<Sample>
   for (const Sample& s : samples)
     fit.centre += s.point / n;
   // Coordinates in the leaf's plane; the normal equations of a plane through the mean.
-  const Vec3 a = std::abs(normal.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
-  const Vec3 u = glm::normalize(glm::cross(a, normal)), v = glm::cross(normal, u);
+  Vec3 u, v;
+  tangentsOf(normal, u, v);
+  std::vector<double> xs, ys; // each point's coordinates, once
   double xx = 0.0, xy = 0.0, yy = 0.0;
   for (const Sample& s : samples)
   {
     const double x = glm::dot(s.point - fit.centre, u), y = glm::dot(s.point - fit.centre, v);
+    xs.push_back(x), ys.push_back(y);
     xx += x * x, xy += x * y, yy += y * y;
   }
   const double determinant = xx * yy - xy * xy;
@@ -44,11 +46,11 @@ void LeafLight::set(std::size_t k, const Vec3& normal, const std::vector<Sample>
       double mean = 0.0, xf = 0.0, yf = 0.0, low = value(samples[0], band), high = low;
       for (const Sample& s : samples)
         mean += value(s, band) / n;
-      for (const Sample& s : samples)
+      for (std::size_t k = 0; k < samples.size(); ++k)
       {
-        const double f = value(s, band) - mean;
-        xf += glm::dot(s.point - fit.centre, u) * f, yf += glm::dot(s.point - fit.centre, v) * f;
-        low = std::min(low, value(s, band)), high = std::max(high, value(s, band));
+        const double f = value(samples[k], band) - mean;
+        xf += xs[k] * f, yf += ys[k] * f;
+        low = std::min(low, value(samples[k], band)), high = std::max(high, value(samples[k], band));
       }
       plane.mean[band] = mean, plane.low[band] = low, plane.high[band] = high;
       if (sloped)

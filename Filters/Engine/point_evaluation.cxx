@@ -65,8 +65,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   const Vec3 toCentre = toward - point;
   const double distance = glm::length(toCentre);
   const Vec3 inside = distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays->offset() / distance) * toCentre : point;
-  // Nothing to gather without a sky where no surface sends light.
-  const bool gathered = this->Options.gatherSamples > 0 && (this->Sky || this->LargestRadiosity > 0.0);
+  const bool gathered = this->gathersAtPoints();
   // Without a gather, every link that reaches the leaf, re-evaluated at the point.
   for (const HElement* element = gathered ? nullptr : &leaf; element; element = element->Parent)
   {
@@ -160,8 +159,8 @@ Vec3 HierarchicalRadiosity::openSideOf(
   int most = openness(inside);
   if (most == strata * strata)
     return inside;
-  const Vec3 a = std::abs(normal.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
-  const Vec3 u = glm::normalize(glm::cross(a, normal)), v = glm::cross(normal, u);
+  Vec3 u, v;
+  tangentsOf(normal, u, v);
   Vec3 best = inside;
   for (const Vec3& along : { u + v, u - v, -u + v, -u - v })
   {
@@ -178,10 +177,15 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
   return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
 }
 
+bool HierarchicalRadiosity::gathersAtPoints() const
+{
+  // Nothing to gather without a sky where no surface sends light.
+  return this->Options.gatherSamples > 0 && (this->Sky || this->LargestRadiosity > 0.0);
+}
+
 void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hornNormals)
 {
-  const bool gathered = this->Options.gatherSamples > 0 && (this->Sky || this->LargestRadiosity > 0.0);
-  if (!gathered || !this->PostHorizons || &root.grid() != this->HeightFieldGrid)
+  if (!this->gathersAtPoints() || !this->PostHorizons || &root.grid() != this->HeightFieldGrid)
     return;
   const TerrainGrid& grid = root.grid();
   auto lattice = std::make_unique<PostLattice>(grid.postsX(), grid.postsY());
@@ -207,8 +211,7 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
 {
   this->Gather->setLeafLight(nullptr);
   this->Leaves.reset();
-  const bool gathered = this->Options.gatherSamples > 0 && (this->Sky || this->LargestRadiosity > 0.0);
-  if (!gathered)
+  if (!this->gathersAtPoints())
     return;
   std::vector<PolygonElement*> leaves;
   for (const auto& element : this->Store->all())
@@ -223,9 +226,25 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
   }
   if (leaves.empty())
     return;
+  // Each leaf's id, and how far its points are lifted: as points are (three ray
+  // offsets), above a rough patch's crease; a non-planar quad's points (on its bilinear
+  // surface) also by how far the input quad's corners leave its plane, above both
+  // triangles rays meet (else, on a displaced vtkPlaneSource, points under them saw
+  // backs and nearly every leaf looked buried, at four times the rays).
   std::vector<std::uint64_t> ids(leaves.size());
+  std::vector<double> lifts(leaves.size(), 3.0 * this->Rays->offset());
   for (std::size_t k = 0; k < leaves.size(); ++k)
+  {
     ids[k] = leaves[k]->id();
+    if (dynamic_cast<const TerrainPatch*>(leaves[k]))
+      continue;
+    const PolygonElement* root = leaves[k];
+    while (root->Parent && root->Parent->isSurface())
+      root = static_cast<const PolygonElement*>(root->Parent);
+    for (int c = 0; c < root->cornerCount(); ++c)
+      lifts[k] = std::max(lifts[k],
+        3.0 * this->Rays->offset() + std::abs(glm::dot(root->corners()[c] - root->centre(), root->normal())));
+  }
   // A few points of each leaf, a few rays from each, no pilot: a point's rays meet many
   // leaves, whose noise averages out.
   constexpr int points = 4, morePoints = 16;
@@ -243,24 +262,9 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
       SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
       std::vector<LeafLight::Sample> seen;
       int buried = 0;
-      // Lifted as points are (three ray offsets), above a rough patch's crease; a
-      // non-planar quad's points (on its bilinear surface) also by how far the input
-      // quad's corners leave its plane, above both triangles rays meet (else, on a
-      // displaced vtkPlaneSource, points under them saw backs and nearly every leaf
-      // looked buried, at four times the rays).
-      double lift = 3.0 * this->Rays->offset();
-      if (!dynamic_cast<const TerrainPatch*>(&leaf))
-      {
-        const PolygonElement* root = &leaf;
-        while (root->Parent && root->Parent->isSurface())
-          root = static_cast<const PolygonElement*>(root->Parent);
-        for (int c = 0; c < root->cornerCount(); ++c)
-          lift = std::max(lift,
-            3.0 * this->Rays->offset() + std::abs(glm::dot(root->corners()[c] - root->centre(), root->normal())));
-      }
       auto gatherAt = [&](int p, int n) {
         const SurfaceSample at = leaf.sample(p, n, random);
-        const Vec3 from = at.position + lift * at.normal;
+        const Vec3 from = at.position + lifts[k] * at.normal;
         const GatheredLight received = this->Gather->irradianceAt(
           from, at.normal, budget, this->Rays->seedOf(from) ^ static_cast<std::uint64_t>(pass), 0.0, surfacesSend);
         // A point whose rays meet the backs of surfaces lies inside something (the part

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -19,6 +20,15 @@ using Spectrum = std::array<double, maxBands>;
 inline Spectrum uniformSpectrum(double value)
 {
   return { value, value, value };
+}
+
+/// Two unit tangents u, v of a unit normal n, with u x v = n: the one frame the
+/// engine's directions and in-plane coordinates are built in.
+inline void tangentsOf(const Vec3& n, Vec3& u, Vec3& v)
+{
+  const Vec3 a = std::abs(n.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
+  u = glm::normalize(glm::cross(a, n));
+  v = glm::cross(n, u);
 }
 
 /// The largest band of a spectrum: what the oracle and the samplers measure by.

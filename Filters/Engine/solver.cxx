@@ -228,10 +228,8 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
   // normals (16,641 exact evaluations at side 128; 4,225 at side 64 for fewer points,
   // where Olinda's 12,321 posts took 0.10 s less with its errors unchanged) rather than
   // one exact evaluation per point.
-  if (this->SkyAtPoints && this->Options.gatherSamples > 0 && this->PointCount > openSkyTablePoints)
-    this->SkyAtPoints->tabulate(128);
-  else if (this->SkyAtPoints && this->Options.gatherSamples > 0 && this->PointCount > 2 * 65 * 65)
-    this->SkyAtPoints->tabulate(64);
+  if (this->SkyAtPoints && this->Options.gatherSamples > 0 && this->PointCount > 2 * 65 * 65)
+    this->SkyAtPoints->tabulate(this->PointCount > openSkyTablePoints ? 128 : 64);
   this->Stats.referencePowerW = this->referencePower();
   this->Gather->prepareSuns();
   std::vector<std::pair<HElement*, Link>> pending;

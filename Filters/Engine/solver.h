@@ -182,6 +182,9 @@ public:
     const std::vector<Vec3>& normals, const std::vector<Vec3>& towards, std::vector<PointIrradiance>& results) const;
 
 private:
+  /// Whether points take a final gather: rays to cast and something for them to see (a
+  /// sky, or surfaces that send light).
+  bool gathersAtPoints() const;
   /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
   /// leaf) unless that sees the back of a surface, then the most open of four points two
   /// ray offsets from it diagonally in its plane, if clearly more open (the reference's
