@@ -16,6 +16,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTerraLuxFieldData.h"
 #include "vtkTerrainPieces.h"
 
 #include "error.h"
@@ -129,44 +130,26 @@ vtkPolyData* vtkHierarchicalRadiosity::GetLinksOutput()
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkHierarchicalRadiosity::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkHierarchicalRadiosity::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inputVector, outputVector);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inputVector, outputVector);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    // A terrain's piece (an MPI rank's, a stream's) is a sub-extent of output 0.
-    vtkInformation* info = outputVector->GetInformationObject(0);
-    if (inputVector[0]->GetNumberOfInformationObjects() == 1 &&
-      info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-      info->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
-  }
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
-  {
-    // The whole scene and whole sky are needed whatever piece is asked of output 0:
-    // every piece solves the same scene (the same hierarchy, deterministically) and
-    // evaluates its own posts.
-    for (int port = 0; port < this->GetNumberOfInputPorts(); ++port)
-      for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
-      {
-        vtkInformation* info = inputVector[port]->GetInformationObject(k);
-        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-        if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-          info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-            info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
-      }
-    return 1;
-  }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  // A terrain's piece (an MPI rank's, a stream's) is a sub-extent of output 0.
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  if (inputVector[0]->GetNumberOfInformationObjects() == 1 &&
+    info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+    info->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkHierarchicalRadiosity::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The whole scene and whole sky are needed whatever piece is asked of output 0:
+  // every piece solves the same scene (the same hierarchy, deterministically) and
+  // evaluates its own posts.
+  vtkTerraLuxFieldData::RequestWholeInputs(inputVector, this->GetNumberOfInputPorts());
+  return 1;
 }
 
 //------------------------------------------------------------------------------

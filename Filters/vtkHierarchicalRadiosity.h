@@ -68,16 +68,16 @@
 #define vtkHierarchicalRadiosity_h
 
 #include "TerraLuxFiltersModule.h" // For export macro
-#include "vtkAlgorithm.h"
+#include "vtkDataObjectAlgorithm.h"
 
 class vtkPolyData;
 class vtkRadiosityScene;
 
-class TERRALUXFILTERS_EXPORT vtkHierarchicalRadiosity : public vtkAlgorithm
+class TERRALUXFILTERS_EXPORT vtkHierarchicalRadiosity : public vtkDataObjectAlgorithm
 {
 public:
   static vtkHierarchicalRadiosity* New();
-  vtkTypeMacro(vtkHierarchicalRadiosity, vtkAlgorithm);
+  vtkTypeMacro(vtkHierarchicalRadiosity, vtkDataObjectAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -300,22 +300,13 @@ public:
 
   ///@{
   /**
-   * Output 0: the input geometry with the point arrays (its type, or a multiblock);
-   * GetOutput(port) any of the three outputs, as VTK's algorithms offer it.
-   */
-  vtkDataObject* GetOutput() { return this->GetOutputDataObject(0); }
-  vtkDataObject* GetOutput(int port) { return this->GetOutputDataObject(port); }
-  ///@}
-
-  ///@{
-  /**
-   * The adaptive leaf mesh (port 1) and the links (port 2).
+   * Output 0 (GetOutput()) is the input geometry with the point arrays (its type, or a
+   * multiblock); the adaptive leaf mesh is port 1 and the links port 2 (GetOutput(port)
+   * as vtkDataObjectAlgorithm gives any of them, or these typed getters).
    */
   vtkPolyData* GetLeafMeshOutput();
   vtkPolyData* GetLinksOutput();
   ///@}
-
-  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 protected:
   vtkHierarchicalRadiosity();
@@ -323,8 +314,10 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
-  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   // What of the outputs a piece holds: a terrain's sub-extent (grid indices; nullptr:
   // the whole input), and whether the leaf mesh and the links (piece 0's).
   struct PieceRequest

@@ -11,7 +11,7 @@
 
 #include "cluster.h"
 #include "link_transport.h"
-#include "sky_patch_element.h"
+#include "external_source.h"
 #include "solver.h"
 
 using terralux::Vec3;
@@ -36,22 +36,16 @@ void vtkRadiosityOutputs::BuildLinks(const terralux::HierarchicalRadiosity& solv
     {
       const Vec3 from = element->centre();
       Vec3 to = link.sender->centre();
-      if (link.sender->isExternal())
-      {
-        const Vec3 d = link.sender->kind() == terralux::HElement::Kind::Sun
-          ? static_cast<const terralux::SunElement*>(link.sender)->direction()
-          : static_cast<const terralux::SkyPatchElement*>(link.sender)->direction();
-        to = from + reach * d; // sources at infinity: drawn toward the sky
-      }
+      const terralux::ExternalSource* source = link.sender->asExternal();
+      if (source)
+        to = from + reach * source->direction(); // sources at infinity: drawn toward the sky
       const vtkIdType a = points->InsertNextPoint(from.x, from.y, from.z);
       const vtkIdType b = points->InsertNextPoint(to.x, to.y, to.z);
       const vtkIdType ids[2] = { a, b };
       lines->InsertNextCell(2, ids);
       level->InsertNextValue(element->level());
       power->InsertNextValue(terralux::linkPower(*element, link));
-      const auto kind = link.sender->kind();
-      sender->InsertNextValue(
-        kind == terralux::HElement::Kind::Sun ? 2 : (kind == terralux::HElement::Kind::SkyPatch ? 1 : 0));
+      sender->InsertNextValue(!source ? 0 : (source->category() == terralux::SunLight ? 2 : 1));
       senderLevel->InsertNextValue(link.sender->level());
     }
   }

@@ -38,6 +38,8 @@ using terralux::Vec3;
 constexpr int quantities = vtkRadiosityOutputs::Quantities;
 const char* const quantityNames[quantities] = { "Irradiance", "SunIrradiance", "SkyIrradiance",
   "ReflectedIrradiance", "Radiosity" };
+const char* const integratedNames[quantities] = { "GlobalIrradiation", "BeamIrradiation", "SkyIrradiation",
+  "ReflectedIrradiation", "OutgoingIrradiation" };
 using Values = std::array<Spectrum, quantities>;
 
 // The irradiance quantities from irradiance by category; radiosity is left to the caller.
@@ -175,8 +177,8 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
   const vtkIdType count = output->GetNumberOfPoints();
   const double none = std::numeric_limits<double>::quiet_NaN();
   const auto arrays = makeArrays(bands, count, none);
-  const vtkSmartPointer<vtkDoubleArray> skyViewFactor = withSky ? scalarArray("SkyViewFactor", count) : nullptr;
-  const vtkSmartPointer<vtkDoubleArray> sunshine = options.sunshine ? scalarArray("SunshineDuration", count) : nullptr;
+  const vtkSmartPointer<vtkDoubleArray> skyViewFactor = withSky ? scalarArray(vtkRadiosityOutputs::SkyViewFactorName(), count) : nullptr;
+  const vtkSmartPointer<vtkDoubleArray> sunshine = options.sunshine ? scalarArray(vtkRadiosityOutputs::SunshineDurationName(), count) : nullptr;
   std::array<double*, quantities> out{};
   for (int q = 0; q < quantities; ++q)
     out[q] = arrays[q]->GetPointer(0);
@@ -269,7 +271,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
     output->GetPointData()->AddArray(skyViewFactor);
   if (sunshine)
     output->GetPointData()->AddArray(sunshine);
-  output->GetPointData()->SetActiveScalars("Irradiance");
+  output->GetPointData()->SetActiveScalars(quantityNames[0]);
 }
 
 struct PositionHash
@@ -378,11 +380,11 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   const double none = std::numeric_limits<double>::quiet_NaN();
   const auto arrays = makeArrays(bands, count, none);
   const vtkSmartPointer<vtkDoubleArray> skyViewFactor =
-    scene.Sky && terrainGrid ? scalarArray("SkyViewFactor", count) : nullptr;
+    scene.Sky && terrainGrid ? scalarArray(vtkRadiosityOutputs::SkyViewFactorName(), count) : nullptr;
   if (skyViewFactor)
     output->GetPointData()->AddArray(skyViewFactor);
   const vtkSmartPointer<vtkDoubleArray> sunshine =
-    options.sunshine ? scalarArray("SunshineDuration", count) : nullptr;
+    options.sunshine ? scalarArray(vtkRadiosityOutputs::SunshineDurationName(), count) : nullptr;
   if (sunshine)
     output->GetPointData()->AddArray(sunshine);
 
@@ -493,7 +495,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   }
   for (const auto& array : arrays)
     output->GetPointData()->AddArray(array);
-  output->GetPointData()->SetActiveScalars("Irradiance");
+  output->GetPointData()->SetActiveScalars(quantityNames[0]);
 }
 
 void vtkRadiosityOutputs::BuildLeafMesh(
@@ -595,7 +597,7 @@ void vtkRadiosityOutputs::BuildLeafMesh(
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
   const auto arrays = makeArrays(bands, static_cast<vtkIdType>(positions.size()));
-  const auto skyViewFactor = withSky ? scalarArray("SkyViewFactor", static_cast<vtkIdType>(positions.size())) : nullptr;
+  const auto skyViewFactor = withSky ? scalarArray(vtkRadiosityOutputs::SkyViewFactorName(), static_cast<vtkIdType>(positions.size())) : nullptr;
   for (std::size_t k = 0; k < positions.size(); ++k)
   {
     points->SetPoint(static_cast<vtkIdType>(k), positions[k].x, positions[k].y, positions[k].z);
@@ -609,13 +611,27 @@ void vtkRadiosityOutputs::BuildLeafMesh(
     output->GetPointData()->AddArray(array);
   if (skyViewFactor)
     output->GetPointData()->AddArray(skyViewFactor);
-  output->GetPointData()->SetActiveScalars("Irradiance");
+  output->GetPointData()->SetActiveScalars(quantityNames[0]);
   output->GetCellData()->AddArray(level);
 }
 
 const char* vtkRadiosityOutputs::QuantityName(int quantity)
 {
   return quantityNames[quantity];
+}
+
+const char* vtkRadiosityOutputs::IntegratedName(int quantity)
+{
+  return integratedNames[quantity];
+}
+
+std::vector<const char*> vtkRadiosityOutputs::AllNames()
+{
+  std::vector<const char*> names(quantityNames, quantityNames + quantities);
+  names.insert(names.end(), integratedNames, integratedNames + quantities);
+  names.push_back(SunshineDurationName());
+  names.push_back(SkyViewFactorName());
+  return names;
 }
 
 void vtkRadiosityOutputs::AddFieldValue(vtkFieldData* fieldData, const char* name, double value)

@@ -4,6 +4,8 @@
 #ifndef vtkRadiosityOutputs_h
 #define vtkRadiosityOutputs_h
 
+#include <vector>
+
 class vtkDataSet;
 class vtkFieldData;
 class vtkPolyData;
@@ -20,6 +22,13 @@ struct vtkRadiosityOutputs
   /// irradiance, radiosity.
   static constexpr int Quantities = 5;
   static const char* QuantityName(int quantity);
+  /// The same quantities summed over time (Wh/m^2), as vtkSolarIrradiation names them.
+  static const char* IntegratedName(int quantity);
+  /// The other point arrays: hours of direct sun, the sky view factor.
+  static const char* SunshineDurationName() { return "SunshineDuration"; }
+  static const char* SkyViewFactorName() { return "SkyViewFactor"; }
+  /// Every point array the filters write, in the order above (what a writer picks).
+  static std::vector<const char*> AllNames();
 
   /// How output 0's point arrays are made.
   struct PointOptions

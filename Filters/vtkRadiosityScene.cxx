@@ -15,6 +15,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkSMPTools.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTerraLuxFieldData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "error.h"
@@ -429,8 +430,8 @@ void vtkRadiosityScene::AddLight(vtkDataObject* light)
     return;
   }
   vtkFieldData* fieldData = light ? light->GetFieldData() : nullptr;
-  vtkDataArray* direction = fieldData ? fieldData->GetArray("SunDirection") : nullptr;
-  vtkDataArray* irradiance = fieldData ? fieldData->GetArray("SunNormalIrradiance") : nullptr;
+  vtkDataArray* direction = fieldData ? fieldData->GetArray(vtkTerraLuxFieldData::SunDirectionName()) : nullptr;
+  vtkDataArray* irradiance = fieldData ? fieldData->GetArray(vtkTerraLuxFieldData::SunNormalIrradianceName()) : nullptr;
   if (!direction || !irradiance || direction->GetNumberOfValues() != 3)
   {
     throw terralux::Error("input port 1 takes vtkSkySource's radiance map and vtkSunSource's "

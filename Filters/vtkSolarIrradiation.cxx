@@ -13,6 +13,7 @@
 #include "vtkRadiosityScene.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+#include "vtkTerraLuxFieldData.h"
 
 #include "angles.h"
 #include "cie_sky.h"
@@ -33,10 +34,6 @@ vtkStandardNewMacro(vtkSolarIrradiation);
 namespace
 {
 
-// The sums' names, in the order of vtkRadiosityOutputs' quantities.
-const char* const sumNames[vtkRadiosityOutputs::Quantities] = { "GlobalIrradiation", "BeamIrradiation",
-  "SkyIrradiation", "ReflectedIrradiation", "OutgoingIrradiation" };
-
 // The sums' names and units (vtkDataArray::UNITS_LABEL, which vtkTerrainRasterWriter
 // writes into the GeoTIFF's bands).
 void renameSums(vtkDataSet* data)
@@ -45,26 +42,18 @@ void renameSums(vtkDataSet* data)
   for (int k = 0; k < vtkRadiosityOutputs::Quantities; ++k)
     if (vtkDataArray* array = pointData->GetArray(vtkRadiosityOutputs::QuantityName(k)))
     {
-      array->SetName(sumNames[k]);
+      array->SetName(vtkRadiosityOutputs::IntegratedName(k));
       array->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), "Wh/m^2");
     }
-  if (vtkDataArray* sunshine = pointData->GetArray("SunshineDuration"))
+  if (vtkDataArray* sunshine = pointData->GetArray(vtkRadiosityOutputs::SunshineDurationName()))
     sunshine->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), "h");
-  pointData->SetActiveScalars(sumNames[0]);
+  pointData->SetActiveScalars(vtkRadiosityOutputs::IntegratedName(0));
 }
 
 // The first data set of port 0 with a GeoOrigin (latitude, longitude, height).
 bool geoOrigin(vtkInformationVector* port, double place[3])
 {
-  auto fromData = [&](vtkDataObject* data) {
-    vtkDataArray* origin = data && data->GetFieldData() ? data->GetFieldData()->GetArray("GeoOrigin") : nullptr;
-    if (!origin || origin->GetNumberOfValues() != 3)
-      return false;
-    const int components = origin->GetNumberOfComponents();
-    for (int k = 0; k < 3; ++k)
-      place[k] = origin->GetComponent(k / components, k % components);
-    return true;
-  };
+  auto fromData = [&](vtkDataObject* data) { return vtkTerraLuxFieldData::GetGeoOrigin(data, place); };
   for (int k = 0; k < port->GetNumberOfInformationObjects(); ++k)
   {
     vtkDataObject* data = port->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT());
@@ -128,27 +117,22 @@ void vtkSolarIrradiation::SetLinkeTurbidity(double value)
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkSolarIrradiation::ProcessRequest(
+int vtkSolarIrradiation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()) &&
-    !this->RequestInformation(request, inputVector, outputVector))
-  {
-    return 0;
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    vtkInformation* info = outputVector->GetInformationObject(0);
-    this->Internal->RequestedHours = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-      ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-      : 0.0;
-  }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  this->Internal->RequestedHours = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    : 0.0;
+  return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
 //------------------------------------------------------------------------------
-int vtkSolarIrradiation::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkSolarIrradiation::RequestInformation(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  if (!this->Superclass::RequestInformation(request, inputVector, outputVector))
+    return 0;
   // Time steps are advertised where the range is valid; a bad one is reported by
   // RequestData, which leaves the outputs empty.
   std::vector<double> hours;
@@ -293,11 +277,11 @@ void vtkSolarIrradiation::FinishOutputs(vtkDataObject* output, vtkPolyData* leaf
     times->InsertNextValue(terralux::DateTime::fromJulianDay(step.julianDay).toUtcString());
   fieldData->AddArray(times);
   perStep("StepHours", [](const terralux::SolarStep& s) { return s.hours; });
-  perStep("SunZenith", [](const terralux::SolarStep& s) { return s.position.zenithDeg; });
-  perStep("SunAzimuth", [](const terralux::SolarStep& s) { return s.position.azimuthDeg; });
-  perStep("SunNormalIrradiance", [](const terralux::SolarStep& s) { return s.irradiance.directNormalWm2; });
+  perStep(vtkTerraLuxFieldData::SunZenithName(), [](const terralux::SolarStep& s) { return s.position.zenithDeg; });
+  perStep(vtkTerraLuxFieldData::SunAzimuthName(), [](const terralux::SolarStep& s) { return s.position.azimuthDeg; });
+  perStep(vtkTerraLuxFieldData::SunNormalIrradianceName(), [](const terralux::SolarStep& s) { return s.irradiance.directNormalWm2; });
   perStep(
-    "DiffuseHorizontalIrradiance", [](const terralux::SolarStep& s) { return s.irradiance.diffuseHorizontalWm2; });
+    vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), [](const terralux::SolarStep& s) { return s.irradiance.diffuseHorizontalWm2; });
   addValue("SecondsSteps", this->Internal->SecondsSteps);
   if (this->UsesWeatherFile())
   {

@@ -189,13 +189,12 @@ public:
   vtkGetMacro(DeltaT, double);
   ///@}
 
-  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
 protected:
   vtkSolarIrradiation();
   ~vtkSolarIrradiation() override;
 
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   bool AddLights(vtkInformationVector** inputVector, vtkRadiosityScene& scene) override;
   void FinishOutputs(vtkDataObject* output, vtkPolyData* leafMesh) override;
   bool UsesWeatherFile() const { return this->WeatherFileName && *this->WeatherFileName; }

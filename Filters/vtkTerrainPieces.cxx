@@ -12,6 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkStructuredGrid.h"
 #include "vtkTable.h"
+#include "vtkTerraLuxFieldData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "geo_transform.h"
@@ -27,7 +28,7 @@ namespace
 // The georeference of a grid or a piece, when its field data has one.
 bool transformOf(vtkFieldData* fieldData, terralux::GeoTransform& transform)
 {
-  vtkDataArray* coefficients = fieldData->GetArray("GeoTransform");
+  vtkDataArray* coefficients = fieldData->GetArray(vtkTerraLuxFieldData::GeoTransformName());
   if (!coefficients || coefficients->GetNumberOfValues() != 6)
     return false;
   for (int k = 0; k < 6; ++k)
@@ -39,12 +40,12 @@ bool transformOf(vtkFieldData* fieldData, terralux::GeoTransform& transform)
 void setGeoreference(vtkFieldData* fieldData, const terralux::GeoTransform& transform, int nx, int ny)
 {
   vtkNew<vtkDoubleArray> coefficients;
-  coefficients->SetName("GeoTransform");
+  coefficients->SetName(vtkTerraLuxFieldData::GeoTransformName());
   for (double c : transform.coefficients)
     coefficients->InsertNextValue(c);
   fieldData->AddArray(coefficients);
   vtkNew<vtkIntArray> rasterSize;
-  rasterSize->SetName("RasterSize");
+  rasterSize->SetName(vtkTerraLuxFieldData::RasterSizeName());
   rasterSize->InsertNextValue(nx);
   rasterSize->InsertNextValue(ny);
   fieldData->AddArray(rasterSize);

@@ -13,6 +13,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkStructuredGrid.h"
+#include "vtkRadiosityOutputs.h"
+#include "vtkTerraLuxFieldData.h"
 #include "vtkTerrainPieces.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -27,10 +29,6 @@ vtkStandardNewMacro(vtkTerrainRasterWriter);
 
 namespace
 {
-// What vtkHierarchicalRadiosity and vtkSolarIrradiation compute, in that order.
-const char* const radiosityArrays[] = { "Irradiance", "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance",
-  "Radiosity", "GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation",
-  "OutgoingIrradiation", "SunshineDuration", "SkyViewFactor" };
 
 const char* const noPieceToWrite = "no rank has a terrain piece with vtkTerrainSource's georeference to write";
 
@@ -45,7 +43,7 @@ std::string unitOf(vtkDataArray* array, const std::string& name)
     return "W/m^2";
   if (name == "Elevation")
     return "m";
-  if (name == "SkyViewFactor")
+  if (name == vtkRadiosityOutputs::SkyViewFactorName())
     return "1";
   return "";
 }
@@ -228,8 +226,8 @@ void vtkTerrainRasterWriter::WritePiecesAndMosaic(vtkMultiProcessController* con
 void vtkTerrainRasterWriter::WriteGrid(vtkDataSet* grid, const std::string& fileName)
 {
   vtkFieldData* fieldData = grid->GetFieldData();
-  vtkDataArray* geoTransform = fieldData->GetArray("GeoTransform");
-  vtkDataArray* rasterSize = fieldData->GetArray("RasterSize");
+  vtkDataArray* geoTransform = fieldData->GetArray(vtkTerraLuxFieldData::GeoTransformName());
+  vtkDataArray* rasterSize = fieldData->GetArray(vtkTerraLuxFieldData::RasterSizeName());
   int dims[3] = { 0, 0, 0 };
   if (auto* structured = vtkStructuredGrid::SafeDownCast(grid))
     structured->GetDimensions(dims);
@@ -250,18 +248,18 @@ void vtkTerrainRasterWriter::WriteGrid(vtkDataSet* grid, const std::string& file
   raster.height = dims[1];
   for (int k = 0; k < 6; ++k)
     raster.geoTransform.coefficients[k] = geoTransform->GetComponent(k, 0);
-  if (auto* crs = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray("CRS")))
+  if (auto* crs = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray(vtkTerraLuxFieldData::CRSName())))
   {
     raster.crsWkt = crs->GetNumberOfValues() > 0 ? crs->GetValue(0) : "";
   }
-  vtkDataArray* noData = fieldData->GetArray("NoDataValue");
+  vtkDataArray* noData = fieldData->GetArray(vtkTerraLuxFieldData::NoDataValueName());
   raster.noData = noData ? noData->GetComponent(0, 0) : this->NoDataValue;
 
   std::vector<std::string> names = this->ArrayNames;
   vtkPointData* pointData = grid->GetPointData();
   if (names.empty())
   {
-    for (const char* name : radiosityArrays)
+    for (const char* name : vtkRadiosityOutputs::AllNames()) // what the filters compute
       if (pointData->GetArray(name))
         names.emplace_back(name);
     if (names.empty())

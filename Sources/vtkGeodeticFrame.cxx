@@ -34,7 +34,7 @@ vtkGeodeticFrame::~vtkGeodeticFrame() = default;
 bool vtkGeodeticFrame::SetOriginFromFieldData(vtkDataObject* data)
 {
   double origin[3];
-  if (!vtkTerraLuxFieldData::GetVector(data, "GeoOrigin", origin, 3))
+  if (!vtkTerraLuxFieldData::GetGeoOrigin(data, origin))
   {
     vtkErrorMacro("The data object has no 3-value `GeoOrigin` field data: take it from a "
                   "vtkTerrainSource output of a georeferenced raster, or call SetOrigin().");

@@ -129,23 +129,10 @@ vtkPolyData* vtkSkySource::GetDomeOutput()
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkSkySource::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkSkySource::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    return this->RequestInformation(request, inputVector, outputVector);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inputVector, outputVector);
-  }
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
-  {
-    vtkTerraLuxFieldData::RequestWholeInputs(inputVector, this->GetNumberOfInputPorts());
-    return 1;
-  }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  vtkTerraLuxFieldData::RequestWholeInputs(inputVector, this->GetNumberOfInputPorts());
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -189,11 +176,11 @@ int vtkSkySource::RequestData(
   vtkDataObject* sun = vtkDataObject::GetData(inputVector[0], 0);
   if (sun && this->UseSunSource)
   {
-    if (!vtkTerraLuxFieldData::GetVector(sun, "SunZenith", &sunZenith, 1) ||
-      !vtkTerraLuxFieldData::GetVector(sun, "SunAzimuth", &sunAzimuth, 1) ||
-      !vtkTerraLuxFieldData::GetVector(sun, "DiffuseHorizontalIrradiance", &diffuse, 1) ||
-      !vtkTerraLuxFieldData::GetVector(sun, "SunNormalIrradiance", &direct, 1) ||
-      !vtkTerraLuxFieldData::GetVector(sun, "ExtraterrestrialIrradiance", &extraterrestrial, 1))
+    if (!vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunZenithName(), &sunZenith, 1) ||
+      !vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunAzimuthName(), &sunAzimuth, 1) ||
+      !vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), &diffuse, 1) ||
+      !vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunNormalIrradianceName(), &direct, 1) ||
+      !vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::ExtraterrestrialIrradianceName(), &extraterrestrial, 1))
     {
       vtkErrorMacro("Input port 0 must be a vtkSunSource output (field data SunZenith, "
                     "SunAzimuth, SunNormalIrradiance, DiffuseHorizontalIrradiance, "
@@ -280,7 +267,7 @@ int vtkSkySource::RequestData(
   map->GetCellData()->AddArray(solidAngle);
 
   vtkFieldData* fieldData = map->GetFieldData();
-  vtkTerraLuxFieldData::AddValue(fieldData, "DiffuseHorizontalIrradiance", diffuse);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), diffuse);
   std::vector<double> horizontal(bands);
   for (int band = 0; band < bands; ++band)
   {
@@ -288,8 +275,8 @@ int vtkSkySource::RequestData(
   }
   vtkTerraLuxFieldData::AddVector(fieldData, "HorizontalIrradiance", horizontal.data(), bands);
   vtkTerraLuxFieldData::AddValue(fieldData, "RadianceScale", sky->radianceScale());
-  vtkTerraLuxFieldData::AddValue(fieldData, "SunZenith", sunZenith);
-  vtkTerraLuxFieldData::AddValue(fieldData, "SunAzimuth", sunAzimuth);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunZenithName(), sunZenith);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunAzimuthName(), sunAzimuth);
   if (perez)
   {
     vtkTerraLuxFieldData::AddValue(fieldData, "SkyClearness", perez->clearness());

@@ -38,16 +38,16 @@
 #define vtkSkySource_h
 
 #include "TerraLuxSourcesModule.h" // For export macro
-#include "vtkAlgorithm.h"
+#include "vtkDataObjectAlgorithm.h"
 
 class vtkImageData;
 class vtkPolyData;
 
-class TERRALUXSOURCES_EXPORT vtkSkySource : public vtkAlgorithm
+class TERRALUXSOURCES_EXPORT vtkSkySource : public vtkDataObjectAlgorithm
 {
 public:
   static vtkSkySource* New();
-  vtkTypeMacro(vtkSkySource, vtkAlgorithm);
+  vtkTypeMacro(vtkSkySource, vtkDataObjectAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum SkyModels
@@ -146,16 +146,12 @@ public:
 
   ///@{
   /**
-   * The radiance map (port 0) and the display dome (port 1); GetOutput(port) either, as
-   * VTK's algorithms offer it.
+   * The radiance map (port 0) and the display dome (port 1), typed; GetOutput(port) of
+   * vtkDataObjectAlgorithm gives either too.
    */
   vtkImageData* GetRadianceOutput();
   vtkPolyData* GetDomeOutput();
-  vtkDataObject* GetOutput() { return this->GetOutputDataObject(0); }
-  vtkDataObject* GetOutput(int port) { return this->GetOutputDataObject(port); }
   ///@}
-
-  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 protected:
   vtkSkySource();
@@ -163,8 +159,9 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
-  virtual int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int SkyModel;
   int SkyType;

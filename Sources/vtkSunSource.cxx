@@ -86,7 +86,7 @@ int vtkSunSource::RequestData(
   double place[3] = { this->Latitude, this->Longitude, this->Height };
   if (vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0))
   {
-    if (!vtkTerraLuxFieldData::GetVector(input, "GeoOrigin", place, 3))
+    if (!vtkTerraLuxFieldData::GetGeoOrigin(input, place))
     {
       vtkErrorMacro("The input has no `GeoOrigin` field data (latitude, longitude, height): "
                     "connect a vtkTerrainSource of a georeferenced DEM, or disconnect the input "
@@ -174,16 +174,16 @@ int vtkSunSource::RequestData(
   output->SetVerts(vertices);
 
   vtkFieldData* fieldData = output->GetFieldData();
-  vtkTerraLuxFieldData::AddTuple(fieldData, "SunDirection", this->Direction, 3);
-  vtkTerraLuxFieldData::AddValue(fieldData, "SunZenith", this->Zenith);
-  vtkTerraLuxFieldData::AddValue(fieldData, "SunAzimuth", this->Azimuth);
+  vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::SunDirectionName(), this->Direction, 3);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunZenithName(), this->Zenith);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunAzimuthName(), this->Azimuth);
   vtkTerraLuxFieldData::AddValue(fieldData, "SunAltitude", 90.0 - this->Zenith);
-  vtkTerraLuxFieldData::AddValue(fieldData, "SunNormalIrradiance", this->NormalIrradiance);
-  vtkTerraLuxFieldData::AddValue(fieldData, "DiffuseHorizontalIrradiance", this->DiffuseHorizontalIrradiance);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunNormalIrradianceName(), this->NormalIrradiance);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), this->DiffuseHorizontalIrradiance);
   vtkTerraLuxFieldData::AddValue(fieldData, "GlobalHorizontalIrradiance", irradiance.globalHorizontalWm2);
-  vtkTerraLuxFieldData::AddValue(fieldData, "ExtraterrestrialIrradiance", this->ExtraterrestrialIrradiance);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::ExtraterrestrialIrradianceName(), this->ExtraterrestrialIrradiance);
   vtkTerraLuxFieldData::AddValue(fieldData, "EarthSunDistance", this->EarthSunDistance);
-  vtkTerraLuxFieldData::AddTuple(fieldData, "GeoOrigin", place, 3);
+  vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::GeoOriginName(), place, 3);
   auto utc = vtkSmartPointer<vtkStringArray>::New();
   utc->SetName("DateTime");
   utc->InsertNextValue(instant.toUtcString());

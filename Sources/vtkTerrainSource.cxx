@@ -339,7 +339,7 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
     const terralux::LocalFrame frame(origin);
     placement = std::make_unique<terralux::TerrainPlacement>(grid, projection, frame);
     const double originValues[3] = { origin.latitudeDeg, origin.longitudeDeg, origin.heightM };
-    vtkTerraLuxFieldData::AddTuple(fieldData, "GeoOrigin", originValues, 3);
+    vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::GeoOriginName(), originValues, 3);
   }
 
   // Raster order -> grid order (GeoTransform::gridRow): reversed for north-up rasters.
@@ -384,20 +384,20 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
   }
 
   auto crs = vtkSmartPointer<vtkStringArray>::New();
-  crs->SetName("CRS");
+  crs->SetName(vtkTerraLuxFieldData::CRSName());
   crs->InsertNextValue(info.crsWkt);
   fieldData->AddArray(crs);
   // The georeference of this piece (of the whole grid when unsplit).
   const terralux::GeoTransform pieceTransform = wholeTransform.pieceOf(extent[0], extent[2], extent[3], wholeNy);
-  vtkTerraLuxFieldData::AddVector(fieldData, "GeoTransform", pieceTransform.coefficients.data(), 6);
+  vtkTerraLuxFieldData::AddVector(fieldData, vtkTerraLuxFieldData::GeoTransformName(), pieceTransform.coefficients.data(), 6);
   auto rasterSize = vtkSmartPointer<vtkIntArray>::New();
-  rasterSize->SetName("RasterSize");
+  rasterSize->SetName(vtkTerraLuxFieldData::RasterSizeName());
   rasterSize->InsertNextValue(nx);
   rasterSize->InsertNextValue(ny);
   fieldData->AddArray(rasterSize);
   if (info.hasNoData)
   {
-    vtkTerraLuxFieldData::AddValue(fieldData, "NoDataValue", info.noData);
+    vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::NoDataValueName(), info.noData);
   }
   return true;
 }

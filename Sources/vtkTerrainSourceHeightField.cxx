@@ -141,7 +141,7 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
       output->Initialize();
       return false;
     }
-    vtkTerraLuxFieldData::AddTuple(output->GetFieldData(), "GeoOrigin", this->GeoOrigin, 3);
+    vtkTerraLuxFieldData::AddTuple(output->GetFieldData(), vtkTerraLuxFieldData::GeoOriginName(), this->GeoOrigin, 3);
   }
   return true;
 }

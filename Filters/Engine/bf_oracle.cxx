@@ -2,7 +2,7 @@
 
 #include "angles.h"
 #include "cluster.h"
-#include "sky_patch_element.h"
+#include "external_source.h"
 #include "polygon_element.h"
 
 #include <algorithm>
@@ -12,19 +12,12 @@ namespace terralux
 {
 namespace
 {
-constexpr double twoPi = 6.28318530717958647692;
 
 // Size on a common scale: fraction of the scene's area, or of the hemisphere.
 double relativeSize(const HElement& element, double sceneArea)
 {
-  if (element.kind() == HElement::Kind::SkyPatch)
-  {
-    return static_cast<const SkyPatchElement&>(element).solidAngle() / twoPi;
-  }
-  if (element.kind() == HElement::Kind::Sun)
-  {
-    return 0.0;
-  }
+  if (const ExternalSource* source = element.asExternal())
+    return source->hemisphereShare();
   return element.area() / sceneArea;
 }
 

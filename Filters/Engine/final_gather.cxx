@@ -27,7 +27,6 @@ CosineFrame::CosineFrame(const Vec3& n)
 
 Vec3 CosineFrame::direction(double s, double t) const
 {
-  constexpr double twoPi = 6.28318530717958647692;
   const double r = std::sqrt(s), phi = twoPi * t;
   return glm::normalize(
     r * std::cos(phi) * this->U + r * std::sin(phi) * this->V + std::sqrt(std::max(0.0, 1.0 - s)) * this->N);

@@ -2,7 +2,7 @@
 // The abstract hierarchical element of paper section 3.1: radiosity, reflectance,
 // area, incoming links, lazy split, sample points, and the receiver and scale
 // factors of section 5.1. Subclasses: PolygonElement (surfaces), Cluster (groups),
-// SkyPatchElement and SunElement (external sources, section 5).
+// and the external sources of section 5 (ExternalSource: SkyPatchElement, SunElement).
 
 #include "radiosity_types.h"
 #include "sampling.h"
@@ -15,6 +15,7 @@
 namespace terralux
 {
 class HElement;
+class ExternalSource;
 
 /// Light transport from `sender` to the element that stores the link. Geometry is
 /// cached at creation: irradiance = kernel * visibility * sender->emittance().
@@ -55,7 +56,10 @@ public:
   virtual Kind kind() const = 0;
   bool isSurface() const { return this->kind() == Kind::Polygon; }
   bool isCluster() const { return this->kind() == Kind::Cluster; }
-  bool isExternal() const { return this->kind() == Kind::SkyPatch || this->kind() == Kind::Sun; }
+  bool isExternal() const { return this->asExternal() != nullptr; }
+  /// This element as a source at infinity, or null for surfaces and clusters.
+  virtual ExternalSource* asExternal() { return nullptr; }
+  virtual const ExternalSource* asExternal() const { return nullptr; }
 
   /// Deterministic id (creation order), used to seed the link's samples.
   std::uint64_t id() const { return this->Id; }

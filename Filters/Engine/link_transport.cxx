@@ -4,7 +4,7 @@
 #include "cluster.h"
 #include "point_form_factor.h"
 #include "polygon_element.h"
-#include "sky_patch_element.h"
+#include "external_source.h"
 #include "visibility.h"
 
 #include <algorithm>
@@ -215,22 +215,15 @@ double surfaceKernel(const PolygonElement& receiver, const HElement& sender, dou
 
 double kernelAtSurface(const PolygonElement& receiver, HElement& sender)
 {
-  switch (sender.kind())
-  {
-    case HElement::Kind::Sun:
-      return receiver.receiverFactor(static_cast<SunElement&>(sender).direction());
-    case HElement::Kind::SkyPatch:
-      return static_cast<SkyPatchElement&>(sender).kernel(receiver.normal());
-    default:
-      return surfaceKernel(receiver, sender);
-  }
+  if (const ExternalSource* source = sender.asExternal())
+    return source->kernel(receiver.normal());
+  return surfaceKernel(receiver, sender);
 }
 
 double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
 {
-  if (sender.kind() != HElement::Kind::SkyPatch)
-    return 0.0;
-  return transport * static_cast<const SkyPatchElement&>(sender).geometricShare(normal) / pi;
+  const ExternalSource* source = sender.asExternal();
+  return source ? source->skyView(normal, transport) : 0.0;
 }
 
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
@@ -244,42 +237,24 @@ Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector
     for (int band = 0; band < maxBands; ++band)
       result[band] += transport * flux[band];
     if (sunlitHours && transport > 0.0)
-      *sunlitHours += static_cast<const SunElement*>(sun)->duration();
+      *sunlitHours += sun->asExternal()->duration();
   }
   return result;
 }
 
 int lightCategoryOf(const HElement& sender)
 {
-  switch (sender.kind())
-  {
-    case HElement::Kind::Sun:
-      return SunLight;
-    case HElement::Kind::SkyPatch:
-      return SkyLight;
-    default:
-      return ReflectedLight;
-  }
+  const ExternalSource* source = sender.asExternal();
+  return source ? source->category() : ReflectedLight;
 }
 
 double sampledVisibility(HElement& receiver, HElement& sender, const Visibility& visibility, int samples)
 {
   SampleGenerator random(linkSeed(receiver.id(), sender.id()));
-  switch (sender.kind())
-  {
-    case HElement::Kind::Sun:
-    {
-      const Vec3 d = static_cast<SunElement&>(sender).direction();
-      return visibilityToward(receiver, visibility, samples, random, [&](int) { return d; });
-    }
-    case HElement::Kind::SkyPatch:
-    {
-      const auto& patch = static_cast<SkyPatchElement&>(sender);
-      return visibilityToward(receiver, visibility, samples, random, [&](int) { return patch.sampleDirection(random); });
-    }
-    default:
-      return visibilityBetween(receiver, sender, visibility, samples, random);
-  }
+  if (const ExternalSource* source = sender.asExternal())
+    return visibilityToward(
+      receiver, visibility, samples, random, [&](int) { return source->sampleDirection(random); });
+  return visibilityBetween(receiver, sender, visibility, samples, random);
 }
 
 double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
@@ -303,68 +278,57 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
     // already counts alone; with no ray to say otherwise it is taken as seen.
     return counted ? static_cast<double>(visible) / counted : 1.0;
   };
-  switch (sender.kind())
+  if (const ExternalSource* source = sender.asExternal())
   {
-    case HElement::Kind::Sun:
+    const double kernel = source->kernel(n);
+    if (!(kernel > 0.0))
+      return 0.0;
+    if (source->parallel())
+      samples = std::min(samples, 1); // one direction: one ray decides
+    return kernel * seen([&](int) { return source->sampleDirection(random); });
+  }
+  if (samples > 0 && nearApproximateShape(point, sender))
+  {
+    return sampledFormFactor(point, n, sender, visibility, samples, random);
+  }
+  double kernel = 0.0;
+  auto formFactor = [&](const PolygonElement& polygon) {
+    return polygon.formFactorFrom(point, n);
+  };
+  if (sender.isSurface())
+  {
+    kernel = formFactor(static_cast<const PolygonElement&>(sender));
+  }
+  else
+  {
+    const auto& cluster = static_cast<const Cluster&>(sender);
+    if (cluster.surfaces().size() <= exactClusterSurfaces)
     {
-      const Vec3 d = static_cast<SunElement&>(sender).direction();
-      const double r = std::max(0.0, glm::dot(n, d));
-      return r > 0.0 && (samples == 0 || !visibility.occludedToward(point, n, d)) ? r : 0.0;
+      for (const PolygonElement* surface : cluster.surfaces())
+        kernel += formFactor(*surface);
     }
-    case HElement::Kind::SkyPatch:
+    else
     {
-      const auto& patch = static_cast<SkyPatchElement&>(sender);
-      const double kernel = patch.kernel(n);
-      if (!(kernel > 0.0))
-        return 0.0;
-      return kernel * seen([&](int) { return patch.sampleDirection(random); });
-    }
-    default:
-    {
-      if (samples > 0 && nearApproximateShape(point, sender))
-      {
-        return sampledFormFactor(point, n, sender, visibility, samples, random);
-      }
-      double kernel = 0.0;
-      auto formFactor = [&](const PolygonElement& polygon) {
-        return polygon.formFactorFrom(point, n);
-      };
-      if (sender.isSurface())
-      {
-        kernel = formFactor(static_cast<const PolygonElement&>(sender));
-      }
-      else
-      {
-        const auto& cluster = static_cast<const Cluster&>(sender);
-        if (cluster.surfaces().size() <= exactClusterSurfaces)
-        {
-          for (const PolygonElement* surface : cluster.surfaces())
-            kernel += formFactor(*surface);
-        }
-        else
-        {
-          const Vec3 toSender = cluster.centre() - point;
-          const double distance = glm::length(toSender);
-          const Vec3 direction = distance > 0.0 ? toSender / distance : n;
-          kernel = clusterKernel(cluster, direction, distance) * std::max(0.0, glm::dot(n, direction));
-        }
-      }
-      if (!(kernel > 0.0))
-        return 0.0;
-      if (samples == 0)
-        return kernel;
-      int counted = 0, visible = 0;
-      for (int k = 0; k < samples; ++k)
-      {
-        const SurfaceSample y = sender.sample(k, samples, random);
-        if (glm::dot(n, y.position - point) <= 0.0 || glm::dot(y.normal, point - y.position) <= 0.0)
-          continue;
-        ++counted;
-        visible += !visibility.occluded(point, n, y.position, y.normal);
-      }
-      return counted ? kernel * visible / counted : 0.0;
+      const Vec3 toSender = cluster.centre() - point;
+      const double distance = glm::length(toSender);
+      const Vec3 direction = distance > 0.0 ? toSender / distance : n;
+      kernel = clusterKernel(cluster, direction, distance) * std::max(0.0, glm::dot(n, direction));
     }
   }
+  if (!(kernel > 0.0))
+    return 0.0;
+  if (samples == 0)
+    return kernel;
+  int counted = 0, visible = 0;
+  for (int k = 0; k < samples; ++k)
+  {
+    const SurfaceSample y = sender.sample(k, samples, random);
+    if (glm::dot(n, y.position - point) <= 0.0 || glm::dot(y.normal, point - y.position) <= 0.0)
+      continue;
+    ++counted;
+    visible += !visibility.occluded(point, n, y.position, y.normal);
+  }
+  return counted ? kernel * visible / counted : 0.0;
 }
 
 namespace
@@ -386,31 +350,16 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
   link.sender = &sender;
   link.directional = receiver.isCluster();
 
-  if (sender.kind() == HElement::Kind::Sun)
+  if (const ExternalSource* source = sender.asExternal())
   {
-    const Vec3 d = static_cast<SunElement&>(sender).direction();
-    link.direction = d;
-    link.kernel = link.directional ? 1.0 : receiver.receiverFactor(d);
-    link.kernelSpread = cosineSpread(receiver);
+    link.direction = source->direction();
+    // R S Omega for a sky patch toward a surface counts only the part of the patch above
+    // the surface's horizon; a cluster weighs its surfaces' cosines later.
+    link.kernel = link.directional ? source->directionalKernel()
+                                   : source->kernel(static_cast<PolygonElement&>(receiver).normal());
+    link.kernelSpread = cosineSpread(receiver) * source->directionalKernel();
     if (link.kernel > 0.0)
-    {
       link.visibility = sampledVisibility(receiver, sender, visibility, samples);
-    }
-    return link;
-  }
-  if (sender.kind() == HElement::Kind::SkyPatch)
-  {
-    auto& patch = static_cast<SkyPatchElement&>(sender);
-    link.direction = patch.direction();
-    // R S Omega: for a surface, the patch's projected solid angle integrated over the
-    // patch (a patch straddling the surface's horizon counts only its visible part).
-    link.kernel = link.directional ? patch.solidAngle()
-                                   : patch.kernel(static_cast<PolygonElement&>(receiver).normal());
-    link.kernelSpread = cosineSpread(receiver) * patch.solidAngle();
-    if (link.kernel > 0.0)
-    {
-      link.visibility = sampledVisibility(receiver, sender, visibility, samples);
-    }
     return link;
   }
 

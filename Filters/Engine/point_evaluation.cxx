@@ -2,6 +2,7 @@
 
 #include "final_gather.h"
 #include "leaf_light.h"
+#include "external_source.h"
 #include "link_transport.h"
 #include "polygon_element.h"
 #include "post_lattice.h"
@@ -71,13 +72,14 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   {
     for (const Link& link : element->Incoming)
     {
-      if (link.sender->kind() == HElement::Kind::Sun)
+      const ExternalSource* source = link.sender->asExternal();
+      if (source && source->parallel())
         continue; // direct sun is taken below, by a ray from the point itself
       const std::uint64_t seed = linkSeed(salt++, link.sender->id());
       // Sky visibility from the point itself: a ray that starts on a wall's plane skips
       // it and then meets the building from inside, so the sky is judged right whatever
       // leaf holds the point; form factors need the point inside its leaf.
-      const Vec3& from = link.sender->kind() == HElement::Kind::SkyPatch ? point : inside;
+      const Vec3& from = source ? point : inside;
       const double transport = transportToPoint(
         from, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
       const Spectrum e = link.sender->emittance();

@@ -3,7 +3,7 @@
 #include "cluster.h"
 #include "link_transport.h"
 #include "polygon_element.h"
-#include "sky_patch_element.h"
+#include "external_source.h"
 #include "terrain_patch.h"
 #include "visibility.h"
 

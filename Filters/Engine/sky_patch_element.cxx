@@ -15,7 +15,6 @@ const double gauss8Nodes[8] = { -0.9602898564975363, -0.7966664774136267, -0.525
   -0.1834346424956498, 0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363 };
 const double gauss8Weights[8] = { 0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
   0.3626837833783620, 0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763 };
-constexpr double twoPi = 6.28318530717958647692;
 
 // Integral of max(0, a - b cos w) over w in [w0, w1], b >= 0: a - b cos w > 0 where
 // cos w < a / b, i.e. on [alpha, 2 pi - alpha] + 2 pi k with alpha = acos(a / b).
@@ -36,7 +35,7 @@ double positiveCosineIntegral(double a, double b, double w0, double w1)
 
 SkyPatchElement::SkyPatchElement(
   std::uint64_t id, int level, ElementStore* store, const SkyHierarchy* sky, SkyPatch patch)
-  : HElement(id, level)
+  : ExternalSource(id, level)
   , Store(store)
   , Sky(sky)
   , Patch(patch)

@@ -2,15 +2,17 @@
 // Sky patch H-element (paper section 5.1): a range of altitude and azimuth at
 // infinity with the cell-averaged radiance of the sky pyramid (subsampled below its
 // finest level). It computes its own transport: dE = R S Omega L (eq. 1).
+// The sun, the other external source, is in sun_element.h.
 
-#include "helement.h"
+#include "external_source.h"
+#include "angles.h"
 #include "sky_hierarchy.h"
 
 #include <array>
 
 namespace terralux
 {
-class SkyPatchElement : public HElement
+class SkyPatchElement : public ExternalSource
 {
 public:
   SkyPatchElement(std::uint64_t id, int level, ElementStore* store, const SkyHierarchy* sky, SkyPatch patch);
@@ -19,11 +21,17 @@ public:
   Spectrum emittance() const override { return this->Radiance; }
   const std::vector<HElement*>& children() override;
   bool canSplit() const override { return this->Patch.level < this->Store->MaximumSkyLevel; }
-  SurfaceSample sample(int, int, SampleGenerator&) const override { return { Vec3(0.0), this->Direction }; }
-  double receiverFactor(const Vec3&) const override { return 0.0; } // never receives
 
   double solidAngle() const { return this->SolidAngle; }
-  const Vec3& direction() const { return this->Direction; }
+  const Vec3& direction() const override { return this->Direction; }
+  double directionalKernel() const override { return this->SolidAngle; }
+  bool parallel() const override { return false; }
+  LightCategory category() const override { return SkyLight; }
+  double hemisphereShare() const override { return this->SolidAngle / twoPi; }
+  double skyView(const Vec3& normal, double transport) const override
+  {
+    return transport * this->geometricShare(normal) / pi;
+  }
   const SkyPatch& patch() const { return this->Patch; }
 
   /// Integral of max(0, n . d) dOmega over the patch for a unit normal n: in closed form
@@ -36,7 +44,7 @@ public:
   /// whole patch is in front of n, whatever its level, so an open plane receives exactly
   /// what the radiance map gives it; projectedSolidAngle(n) where the surface's horizon
   /// crosses the patch (the refinement splits such links while they matter).
-  double kernel(const Vec3& normal) const;
+  double kernel(const Vec3& normal) const override;
   /// kernel(n) and projectedSolidAngle(n) at once, for a side already known (sideOf).
   void kernelAndProjection(const Vec3& normal, int side, double& kernel, double& projected) const;
   /// A direction in the patch for sampled visibility, distributed like the irradiance
@@ -44,7 +52,7 @@ public:
   /// of the patch (the circumsolar sky) that an obstacle hides weighs as much as it
   /// lights, instead of as much as it spans. Below the sky map's finest level (constant
   /// radiance), by sin u alone.
-  Vec3 sampleDirection(SampleGenerator& random) const;
+  Vec3 sampleDirection(SampleGenerator& random) const override;
   /// projectedSolidAngle(n) / kernel(n) (1 where they agree or kernel is 0): turns
   /// transport into the geometric share the sky view factor counts.
   double geometricShare(const Vec3& normal) const;
@@ -74,33 +82,5 @@ private:
   int CellsPerSide = 1;
   Vec3 RadianceVector{ 0.0 };         // integral of L d dOmega / mean L (bands summed)
   std::vector<HElement*> Children;
-};
-
-/// The sun as a parallel source (paper section 5.2): never splits; dE = R S phi.
-class SunElement : public HElement
-{
-public:
-  /// `duration`: hours this sun stands for (a time series' step), 0 for an instant.
-  SunElement(std::uint64_t id, int level, const Vec3& direction, const Spectrum& flux, double duration = 0.0)
-    : HElement(id, level)
-    , Direction(glm::normalize(direction))
-    , Flux(flux)
-    , Duration(duration)
-  {
-  }
-  Kind kind() const override { return Kind::Sun; }
-  Spectrum emittance() const override { return this->Flux; }
-  const std::vector<HElement*>& children() override { return this->None; }
-  bool canSplit() const override { return false; }
-  SurfaceSample sample(int, int, SampleGenerator&) const override { return { Vec3(0.0), this->Direction }; }
-  double receiverFactor(const Vec3&) const override { return 0.0; }
-  const Vec3& direction() const { return this->Direction; }
-  double duration() const { return this->Duration; }
-
-private:
-  Vec3 Direction;
-  Spectrum Flux;
-  double Duration;
-  std::vector<HElement*> None;
 };
 } // namespace terralux

@@ -14,6 +14,7 @@
 #include "polygon_element.h"
 #include "sky_hierarchy.h"
 #include "sky_patch_element.h"
+#include "sun_element.h"
 #include "terrain_mesh.h"
 #include "terrain_patch.h"
 #include "visibility.h"
@@ -177,7 +178,7 @@ double HierarchicalRadiosity::referencePower() const
       double e = polygon->emission()[band];
       for (const HElement* sun : this->Suns)
         e += sun->emittance()[band] *
-          std::max(0.0, glm::dot(polygon->normal(), static_cast<const SunElement*>(sun)->direction()));
+          sun->asExternal()->kernel(polygon->normal());
       if (this->Sky)
       {
         e += this->Sky->horizontalIrradiance(std::min(band, this->Sky->bands() - 1)) *
@@ -203,7 +204,7 @@ void HierarchicalRadiosity::mergeSuns()
   std::map<std::pair<int, int>, Merged> bins; // ordered: the same suns in the same order every run
   for (const HElement* element : this->PointSuns)
   {
-    const auto& sun = static_cast<const SunElement&>(*element);
+    const ExternalSource& sun = *element->asExternal();
     const Vec3& d = sun.direction();
     const double altitude = std::asin(std::min(1.0, d.z));
     const double azimuth = std::atan2(d.x, d.y) + pi;

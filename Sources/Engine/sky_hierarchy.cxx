@@ -12,9 +12,6 @@ namespace terralux
 namespace
 {
 constexpr double halfPi = pi / 2.0;
-constexpr double twoPi = 2.0 * pi;
-
-// 3-point Gauss-Legendre on [-1, 1]: exact for polynomials of degree 5.
 } // namespace
 
 double SkyTexture::sample(double compassAzimuthRad, double altitudeRad, int band) const

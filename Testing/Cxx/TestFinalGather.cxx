@@ -1,6 +1,7 @@
 // Final gather at points (final_gather.h) and the open sky it subtracts from (open_sky.h).
 
 #include "cie_sky.h"
+#include "angles.h"
 #include "final_gather.h"
 #include "open_sky.h"
 #include "polygon_element.h"
@@ -20,8 +21,6 @@ using namespace terralux_test;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double degree = pi / 180.0;
 
 // Irradiance on an open plane by brute force over the finest sky cells: 8 x 8
 // sub-cells of each, at their centres.

@@ -3,6 +3,7 @@
 // ray escapes, just below it a ray is blocked.
 
 #include "horizon_map.h"
+#include "angles.h"
 #include "radiosity_types.h"
 #include "terrain_grids.h"
 #include "visibility.h"
@@ -16,8 +17,6 @@ using namespace terralux_test;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double degree = pi / 180.0;
 
 double rough(double x, double y)
 {

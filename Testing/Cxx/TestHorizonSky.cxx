@@ -2,6 +2,7 @@
 // closed forms and against brute-force rays.
 
 #include "cie_sky.h"
+#include "angles.h"
 #include "horizon_map.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
@@ -22,8 +23,6 @@ using namespace terralux_test;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double degree = pi / 180.0;
 
 // Sky a plane of normal n at p does not receive because the scene is in the way, by
 // brute force: stratified cosine-weighted rays, each blocked one hiding pi L(d) / N.

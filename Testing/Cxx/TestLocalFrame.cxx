@@ -1,5 +1,6 @@
 // Engine tests: local ENU frame, geotransforms and map projections.
 #include "error.h"
+#include "angles.h"
 #include "geo_transform.h"
 #include "local_frame.h"
 #include "map_projection.h"
@@ -33,7 +34,7 @@ TEST(LocalFrame, AxesPointEastNorthUp)
   EXPECT_NEAR(north[0], 0.0, 1e-6);
   EXPECT_GT(east[0], 1000.0);
   // The parallel curves toward the pole: north offset x^2 tan(lat) / (2 N).
-  EXPECT_NEAR(east[1], east[0] * east[0] * std::tan(-8.0 * M_PI / 180) / (2 * 6378137.0), 1e-3);
+  EXPECT_NEAR(east[1], east[0] * east[0] * std::tan(-8.0 * pi / 180) / (2 * 6378137.0), 1e-3);
   const LocalPoint up = frame.toLocal({ -8.0, -35.0, 100.0 });
   EXPECT_NEAR(up[2], 100.0, 1e-9);
 }
@@ -50,7 +51,7 @@ TEST(LocalFrame, CurvatureDropAtFiftyKilometres)
   const double a = GeographicLib::Constants::WGS84_a();
   const double f = GeographicLib::Constants::WGS84_f();
   const double e2 = f * (2 - f);
-  const double s = std::sin(latitude * M_PI / 180.0);
+  const double s = std::sin(latitude * pi / 180.0);
   const double meridionalRadius = a * (1 - e2) / std::pow(1 - e2 * s * s, 1.5);
   const double expectedDrop = 50000.0 * 50000.0 / (2 * meridionalRadius);
   EXPECT_NEAR(-ground[2], expectedDrop, 0.5);
@@ -80,7 +81,7 @@ TEST(LocalFrame, MatchesEcefDifferenceRotatedToEnu)
   double x0, y0, z0, x1, y1, z1;
   earth.Forward(lat0, lon0, h0, x0, y0, z0);
   earth.Forward(35.2, 139.3, 900.0, x1, y1, z1);
-  const double phi = lat0 * M_PI / 180, lambda = lon0 * M_PI / 180;
+  const double phi = lat0 * pi / 180, lambda = lon0 * pi / 180;
   const double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
   const double east = -std::sin(lambda) * dx + std::cos(lambda) * dy;
   const double north = -std::sin(phi) * std::cos(lambda) * dx - std::sin(phi) * std::sin(lambda) * dy +

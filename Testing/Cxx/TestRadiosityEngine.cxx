@@ -2,6 +2,7 @@
 // form factors of unit squares, furnaces, a pit's sky view factor, shadows, and
 // determinism across thread counts.
 #include "cie_sky.h"
+#include "angles.h"
 #include "cluster.h"
 #include "error.h"
 #include "point_form_factor.h"
@@ -22,7 +23,6 @@ using namespace terralux_test;
 
 namespace
 {
-constexpr double degree = M_PI / 180.0;
 
 // Calls `visit` for every leaf below the input polygons.
 void forEachLeaf(const HierarchicalRadiosity& solver, const std::function<void(PolygonElement&)>& visit)
@@ -89,7 +89,7 @@ TEST(PointFormFactor, ClosedForms)
   // F = (2 / pi) [x/sqrt(1+x^2) atan(y/sqrt(1+x^2)) + y/sqrt(1+y^2) atan(x/sqrt(1+y^2))] with x = y = 0.5.
   const Vec3 square[4] = { { -0.5, -0.5, 0 }, { 0.5, -0.5, 0 }, { 0.5, 0.5, 0 }, { -0.5, 0.5, 0 } };
   const double x = 0.5, a = x / std::sqrt(1 + x * x);
-  const double expected = 2.0 / M_PI * 2.0 * a * std::atan(a);
+  const double expected = 2.0 / pi * 2.0 * a * std::atan(a);
   EXPECT_NEAR(pointToPolygonFormFactor({ 0, 0, 1 }, { 0, 0, -1 }, square, 4, { 0, 0, 1 }), expected, 1e-12);
   // Behind the emitter: nothing. Polygon straddling the receiver's plane: clipped.
   EXPECT_EQ(pointToPolygonFormFactor({ 0, 0, -1 }, { 0, 0, 1 }, square, 4, { 0, 0, 1 }), 0.0);
@@ -133,7 +133,7 @@ TEST(SkyPatchElement, ProjectedSolidAngleAgainstBruteForce)
 TEST(Radiosity, PlanesUnderUniformAndCieSkies)
 {
   const double radiance = 40.0;
-  const SkyHierarchy uniform(UniformSky(), M_PI * radiance, 7);
+  const SkyHierarchy uniform(UniformSky(), pi * radiance, 7);
   for (double tilt : { 0.0, 35.0, 90.0 })
   {
     const RadiosityScene scene = unitSquare({ std::sin(tilt * degree), 0.0, std::cos(tilt * degree) });
@@ -142,7 +142,7 @@ TEST(Radiosity, PlanesUnderUniformAndCieSkies)
     HierarchicalRadiosity solver(scene, options);
     solver.setSky(&uniform);
     ASSERT_TRUE(solver.solve());
-    const double expected = M_PI * radiance * (1.0 + std::cos(tilt * degree)) / 2.0;
+    const double expected = pi * radiance * (1.0 + std::cos(tilt * degree)) / 2.0;
     const double got = leafAverage(solver, [](const PolygonElement&) { return true; },
       [](const PolygonElement& p) { return p.Irradiance[SkyLight][0]; });
     EXPECT_NEAR(got / expected, 1.0, 0.005) << tilt;

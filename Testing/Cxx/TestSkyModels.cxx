@@ -1,6 +1,7 @@
 // Engine tests: CIE and Perez sky models and the sky hierarchy against closed forms
 // and an independent brute-force integration.
 #include "cie_sky.h"
+#include "angles.h"
 #include "error.h"
 #include "perez_sky.h"
 #include "sky_hierarchy.h"
@@ -13,13 +14,12 @@ using namespace terralux;
 
 namespace
 {
-constexpr double degree = M_PI / 180.0;
 
 // Brute force: midpoint rule over (zenith, azimuth), independent of the hierarchy.
 double horizontalIntegral(const SkyModel& model, int steps = 360)
 {
   double sum = 0.0;
-  const double dz = 0.5 * M_PI / steps, da = 2.0 * M_PI / (4 * steps);
+  const double dz = 0.5 * pi / steps, da = 2.0 * pi / (4 * steps);
   for (int i = 0; i < steps; ++i)
   {
     const double z = (i + 0.5) * dz;
@@ -82,25 +82,25 @@ TEST(SkyHierarchy, SolidAnglesOfEveryLevelSumToTwoPi)
         compensation += std::abs(sum) >= omega ? (sum - t) + omega : (omega - t) + sum;
         sum = t;
       }
-    EXPECT_NEAR(sum + compensation, 2.0 * M_PI, 1e-12) << level;
+    EXPECT_NEAR(sum + compensation, 2.0 * pi, 1e-12) << level;
   }
 }
 
 TEST(SkyHierarchy, ParametersMapToCompassDirections)
 {
   const Direction south = directionFromSkyParameters(0.0, 0.0);
-  const Direction west = directionFromSkyParameters(0.0, 0.5 * M_PI);
+  const Direction west = directionFromSkyParameters(0.0, 0.5 * pi);
   EXPECT_NEAR(south[1], -1.0, 1e-12);
   EXPECT_NEAR(west[0], -1.0, 1e-12);
-  EXPECT_NEAR(directionFromSkyParameters(0.5 * M_PI, 1.0)[2], 1.0, 1e-12);
+  EXPECT_NEAR(directionFromSkyParameters(0.5 * pi, 1.0)[2], 1.0, 1e-12);
 }
 
 TEST(SkyHierarchy, UniformSkyClosedForms)
 {
   const double radiance = 30.0;
-  const SkyHierarchy sky(UniformSky(), M_PI * radiance, 7);
+  const SkyHierarchy sky(UniformSky(), pi * radiance, 7);
   EXPECT_NEAR(sky.radianceScale(), radiance, 1e-9); // E = pi L
-  EXPECT_NEAR(sky.horizontalIrradiance(0), M_PI * radiance, 1e-9);
+  EXPECT_NEAR(sky.horizontalIrradiance(0), pi * radiance, 1e-9);
   for (int level : { 0, 3, 7, 9 })
   {
     EXPECT_NEAR(sky.radiance(SkyPatch{ level, 0, 0 }, 0), radiance, 1e-9);
@@ -109,7 +109,7 @@ TEST(SkyHierarchy, UniformSkyClosedForms)
   for (double tilt : { 0.0, 30.0, 60.0, 90.0 })
   {
     const Direction normal{ 0.0, std::sin(tilt * degree), std::cos(tilt * degree) };
-    const double expected = M_PI * radiance * (1.0 + std::cos(tilt * degree)) / 2.0;
+    const double expected = pi * radiance * (1.0 + std::cos(tilt * degree)) / 2.0;
     EXPECT_NEAR(sky.planeIrradiance(normal, 9, 0) / expected, 1.0, 2e-3) << tilt;
   }
   EXPECT_DOUBLE_EQ(skyIrradianceContribution(0.5, 0.25, 2.0, 10.0), 2.5);
@@ -119,7 +119,7 @@ TEST(SkyHierarchy, TraditionalOvercastClosedForm)
 {
   // E = 7 pi Lz / 9 for L = Lz (1 + 2 cos Z) / 3.
   const SkyHierarchy sky(CieOvercastSky(), 100.0, 6);
-  EXPECT_NEAR(sky.radianceScale() * 7.0 * M_PI / 9.0, 100.0, 1e-9);
+  EXPECT_NEAR(sky.radianceScale() * 7.0 * pi / 9.0, 100.0, 1e-9);
   EXPECT_NEAR(mapHorizontalIrradiance(sky), 100.0, 0.05);
 }
 

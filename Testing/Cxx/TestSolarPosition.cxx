@@ -1,5 +1,6 @@
 // Engine tests: ISO 8601 instants, NREL SPA solar position, clear-sky irradiance.
 #include "clear_sky.h"
+#include "angles.h"
 #include "date_time.h"
 #include "error.h"
 #include "solar_position.h"
@@ -234,7 +235,7 @@ TEST(ClearSky, ModelsAgreeAndBehave)
     EXPECT_GT(esra.diffuseHorizontalWm2, 0.05 * esra.globalHorizontalWm2);
     EXPECT_LT(esra.diffuseHorizontalWm2, 0.35 * esra.globalHorizontalWm2);
     EXPECT_NEAR(esra.globalHorizontalWm2,
-      esra.directNormalWm2 * std::cos(zenith * M_PI / 180) + esra.diffuseHorizontalWm2, 1e-9);
+      esra.directNormalWm2 * std::cos(zenith * pi / 180) + esra.diffuseHorizontalWm2, 1e-9);
   }
   // A clear sky at sea level with the sun at 30 deg zenith: global 800..1000 W/m^2.
   const ClearSkyIrradiance noon = esraClearSky(60.0, 0.0, 3.0, i0);

@@ -2,6 +2,7 @@
 // sunrise and sunset inside a step, judged against the astronomical day length; the
 // cumulative sky against the sum of its skies.
 #include "cie_sky.h"
+#include "angles.h"
 #include "cumulative_sky.h"
 #include "date_time.h"
 #include "error.h"
@@ -18,7 +19,6 @@
 namespace
 {
 using namespace terralux;
-constexpr double degree = 3.14159265358979323846 / 180.0;
 
 SolarSite siteAt(double latitude, double longitude)
 {

@@ -3,6 +3,7 @@
 // cosine-weighted rays over the whole hemisphere, which know nothing of horizons.
 
 #include "cie_sky.h"
+#include "angles.h"
 #include "horizon_map.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
@@ -25,8 +26,6 @@ using namespace terralux_test;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double degree = pi / 180.0;
 
 RadiosityScene sceneOf(const TerrainGrid& grid)
 {

@@ -3,6 +3,7 @@
 // hand-built refinement patterns, leaf-mesh continuity, and solutions on planes, a
 // hill, a vertical step and a terrain with a hole against closed forms.
 #include "sky_hierarchy.h"
+#include "angles.h"
 #include "solver.h"
 #include "terrain_edges.h"
 #include "terrain_grids.h"
@@ -24,7 +25,6 @@ using namespace terralux_test;
 
 namespace
 {
-constexpr double degree = M_PI / 180.0;
 
 TerrainPatch* child(TerrainPatch* patch, double u0, double v0)
 {
@@ -302,7 +302,7 @@ void forEachPost(const HierarchicalRadiosity& solver, const TerrainGrid& grid, C
 TEST(TerrainHierarchy, FlatAndTiltedPlanesAgainstClosedForms)
 {
   const double radiance = 30.0, sunFlux = 900.0;
-  const SkyHierarchy sky(UniformSky(), M_PI * radiance, 7);
+  const SkyHierarchy sky(UniformSky(), pi * radiance, 7);
   const Vec3 sun = glm::normalize(Vec3(0.2, -0.4, 0.7));
   for (double slope : { 0.0, 30.0 })
   {
@@ -323,7 +323,7 @@ TEST(TerrainHierarchy, FlatAndTiltedPlanesAgainstClosedForms)
     EXPECT_LT(coarse.statistics().elements, 2048u / 4u);
     const Vec3 normal = glm::normalize(Vec3(0.0, -t, 1.0));
     const double expectedSun = sunFlux * glm::dot(normal, sun);
-    const double expectedSky = M_PI * radiance * (1.0 + std::cos(slope * degree)) / 2.0;
+    const double expectedSky = pi * radiance * (1.0 + std::cos(slope * degree)) / 2.0;
     forEachPost(solver, *grid, [&](int i, int j, const PointIrradiance& e) {
       // A plane neither shadows nor lights itself, however coarse its patches.
       EXPECT_NEAR(e.irradiance[SunLight][0], expectedSun, 1e-6 * sunFlux) << slope << " at " << i << ", " << j;
@@ -349,7 +349,7 @@ TEST(TerrainHierarchy, GaussianHillAgainstClosedFormsOnItsConvexTop)
   const auto grid = makeGrid(65, 65, 5.0, height);
   RadiosityScene scene;
   scene.terrains.push_back(grid.get());
-  const SkyHierarchy sky(UniformSky(), M_PI * radiance, 7);
+  const SkyHierarchy sky(UniformSky(), pi * radiance, 7);
   const Vec3 sun = glm::normalize(Vec3(std::cos(60 * degree), 0.0, std::sin(60 * degree)));
   // The foot's view of the slopes carries little of the scene's power: a fine tolerance
   // keeps those links.
@@ -366,7 +366,7 @@ TEST(TerrainHierarchy, GaussianHillAgainstClosedFormsOnItsConvexTop)
     if (r < 0.5 * sigma)
     {
       ++top;
-      EXPECT_NEAR(e.irradiance[SkyLight][0] / (M_PI * radiance * (1.0 + n.z) / 2.0), 1.0, 0.01);
+      EXPECT_NEAR(e.irradiance[SkyLight][0] / (pi * radiance * (1.0 + n.z) / 2.0), 1.0, 0.01);
       EXPECT_NEAR(e.skyViewFactor, (1.0 + n.z) / 2.0, 0.01);
     }
     if (std::abs(r - 2.0 * sigma) < 5.0)

@@ -4,6 +4,7 @@
 // exact value.
 #include "path_tracer.h"
 
+#include "angles.h"
 #include "cie_sky.h"
 #include "radiosity_scenes.h"
 #include "sky_hierarchy.h"
@@ -21,7 +22,7 @@ using terralux_test::addPolygon;
 
 namespace
 {
-constexpr double degree = M_PI / 180.0;
+using terralux::degree;
 
 terralux::SkyHierarchy uniformSky(double diffuse)
 {
