@@ -56,6 +56,7 @@ vtkTerrainSource::vtkTerrainSource()
   , Band(1)
   , PixelWindow{ 0, 0, 0, 0 }
   , GeoBounds{ 0.0, 0.0, 0.0, 0.0 }
+  , UseGeoBounds(0)
   , Stride(1)
   , GeoOrigin{ 0.0, 0.0, 0.0 }
   , UseGeoOrigin(0)
@@ -105,15 +106,13 @@ void vtkTerrainSource::ResolveRasterRequest(RasterRequest& request)
   request.raster = std::make_unique<terralux::DemRaster>(this->FileName ? this->FileName : "", this->Band);
   const terralux::RasterInfo& info = request.raster->info();
   const bool useWindow = this->PixelWindow[2] > 0 && this->PixelWindow[3] > 0;
-  // GeoBounds is unset while all four values are 0; anything else must be a valid box.
-  const bool useBounds = !(this->GeoBounds[0] == 0.0 && this->GeoBounds[1] == 0.0 && this->GeoBounds[2] == 0.0 &&
-    this->GeoBounds[3] == 0.0);
+  const bool useBounds = this->UseGeoBounds != 0;
   std::ostringstream message;
 
   if (useWindow && useBounds)
   {
     throw terralux::Error("both PixelWindow and GeoBounds are set: use one of them "
-                          "(SetPixelWindow(0, 0, 0, 0) or SetGeoBounds(0, 0, 0, 0) clears it)");
+                          "(SetPixelWindow(0, 0, 0, 0) or UseGeoBoundsOff() clears it)");
   }
   if (useBounds)
   {
@@ -172,7 +171,8 @@ int vtkTerrainSource::RequestInformation(
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int extent[6] = { 0, -1, 0, -1, 0, -1 };
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* inInfo =
+    this->GetNumberOfInputPorts() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
   if (inInfo)
   {
     int inputExtent[6];
@@ -207,7 +207,7 @@ int vtkTerrainSource::RequestUpdateExtent(vtkInformation*, vtkInformationVector*
 {
   // A height-field image is converted whole, whatever is asked of the output, whose
   // extent starts at 0 where the image's need not: ask for the image's own extent.
-  vtkTerraLuxFieldData::RequestWholeInputs(inputVector, 1);
+  vtkTerraLuxFieldData::RequestWholeInputs(inputVector, this->GetNumberOfInputPorts());
   return 1;
 }
 
@@ -408,7 +408,7 @@ int vtkTerrainSource::RequestData(
 {
   vtkStructuredGrid* output = vtkStructuredGrid::GetData(outputVector, 0);
   output->Initialize();
-  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkImageData* input = this->GetNumberOfInputPorts() > 0 ? vtkImageData::GetData(inputVector[0], 0) : nullptr;
 
   bool ok = false;
   try
@@ -419,6 +419,10 @@ int vtkTerrainSource::RequestData(
     }
     else
     {
+      const double* b = this->GeoBounds;
+      if (!this->UseGeoBounds && (b[0] != 0.0 || b[1] != 0.0 || b[2] != 0.0 || b[3] != 0.0))
+        vtkWarningMacro("GeoBounds is set but UseGeoBounds is off: the whole raster is read. "
+                        "Call UseGeoBoundsOn() to read the box only.");
       // The piece asked for (UPDATE_EXTENT, ghost posts included) and the same piece
       // without ghost levels, which its posts beyond are marked against.
       vtkInformation* outInfo = outputVector->GetInformationObject(0);
@@ -454,7 +458,7 @@ int vtkTerrainSource::RequestData(
   catch (const std::bad_alloc&)
   {
     vtkErrorMacro("Out of memory reading the DEM: use SetStride(), SetPixelWindow() or "
-                  "SetGeoBounds() to read fewer posts.");
+                  "GeoBounds (with UseGeoBoundsOn()) to read fewer posts.");
     ok = false;
   }
   if (!ok)
@@ -474,6 +478,7 @@ void vtkTerrainSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Band: " << this->Band << "\n";
   os << indent << "PixelWindow: (" << this->PixelWindow[0] << ", " << this->PixelWindow[1] << ", "
      << this->PixelWindow[2] << ", " << this->PixelWindow[3] << ")\n";
+  os << indent << "UseGeoBounds: " << this->UseGeoBounds << "\n";
   os << indent << "GeoBounds: (" << this->GeoBounds[0] << ", " << this->GeoBounds[1] << ", "
      << this->GeoBounds[2] << ", " << this->GeoBounds[3] << ")\n";
   os << indent << "Stride: " << this->Stride << "\n";

@@ -114,13 +114,24 @@ public:
 
   ///@{
   /**
-   * Set/Get a geographic box (south, north, west, east) in WGS84 degrees; the output
-   * covers the raster's pixels that overlap it. Any value other than (0, 0, 0, 0) must
-   * be a box (south < north in [-90, 90], west < east), else RequestData fails; cannot
-   * be combined with a PixelWindow. Default is (0, 0, 0, 0): unused.
+   * Set/Get a geographic box (south, north, west, east) in WGS84 degrees; with
+   * UseGeoBounds on, the output covers the raster's pixels that overlap it, and it must
+   * be a box (south < north in [-90, 90], west < east), else RequestData fails; it
+   * cannot be combined with a PixelWindow. Default is (0, 0, 0, 0).
    */
   vtkSetVector4Macro(GeoBounds, double);
   vtkGetVector4Macro(GeoBounds, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get whether GeoBounds selects the posts; off reads the whole raster (or the
+   * PixelWindow), with a warning if GeoBounds was set to something else than its
+   * default. Default is off.
+   */
+  vtkSetMacro(UseGeoBounds, vtkTypeBool);
+  vtkGetMacro(UseGeoBounds, vtkTypeBool);
+  vtkBooleanMacro(UseGeoBounds, vtkTypeBool);
   ///@}
 
   ///@{
@@ -181,6 +192,7 @@ protected:
   int Band;
   int PixelWindow[4];
   double GeoBounds[4];
+  vtkTypeBool UseGeoBounds;
   int Stride;
   double GeoOrigin[3];
   vtkTypeBool UseGeoOrigin;

@@ -20,6 +20,10 @@ public:
   /// Transport toward a surface of unit normal n per unit emittance: R S for the sun
   /// (the cosine), R S Omega for a sky patch (its projected solid angle, radiance-weighted).
   virtual double kernel(const Vec3& normal) const = 0;
+  /// Transport toward a surface element of unit normal n: kernel(n) for a source with
+  /// extent; for a parallel one the receiver's own factor, which for a coarse terrain
+  /// patch is its cells' mean cosine, not the cosine of its mean normal.
+  virtual double kernelToward(const HElement& receiver, const Vec3& normal) const = 0;
   /// Transport toward a cluster, whose surfaces weigh their own cosines later (paper
   /// section 5.1): 1 for the sun, the solid angle for a sky patch.
   virtual double directionalKernel() const = 0;

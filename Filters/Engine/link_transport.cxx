@@ -216,7 +216,7 @@ double surfaceKernel(const PolygonElement& receiver, const HElement& sender, dou
 double kernelAtSurface(const PolygonElement& receiver, HElement& sender)
 {
   if (const ExternalSource* source = sender.asExternal())
-    return source->kernel(receiver.normal());
+    return source->kernelToward(receiver, receiver.normal());
   return surfaceKernel(receiver, sender);
 }
 
@@ -356,7 +356,7 @@ Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibi
     // R S Omega for a sky patch toward a surface counts only the part of the patch above
     // the surface's horizon; a cluster weighs its surfaces' cosines later.
     link.kernel = link.directional ? source->directionalKernel()
-                                   : source->kernel(static_cast<PolygonElement&>(receiver).normal());
+                                   : source->kernelToward(receiver, static_cast<PolygonElement&>(receiver).normal());
     link.kernelSpread = cosineSpread(receiver) * source->directionalKernel();
     if (link.kernel > 0.0)
       link.visibility = sampledVisibility(receiver, sender, visibility, samples);

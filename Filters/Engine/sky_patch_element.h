@@ -24,6 +24,7 @@ public:
 
   double solidAngle() const { return this->SolidAngle; }
   const Vec3& direction() const override { return this->Direction; }
+  double kernelToward(const HElement&, const Vec3& normal) const override { return this->kernel(normal); }
   double directionalKernel() const override { return this->SolidAngle; }
   bool parallel() const override { return false; }
   LightCategory category() const override { return SkyLight; }

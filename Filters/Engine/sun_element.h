@@ -27,6 +27,10 @@ public:
 
   const Vec3& direction() const override { return this->Direction; }
   double kernel(const Vec3& normal) const override { return std::max(0.0, glm::dot(normal, this->Direction)); }
+  double kernelToward(const HElement& receiver, const Vec3&) const override
+  {
+    return receiver.receiverFactor(this->Direction);
+  }
   double directionalKernel() const override { return 1.0; }
   Vec3 sampleDirection(SampleGenerator&) const override { return this->Direction; }
   bool parallel() const override { return true; }

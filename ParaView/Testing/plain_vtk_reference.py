@@ -87,7 +87,7 @@ def irradiation(terrain, integrate=True):
 
 def main(dem, out):
     os.makedirs(out, exist_ok=True)
-    classes = [terralux.vtkTerrainSource, terralux.vtkSunSource, terralux.vtkSkySource,
+    classes = [terralux.vtkTerrainReader, terralux.vtkSunSource, terralux.vtkSkySource,
                terralux.vtkHierarchicalRadiosity, terralux.vtkSolarIrradiation,
                terralux.vtkTerrainRasterWriter]
     with open(os.path.join(out, "defaults.json"), "w") as f:

@@ -131,7 +131,7 @@ class PluginPipeline(unittest.TestCase):
 class PluginProxies(unittest.TestCase):
     """Every proxy's defaults are its class's own, and every parameter is offered."""
 
-    PROXIES = {"TerrainSource": "vtkTerrainSource", "SunSource": "vtkSunSource",
+    PROXIES = {"TerrainSource": "vtkTerrainReader", "SunSource": "vtkSunSource",
                "SkySource": "vtkSkySource", "HierarchicalRadiosity": "vtkHierarchicalRadiosity",
                "SolarIrradiation": "vtkSolarIrradiation"}
 

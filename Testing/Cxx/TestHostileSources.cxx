@@ -196,6 +196,7 @@ TEST(HostileSources, BadBoxesAndSpacingsAreRefused)
     vtkNew<vtkTerrainSource> terrain;
     terrain->SetFileName(path.c_str());
     terrain->SetGeoBounds(b[0], b[1], b[2], b[3]);
+    terrain->UseGeoBoundsOn();
     vtkNew<MessageCatcher> messages;
     EXPECT_EQ(runPipeline(terrain, messages), 0) << b[0] << " " << b[1];
     EXPECT_NE(messages->Errors.find("not a geographic box"), std::string::npos) << messages->Errors;

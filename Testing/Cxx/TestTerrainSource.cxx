@@ -13,6 +13,7 @@
 #include "vtkPointData.h"
 #include "vtkStringArray.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTerrainReader.h"
 #include "vtkTerrainSource.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -300,12 +301,24 @@ TEST(TerrainSource, WindowStrideAndGeoBoundsSubsetTheSamePosts)
   double lat, lon;
   GeographicLib::UTMUPS::Reverse(32, true, 380000.0 + 20.5 * 30.0, 5080000.0 - 15.5 * 30.0, lat, lon);
   box.source->SetGeoBounds(lat - 0.001, lat + 0.001, lon - 0.001, lon + 0.001);
+  box.source->UseGeoBoundsOn();
   ASSERT_EQ(box.run(), 1) << box.messages->Errors;
   box.output()->GetDimensions(dims);
   EXPECT_GE(dims[0], 6); // ~ 157 m of longitude / 30 m
   EXPECT_LE(dims[0], 8);
   EXPECT_GE(dims[1], 8); // ~ 222 m of latitude / 30 m
   EXPECT_LE(dims[1], 10);
+
+  // UseGeoBoundsOff returns to the whole raster, saying the box is set but unused; a
+  // box of zeros in use is refused as no box (zeros are no sentinel).
+  box.source->UseGeoBoundsOff();
+  ASSERT_EQ(box.run(), 1) << box.messages->Errors;
+  EXPECT_EQ(box.output()->GetNumberOfPoints(), full.output()->GetNumberOfPoints());
+  EXPECT_NE(box.messages->Warnings.find("UseGeoBounds is off"), std::string::npos);
+  box.source->SetGeoBounds(0.0, 0.0, 0.0, 0.0);
+  box.source->UseGeoBoundsOn();
+  EXPECT_EQ(box.run(), 0);
+  EXPECT_NE(box.messages->Errors.find("not a geographic box"), std::string::npos);
 }
 
 TEST(TerrainSource, RasterWithoutCrsIsLocalMetresWithAWarning)
@@ -413,6 +426,36 @@ TEST(TerrainSource, OlindaDem)
   EXPECT_NEAR(std::hypot(p1[0] - p0[0], p1[1] - p0[1]), 110 * 89.994067 / scale, 0.5);
   // gamma is the bearing of grid north, so grid east turns by -gamma from true east.
   EXPECT_NEAR(std::atan2(p1[1] - p0[1], p1[0] - p0[0]) * 180 / M_PI, -convergence, 0.005);
+}
+
+// vtkTerrainReader is the file path alone, as a reader: no input port, the source's
+// posts and field data, and CanReadFile for ParaView's reader factory.
+TEST(TerrainReader, ReadsWhatTheSourceReadsWithoutAnInputPort)
+{
+  const std::string path = terralux_test::externalDataDir() + "/olinda_dem_utm25s.tif";
+  Terrain terrain;
+  runDouble(terrain, path);
+  vtkNew<vtkTerrainReader> reader;
+  EXPECT_EQ(reader->GetNumberOfInputPorts(), 0);
+  EXPECT_EQ(reader->CanReadFile(path.c_str()), 1);
+  EXPECT_EQ(reader->CanReadFile((terralux_test::externalDataDir() + "/no_such.tif").c_str()), 0);
+  EXPECT_EQ(reader->CanReadFile(nullptr), 0);
+  reader->SetFileName(path.c_str());
+  reader->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  vtkNew<MessageCatcher> messages;
+  ASSERT_EQ(runPipeline(reader, messages), 1) << messages->Errors;
+  vtkStructuredGrid* read = reader->GetOutput();
+  ASSERT_EQ(read->GetNumberOfPoints(), terrain.output()->GetNumberOfPoints());
+  for (vtkIdType k = 0; k < read->GetNumberOfPoints(); k += 97)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(read->GetPoint(k)[c], terrain.output()->GetPoint(k)[c]);
+  for (int k = 0; k < 6; ++k)
+    EXPECT_EQ(fieldValue(read, "GeoTransform", k), fieldValue(terrain.output(), "GeoTransform", k));
+  // A bad file: the source's error, output empty.
+  reader->SetFileName("no_such_dem.tif");
+  EXPECT_EQ(runPipeline(reader, messages), 0);
+  EXPECT_NE(messages->Errors.find("does not exist"), std::string::npos);
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 TEST(TerrainSource, LuxembourgDemWithNoData)
@@ -577,16 +620,19 @@ TEST(TerrainSourceBadInput, EmptyWindows)
   Terrain box;
   box.source->SetFileName(path.c_str());
   box.source->SetGeoBounds(10.0, 11.0, 20.0, 21.0);
+  box.source->UseGeoBoundsOn();
   expectFailure(box, "does not overlap");
 
   Terrain inverted;
   inverted.source->SetFileName(path.c_str());
   inverted.source->SetGeoBounds(45.0, 46.0, 8.0, 7.0);
+  inverted.source->UseGeoBoundsOn();
   expectFailure(inverted, "not a geographic box");
 
   Terrain both;
   both.source->SetFileName(path.c_str());
   both.source->SetGeoBounds(45.0, 46.0, 7.0, 8.0);
+  both.source->UseGeoBoundsOn();
   both.source->SetPixelWindow(0, 0, 5, 5);
   expectFailure(both, "both PixelWindow and GeoBounds");
 
