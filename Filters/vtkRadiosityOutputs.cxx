@@ -15,11 +15,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkStructuredGrid.h"
 
-#include "bf_oracle.h"
-#include "cluster.h"
 #include "polygon_element.h"
-#include "sky_patch_element.h"
 #include "solver.h"
+#include "polygon_leaf_mesh.h"
 #include "terrain_mesh.h"
 #include "terrain_patch.h"
 
@@ -75,17 +73,6 @@ void accumulate(Values& sum, const Values& v, double weight)
   for (int q = 0; q < quantities; ++q)
     for (int band = 0; band < terralux::maxBands; ++band)
       sum[q][band] += weight * v[q][band];
-}
-
-void collectLeaves(terralux::PolygonElement* element, std::vector<terralux::PolygonElement*>& leaves)
-{
-  if (!element->hasChildren())
-  {
-    leaves.push_back(element);
-    return;
-  }
-  for (terralux::HElement* child : element->children())
-    collectLeaves(static_cast<terralux::PolygonElement*>(child), leaves);
 }
 
 // The leaf below `root` that has `corner` as one of its corners.
@@ -151,18 +138,19 @@ vtkSmartPointer<vtkDoubleArray> scalarArray(const char* name, vtkIdType count)
 constexpr int skyViewComponent = quantities * terralux::maxBands;
 constexpr int valueComponents = skyViewComponent + 1;
 
-// Leaf values flattened for TerrainLeafMesh: quantity-major, then band; the sky view
+// Leaf values flattened for the leaf meshes: quantity-major, then band; the sky view
 // factor last.
-std::vector<double> flatLeafValues(const terralux::TerrainLeafMesh& mesh)
+template <typename Leaf>
+std::vector<double> flatLeafValues(const std::vector<const Leaf*>& leaves)
 {
-  std::vector<double> flat(mesh.leaves().size() * valueComponents);
-  for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
+  std::vector<double> flat(leaves.size() * valueComponents);
+  for (std::size_t k = 0; k < leaves.size(); ++k)
   {
-    const Values v = valuesOf(*mesh.leaves()[k]);
+    const Values v = valuesOf(*leaves[k]);
     for (int q = 0; q < quantities; ++q)
       for (int band = 0; band < terralux::maxBands; ++band)
         flat[k * valueComponents + q * terralux::maxBands + band] = v[q][band];
-    flat[k * valueComponents + skyViewComponent] = mesh.leaves()[k]->SkyViewFactor;
+    flat[k * valueComponents + skyViewComponent] = leaves[k]->SkyViewFactor;
   }
   return flat;
 }
@@ -227,7 +215,7 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
       // Sky and reflected light vary slowly: interpolated from the continuous leaf mesh.
       // Direct sun does not, and costs one ray: taken at each post with its own normal.
       const terralux::TerrainLeafMesh mesh(*root);
-      const std::vector<double> vertexValues = mesh.vertexValues(flatLeafValues(mesh), valueComponents);
+      const std::vector<double> vertexValues = mesh.vertexValues(flatLeafValues(mesh.leaves()), valueComponents);
       vtkSMPTools::For(0, static_cast<vtkIdType>(mesh.leaves().size()), [&](vtkIdType first, vtkIdType last) {
         double flat[valueComponents];
         for (vtkIdType k = first; k < last; ++k)
@@ -274,10 +262,6 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
   output->GetPointData()->SetActiveScalars(quantityNames[0]);
 }
 
-struct PositionHash
-{
-  std::size_t operator()(const Vec3& p) const { return terralux::hashPosition(p); }
-};
 } // namespace
 
 void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& solver,
@@ -501,88 +485,37 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
 void vtkRadiosityOutputs::BuildLeafMesh(
   const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output)
 {
-  std::vector<terralux::PolygonElement*> leaves;
-  for (terralux::PolygonElement* root : solver.polygonRoots())
-    if (root)
-      collectLeaves(root, leaves);
-
-  std::unordered_map<Vec3, vtkIdType, PositionHash> index;
+  // The engine's leaf meshes, continuous across T-vertices: the polygons', then each
+  // terrain's; their vertex values flattened as flatLeafValues lays them out.
   std::vector<Vec3> positions;
-  std::vector<Values> values;
-  std::vector<double> weights, skyViews;
+  std::vector<double> vertexValues;
   vtkNew<vtkCellArray> polygons;
   vtkNew<vtkIntArray> level;
   level->SetName("Level");
-  for (terralux::PolygonElement* leaf : leaves)
-  {
-    vtkIdType ids[4];
-    const Values v = valuesOf(*leaf);
-    for (int c = 0; c < leaf->cornerCount(); ++c)
-    {
-      auto [it, added] = index.emplace(leaf->corners()[c], static_cast<vtkIdType>(positions.size()));
-      if (added)
-      {
-        positions.push_back(leaf->corners()[c]);
-        values.emplace_back();
-        weights.push_back(0.0);
-        skyViews.push_back(0.0);
-      }
-      ids[c] = it->second;
-      accumulate(values[it->second], v, averagingWeight(*leaf));
-      weights[it->second] += averagingWeight(*leaf);
-      skyViews[it->second] += averagingWeight(*leaf) * leaf->SkyViewFactor;
-    }
-    polygons->InsertNextCell(leaf->cornerCount(), ids);
-    level->InsertNextValue(leaf->level());
-  }
-  for (std::size_t k = 0; k < values.size(); ++k)
-  {
-    Values normalised{};
-    accumulate(normalised, values[k], 1.0 / weights[k]);
-    values[k] = normalised;
-    skyViews[k] /= weights[k];
-  }
-
-  // T-vertices: a vertex in the middle of a coarser leaf's edge takes the value linear
-  // interpolation along that edge gives, coarse leaves first, so shading is continuous.
-  std::sort(leaves.begin(), leaves.end(),
-    [](const terralux::PolygonElement* a, const terralux::PolygonElement* b) { return a->area() > b->area(); });
-  std::function<void(vtkIdType, vtkIdType)> anchor = [&](vtkIdType a, vtkIdType b) {
-    const auto it = index.find(0.5 * (positions[a] + positions[b]));
-    // In floating point the midpoint of two (nearly) equal corners is one of them.
-    if (it == index.end() || it->second == a || it->second == b)
-      return;
-    Values mid{};
-    accumulate(mid, values[a], 0.5);
-    accumulate(mid, values[b], 0.5);
-    values[it->second] = mid;
-    skyViews[it->second] = 0.5 * (skyViews[a] + skyViews[b]);
-    anchor(a, it->second);
-    anchor(it->second, b);
+  auto appendVertices = [&](std::size_t count, const std::function<Vec3(std::size_t)>& positionOf,
+                          const std::vector<double>& values) {
+    for (std::size_t k = 0; k < count; ++k)
+      positions.push_back(positionOf(k));
+    vertexValues.insert(vertexValues.end(), values.begin(), values.end());
   };
-  for (terralux::PolygonElement* leaf : leaves)
-    for (int c = 0; c < leaf->cornerCount(); ++c)
-      anchor(index[leaf->corners()[c]], index[leaf->corners()[(c + 1) % leaf->cornerCount()]]);
-
-  // Terrains: their leaf meshes, already continuous (T-vertices from generic edges).
+  std::vector<vtkIdType> ids;
+  const terralux::PolygonLeafMesh polygonMesh(solver.polygonRoots());
+  appendVertices(polygonMesh.vertexCount(), [&](std::size_t k) { return polygonMesh.position(k); },
+    polygonMesh.vertexValues(flatLeafValues(polygonMesh.leaves()), valueComponents));
+  for (std::size_t k = 0; k < polygonMesh.leaves().size(); ++k)
+  {
+    ids.assign(polygonMesh.corners(k).begin(), polygonMesh.corners(k).begin() + polygonMesh.leaves()[k]->cornerCount());
+    polygons->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    level->InsertNextValue(polygonMesh.leaves()[k]->level());
+  }
   for (const terralux::TerrainPatch* root : solver.terrainRoots())
   {
     if (!root)
       continue;
     const terralux::TerrainLeafMesh mesh(*root);
-    const std::vector<double> vertexValues = mesh.vertexValues(flatLeafValues(mesh), valueComponents);
     const vtkIdType first = static_cast<vtkIdType>(positions.size());
-    for (std::size_t k = 0; k < mesh.vertexCount(); ++k)
-    {
-      positions.push_back(mesh.position(k));
-      Values v{};
-      for (int q = 0; q < quantities; ++q)
-        for (int band = 0; band < terralux::maxBands; ++band)
-          v[q][band] = vertexValues[k * valueComponents + q * terralux::maxBands + band];
-      values.push_back(v);
-      skyViews.push_back(vertexValues[k * valueComponents + skyViewComponent]);
-    }
-    std::vector<vtkIdType> ids;
+    appendVertices(mesh.vertexCount(), [&](std::size_t k) { return mesh.position(k); },
+      mesh.vertexValues(flatLeafValues(mesh.leaves()), valueComponents));
     for (std::size_t k = 0; k < mesh.leaves().size(); ++k)
     {
       ids.clear();
@@ -593,17 +526,23 @@ void vtkRadiosityOutputs::BuildLeafMesh(
     }
   }
 
+  const vtkIdType count = static_cast<vtkIdType>(positions.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
-  const auto arrays = makeArrays(bands, static_cast<vtkIdType>(positions.size()));
-  const auto skyViewFactor = withSky ? scalarArray(vtkRadiosityOutputs::SkyViewFactorName(), static_cast<vtkIdType>(positions.size())) : nullptr;
-  for (std::size_t k = 0; k < positions.size(); ++k)
+  points->SetNumberOfPoints(count);
+  const auto arrays = makeArrays(bands, count);
+  const auto skyViewFactor = withSky ? scalarArray(vtkRadiosityOutputs::SkyViewFactorName(), count) : nullptr;
+  for (vtkIdType k = 0; k < count; ++k)
   {
-    points->SetPoint(static_cast<vtkIdType>(k), positions[k].x, positions[k].y, positions[k].z);
-    store(arrays, static_cast<vtkIdType>(k), values[k], bands);
+    points->SetPoint(k, positions[k].x, positions[k].y, positions[k].z);
+    const double* vertex = vertexValues.data() + k * valueComponents;
+    Values v{};
+    for (int q = 0; q < quantities; ++q)
+      for (int band = 0; band < terralux::maxBands; ++band)
+        v[q][band] = vertex[q * terralux::maxBands + band];
+    store(arrays, k, v, bands);
     if (skyViewFactor)
-      skyViewFactor->SetValue(static_cast<vtkIdType>(k), skyViews[k]);
+      skyViewFactor->SetValue(k, vertex[skyViewComponent]);
   }
   output->SetPoints(points);
   output->SetPolys(polygons);
