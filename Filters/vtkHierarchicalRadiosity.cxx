@@ -72,8 +72,6 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , ConvergenceTolerance(1e-3)
   , MaximumNumberOfElements(1000000)
   , DefaultReflectance(0.2)
-  , ReflectanceArrayName(nullptr)
-  , EmissionArrayName(nullptr)
   , UseTerrainHierarchy(1)
   , SkyFromHorizons(1)
   , EvaluateAtPoints(1)
@@ -87,8 +85,6 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
 //------------------------------------------------------------------------------
 vtkHierarchicalRadiosity::~vtkHierarchicalRadiosity()
 {
-  this->SetReflectanceArrayName(nullptr);
-  this->SetEmissionArrayName(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -127,6 +123,40 @@ vtkPolyData* vtkHierarchicalRadiosity::GetLeafMeshOutput()
 vtkPolyData* vtkHierarchicalRadiosity::GetLinksOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(2));
+}
+
+//------------------------------------------------------------------------------
+void vtkHierarchicalRadiosity::SetCellArrayToProcess(int index, const char* name)
+{
+  const char* current = this->GetInputArrayInformation(index)->Get(vtkDataObject::FIELD_NAME());
+  const std::string wanted = name ? name : "";
+  if (wanted == (current ? current : ""))
+    return;
+  this->SetInputArrayToProcess(index, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, wanted.c_str());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkHierarchicalRadiosity::CellArrayToProcess(int index)
+{
+  vtkInformation* info = this->GetInputArrayInformation(index);
+  const char* name = info->Get(vtkDataObject::FIELD_NAME());
+  if (!name || !*name)
+    return nullptr;
+  return name;
+}
+
+//------------------------------------------------------------------------------
+void vtkHierarchicalRadiosity::CheckCellArraysToProcess()
+{
+  for (int index : { ReflectanceArray, EmissionArray })
+  {
+    vtkInformation* info = this->GetInputArrayInformation(index);
+    if (this->CellArrayToProcess(index) && info->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+      info->Get(vtkDataObject::FIELD_ASSOCIATION()) != vtkDataObject::FIELD_ASSOCIATION_CELLS)
+      throw terralux::Error(std::string("the ") + (index == ReflectanceArray ? "reflectance" : "emission") +
+        " array '" + this->CellArrayToProcess(index) + "' must be a cell array: call SetInputArrayToProcess(" +
+        std::to_string(index) + ", 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, name)");
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -250,12 +280,13 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
     { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
     { "DefaultReflectance", this->DefaultReflectance }, { "GatherError", this->GatherError } });
+  this->CheckCellArraysToProcess();
   vtkRadiosityScene scene;
   const std::vector<vtkDataSet*> inputs = inputDataSets(inputVector[0]);
   for (vtkDataSet* input : inputs)
   {
-    scene.AddDataSet(input, this->DefaultReflectance, this->ReflectanceArrayName, this->EmissionArrayName,
-      this->UseTerrainHierarchy != 0);
+    scene.AddDataSet(input, this->DefaultReflectance, this->CellArrayToProcess(ReflectanceArray),
+      this->CellArrayToProcess(EmissionArray), this->UseTerrainHierarchy != 0);
   }
   if (!this->AddLights(inputVector, scene) && !scene.HasEmission)
   {
@@ -437,8 +468,10 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";
   os << indent << "DefaultReflectance: " << this->DefaultReflectance << "\n";
-  os << indent << "ReflectanceArrayName: " << (this->ReflectanceArrayName ? this->ReflectanceArrayName : "(none)") << "\n";
-  os << indent << "EmissionArrayName: " << (this->EmissionArrayName ? this->EmissionArrayName : "(none)") << "\n";
+  const char* reflectance = this->GetReflectanceArrayName();
+  const char* emission = this->GetEmissionArrayName();
+  os << indent << "ReflectanceArrayName: " << (reflectance ? reflectance : "(none)") << "\n";
+  os << indent << "EmissionArrayName: " << (emission ? emission : "(none)") << "\n";
   os << indent << "EvaluateAtPoints: " << (this->EvaluateAtPoints ? "On" : "Off") << "\n";
   os << indent << "NumberOfBands: " << this->NumberOfBands << "\n";
   os << indent << "PostNormals: " << (this->PostNormals == HORN_NORMALS ? "Horn" : "AreaWeighted") << "\n";

@@ -13,8 +13,10 @@
  * 2-D vtkStructuredGrid (e.g. vtkTerrainSource output; a terrain: terrain patches of
  * paper section 4 over its visible cells, or with UseTerrainHierarchy off two
  * triangles per cell) or a composite data set of them. Reflectance per cell from the cell
- * array ReflectanceArrayName (1 or 3 components) or DefaultReflectance; optional
- * emission (radiosity, W/m^2) from EmissionArrayName.
+ * array to process 0 (1 or 3 components) or DefaultReflectance; optional emission
+ * (radiosity, W/m^2) from the cell array to process 1: SetInputArrayToProcess(0 or 1,
+ * 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, name), which ParaView's array lists
+ * set, or SetReflectanceArrayName / SetEmissionArrayName, which do the same.
  * Input port 1 (optional, repeatable): the light sources, vtkSkySource output 0 (its
  * radiance map) and vtkSunSource output. Every source connected counts: several suns
  * add their light, several skies are summed into one sky.
@@ -189,12 +191,14 @@ public:
   ///@{
   /**
    * Set/Get the names of the cell arrays holding reflectance (values in [0, 1)) and
-   * emitted radiosity (W/m^2, >= 0), 1 or 3 components. Default is nullptr: none.
+   * emitted radiosity (W/m^2, >= 0), 1 or 3 components: input arrays to process 0 and
+   * 1 (SetInputArrayToProcess with FIELD_ASSOCIATION_CELLS), named. Default is
+   * nullptr: none (DefaultReflectance, no emission); nullptr or "" clears it.
    */
-  vtkSetStringMacro(ReflectanceArrayName);
-  vtkGetStringMacro(ReflectanceArrayName);
-  vtkSetStringMacro(EmissionArrayName);
-  vtkGetStringMacro(EmissionArrayName);
+  void SetReflectanceArrayName(const char* name) { this->SetCellArrayToProcess(ReflectanceArray, name); }
+  const char* GetReflectanceArrayName() { return this->CellArrayToProcess(ReflectanceArray); }
+  void SetEmissionArrayName(const char* name) { this->SetCellArrayToProcess(EmissionArray, name); }
+  const char* GetEmissionArrayName() { return this->CellArrayToProcess(EmissionArray); }
   ///@}
 
   ///@{
@@ -309,6 +313,18 @@ public:
   ///@}
 
 protected:
+  // The input arrays to process: reflectance and emission.
+  enum
+  {
+    ReflectanceArray = 0,
+    EmissionArray = 1
+  };
+  void SetCellArrayToProcess(int index, const char* name);
+  // The named array to process `index` (nullptr if none).
+  const char* CellArrayToProcess(int index);
+  // Throws terralux::Error naming the fix when an array to process is not a cell array.
+  void CheckCellArraysToProcess();
+
   vtkHierarchicalRadiosity();
   ~vtkHierarchicalRadiosity() override;
 
@@ -344,8 +360,6 @@ protected:
   double ConvergenceTolerance;
   vtkIdType MaximumNumberOfElements;
   double DefaultReflectance;
-  char* ReflectanceArrayName;
-  char* EmissionArrayName;
   vtkTypeBool UseTerrainHierarchy;
   vtkTypeBool SkyFromHorizons;
   vtkTypeBool EvaluateAtPoints;

@@ -204,6 +204,21 @@ TEST(RadiosityFilter, SeveralInputsAndBands)
   vtkDataArray* b = first->GetPointData()->GetArray("Radiosity");
   ASSERT_EQ(b->GetNumberOfComponents(), 3);
   EXPECT_NEAR(b->GetComponent(4, 2) / b->GetComponent(4, 0), 6.0, 1e-6); // 0.6 / 0.1
+
+  // The array chosen the VTK way (what ParaView's array lists call) is the same array.
+  const double named = b->GetComponent(4, 2);
+  radiosity->SetReflectanceArrayName(nullptr);
+  EXPECT_EQ(radiosity->GetReflectanceArrayName(), nullptr);
+  radiosity->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Albedo");
+  EXPECT_STREQ(radiosity->GetReflectanceArrayName(), "Albedo");
+  ASSERT_EQ(runPipeline(radiosity, messages), 1);
+  blocks = vtkMultiBlockDataSet::SafeDownCast(radiosity->GetOutput());
+  b = vtkPolyData::SafeDownCast(blocks->GetBlock(0))->GetPointData()->GetArray("Radiosity");
+  EXPECT_DOUBLE_EQ(b->GetComponent(4, 2), named);
+  // A point array is refused, naming the call that chooses a cell array.
+  radiosity->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Albedo");
+  EXPECT_EQ(runPipeline(radiosity, messages), 0);
+  EXPECT_NE(messages->Errors.find("must be a cell array"), std::string::npos) << messages->Errors;
 }
 
 namespace
