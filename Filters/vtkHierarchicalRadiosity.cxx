@@ -21,12 +21,19 @@
 
 #include "error.h"
 #include "finite_parameters.h"
+#include "scene_geometry.h"
 #include "solver.h"
 
 #include <chrono>
 #include <vector>
 
 vtkStandardNewMacro(vtkHierarchicalRadiosity);
+
+struct vtkHierarchicalRadiosity::GeometryCache
+{
+  std::unique_ptr<vtkRadiosityScene> Scene;
+  std::shared_ptr<terralux::SceneGeometry> Rays; // declared last: freed before the grids it shares
+};
 
 namespace
 {
@@ -74,6 +81,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , DefaultReflectance(0.2)
   , UseTerrainHierarchy(1)
   , SkyFromHorizons(1)
+  , ReuseGeometry(1)
   , EvaluateAtPoints(1)
   , NumberOfBands(1)
   , PostNormals(AREA_WEIGHTED_NORMALS)
@@ -281,7 +289,8 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
     { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
     { "DefaultReflectance", this->DefaultReflectance }, { "GatherError", this->GatherError } });
   this->CheckCellArraysToProcess();
-  vtkRadiosityScene scene;
+  auto ownScene = std::make_unique<vtkRadiosityScene>();
+  vtkRadiosityScene& scene = *ownScene;
   const std::vector<vtkDataSet*> inputs = inputDataSets(inputVector[0]);
   for (vtkDataSet* input : inputs)
   {
@@ -308,7 +317,17 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   options.maximumIterations = this->MaximumIterations;
   options.convergenceTolerance = this->ConvergenceTolerance;
   options.maximumElements = static_cast<std::size_t>(this->MaximumNumberOfElements);
-  auto solver = std::make_unique<terralux::HierarchicalRadiosity>(scene.Scene, options);
+  if (!this->ReuseGeometry || (this->Geometry && !this->Geometry->Rays->sameShape(scene.Scene)))
+    this->Geometry.reset(); // before the new geometry is built: never two at once
+  auto solver = std::make_unique<terralux::HierarchicalRadiosity>(
+    scene.Scene, options, this->Geometry ? this->Geometry->Rays : nullptr);
+  if (this->ReuseGeometry && (!this->Geometry || solver->geometry() != this->Geometry->Rays))
+  {
+    // Built anew: kept with the scene whose terrain grids it shares.
+    this->Geometry = std::make_unique<GeometryCache>();
+    this->Geometry->Rays = solver->geometry();
+    this->Geometry->Scene = std::move(ownScene);
+  }
   if (solver->degeneratePolygons() > 0)
   {
     vtkWarningMacro("Skipped " << solver->degeneratePolygons()
@@ -477,4 +496,5 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PostNormals: " << (this->PostNormals == HORN_NORMALS ? "Horn" : "AreaWeighted") << "\n";
   os << indent << "UseTerrainHierarchy: " << (this->UseTerrainHierarchy ? "On" : "Off") << "\n";
   os << indent << "SkyFromHorizons: " << (this->SkyFromHorizons ? "On" : "Off") << "\n";
+  os << indent << "ReuseGeometry: " << (this->ReuseGeometry ? "On" : "Off") << "\n";
 }

@@ -72,6 +72,8 @@
 #include "TerraLuxFiltersModule.h" // For export macro
 #include "vtkDataObjectAlgorithm.h"
 
+#include <memory> // For std::unique_ptr
+
 class vtkPolyData;
 class vtkRadiosityScene;
 
@@ -250,6 +252,20 @@ public:
   vtkBooleanMacro(SkyFromHorizons, vtkTypeBool);
   ///@}
 
+  ///@{
+  /**
+   * Set/Get whether the scene's rays (the Embree scene) and its terrain's horizons are
+   * kept after an update and reused by the next while the geometry keeps its shape:
+   * when only the lights, materials or solver parameters change (a moving sun, a time
+   * step scrubbed in ParaView), they are not built again, and the values are the same
+   * as those of a fresh filter. Their memory (about 100 bytes a terrain post) stays
+   * held between updates; off frees it after each. Default is on.
+   */
+  vtkSetMacro(ReuseGeometry, vtkTypeBool);
+  vtkGetMacro(ReuseGeometry, vtkTypeBool);
+  vtkBooleanMacro(ReuseGeometry, vtkTypeBool);
+  ///@}
+
   enum PostNormalType
   {
     AREA_WEIGHTED_NORMALS = 0,
@@ -336,6 +352,12 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   // What of the outputs a piece holds: a terrain's sub-extent (grid indices; nullptr:
   // the whole input), and whether the leaf mesh and the links (piece 0's).
+  // The rays and horizons of the last update's scene, with that scene, whose terrain
+  // grids they share (ReuseGeometry).
+  struct GeometryCache;
+  std::unique_ptr<GeometryCache> Geometry;
+  vtkTypeBool ReuseGeometry;
+
   struct PieceRequest
   {
     const int* extent;

@@ -9,6 +9,7 @@
 #include "leaf_light.h"
 #include "post_lattice.h"
 #include "post_sky.h"
+#include "scene_geometry.h"
 #include "open_sky.h"
 #include "link_transport.h"
 #include "polygon_element.h"
@@ -40,7 +41,8 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 }
 } // namespace
 
-HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options)
+HierarchicalRadiosity::HierarchicalRadiosity(
+  const RadiosityScene& scene, const RadiosityOptions& options, std::shared_ptr<SceneGeometry> geometry)
   : Options(options)
   , Store(std::make_unique<ElementStore>())
 {
@@ -95,8 +97,10 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
   this->Store->MaximumSkyLevel = options.maximumSkyLevel;
   this->RootCluster = Cluster::build(*this->Store, polygons, 0);
 
-  const auto start = std::chrono::steady_clock::now();
-  this->Rays = std::make_unique<Visibility>(scene);
+  const bool reused = geometry && geometry->sameShape(scene);
+  this->Geometry = reused ? std::move(geometry) : std::make_shared<SceneGeometry>(scene);
+  this->Rays = &this->Geometry->rays();
+  this->RaysBefore = this->Rays->raysCast();
   this->PointCount = scene.points.size();
   for (const TerrainGrid* terrain : scene.terrains)
     this->PointCount += static_cast<std::size_t>(terrain->postsX()) * terrain->postsY();
@@ -105,14 +109,14 @@ HierarchicalRadiosity::HierarchicalRadiosity(const RadiosityScene& scene, const 
     std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
   if (this->HeightField && scene.terrains.size() == 1)
     this->HeightFieldGrid = scene.terrains.front();
-  this->Stats.secondsVisibilityBuild = secondsSince(start);
+  this->Stats.secondsVisibilityBuild = reused ? 0.0 : this->Geometry->secondsBuild();
 }
 
 HierarchicalRadiosity::~HierarchicalRadiosity() = default;
 
 std::uint64_t HierarchicalRadiosity::raysCast() const
 {
-  return this->Rays->raysCast();
+  return this->Rays->raysCast() - this->RaysBefore;
 }
 
 void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance, double duration)
@@ -130,7 +134,7 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
   this->Gather->setSky(this->SkyAtPoints.get());
   this->Horizons = sky && this->HeightField
-    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get())
+    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons)
     : nullptr;
   this->Gather->setHorizons(this->Horizons.get());
   this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
@@ -146,8 +150,10 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   if (bytes > 2147483648.0)
     return;
   const auto start = std::chrono::steady_clock::now();
-  this->PostHorizons = std::make_unique<HorizonMap>(*this->HeightFieldGrid);
-  this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons.get());
+  // The one terrain's horizons: built by the first solve over this geometry, reused by
+  // the next ones.
+  this->PostHorizons = &this->Geometry->horizons(0);
+  this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons);
   this->Gather->setHorizons(this->Horizons.get());
   this->PostSkies =
     std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals);
@@ -341,7 +347,7 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
   this->Stats.links = 0;
   for (const auto& element : this->Store->all())
     this->Stats.links += element->Incoming.size();
-  this->Stats.rays = this->Rays->raysCast();
+  this->Stats.rays = this->raysCast();
   if (progress)
   {
     progress->report(1.0);

@@ -22,6 +22,7 @@ class HorizonSky;
 class LeafLight;
 class PostLattice;
 class PostSky;
+class SceneGeometry;
 class OpenSky;
 class PolygonElement;
 class SkyHierarchy;
@@ -105,7 +106,11 @@ public:
   /// The scene's polygons, and each terrain's largest complete patches, become the
   /// leaves of the initial cluster hierarchy; degenerate polygons (zero area) are left
   /// out and counted. Throws Error when nothing usable remains.
-  HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options);
+  /// `geometry`: the rays and horizons of an earlier solve over a scene of the same
+  /// shape (SceneGeometry::sameShape), reused instead of built again; null, or of
+  /// another shape, builds them anew (see geometry()).
+  HierarchicalRadiosity(const RadiosityScene& scene, const RadiosityOptions& options,
+    std::shared_ptr<SceneGeometry> geometry = nullptr);
   ~HierarchicalRadiosity();
 
   /// External sources: any number of suns (their light adds up; one at or below the
@@ -126,7 +131,9 @@ public:
   void findPostHorizons(bool hornNormals = false);
 
   const RadiosityStatistics& statistics() const { return this->Stats; }
-  /// Rays cast so far: the solve's and those of later point evaluations.
+  /// The scene's rays and horizons, to hand to the next solve over the same shape.
+  const std::shared_ptr<SceneGeometry>& geometry() const { return this->Geometry; }
+  /// Rays this solver cast so far: the solve's and those of later point evaluations.
   std::uint64_t raysCast() const;
   std::size_t degeneratePolygons() const { return this->Degenerate; }
   /// Root element of each input polygon (null for degenerate ones).
@@ -215,13 +222,15 @@ private:
 
   RadiosityOptions Options;
   std::unique_ptr<ElementStore> Store;
-  std::unique_ptr<Visibility> Rays;
+  std::shared_ptr<SceneGeometry> Geometry;
+  const Visibility* Rays = nullptr; // the geometry's
+  std::uint64_t RaysBefore = 0;     // what the geometry's rays had cast before this solver
   std::unique_ptr<FinalGather> Gather;
   std::unique_ptr<OpenSky> SkyAtPoints;
   std::unique_ptr<HorizonSky> Horizons;
   bool HeightField = false; // terrains facing up and nothing else: horizons hold (checked only when asked for)
   const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
-  std::unique_ptr<HorizonMap> PostHorizons;      // its posts' horizons (findPostHorizons)
+  const HorizonMap* PostHorizons = nullptr;      // its posts' horizons (findPostHorizons), the geometry's
   std::unique_ptr<PostSky> PostSkies;            // and the sky each of them receives
   std::unique_ptr<PostLattice> Lattice;          // its posts gathered first (gatherPostLattice)
   std::unique_ptr<LeafLight> Leaves;             // what leaves receive, gathered (gatherLeaves)

@@ -90,6 +90,14 @@ public:
   /// True when post (i, j) is a corner of a valid cell.
   bool postUsed(int i, int j) const;
 
+  /// Whether `other` has the same posts and valid cells (materials aside): rays and
+  /// horizons built on one hold for the other.
+  bool sameSurface(const TerrainGrid& other) const
+  {
+    return this->Nx == other.Nx && this->Ny == other.Ny && this->Origin == other.Origin && this->Xyz == other.Xyz &&
+      this->Valid == other.Valid;
+  }
+
   /// Float xyz relative to origin(), nx*ny posts row by row (i fastest), padded for
   /// Embree's 16-byte loads: share it with the ray tracer instead of copying.
   const float* vertices() const { return this->Xyz.data(); }

@@ -24,12 +24,6 @@ double rough(double x, double y)
     8.0 * std::sin(x / 7.0 + 1.3) * std::sin(y / 9.0);
 }
 
-RadiosityScene sceneOf(const std::vector<const TerrainGrid*>& grids)
-{
-  RadiosityScene scene;
-  scene.terrains = grids;
-  return scene;
-}
 
 // Every azimuth of the post's horizon checked with two rays from the post: `margin`
 // above the horizon open, `margin` below it blocked. Returns how many were blocked.

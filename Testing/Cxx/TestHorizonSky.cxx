@@ -44,12 +44,6 @@ double hiddenByRays(const Visibility& rays, const OpenSky& sky, const Vec3& p, c
   return hidden / (side * side);
 }
 
-RadiosityScene sceneOf(const TerrainGrid& grid)
-{
-  RadiosityScene scene;
-  scene.terrains.push_back(&grid);
-  return scene;
-}
 } // namespace
 
 TEST(HorizonSky, OpenGroundHidesNothingForOneRayPerSector)

@@ -27,12 +27,6 @@ using namespace terralux_test;
 namespace
 {
 
-RadiosityScene sceneOf(const TerrainGrid& grid)
-{
-  RadiosityScene scene;
-  scene.terrains.push_back(&grid);
-  return scene;
-}
 
 // The pieces and horizons a post's terrain directions share with the sky it hides
 // (the sky's radiance plays no part in the directions).

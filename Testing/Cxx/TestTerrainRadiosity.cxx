@@ -434,3 +434,43 @@ TEST(TerrainRadiosity, TwoTerrainsShadeEachOther)
   sun->Modified();
   EXPECT_EQ(runPipeline(radiosity, refused), 0);
 }
+
+// ReuseGeometry: while the terrain keeps its shape, the next update reuses its rays and
+// horizons (no Embree build, no horizon sweep) and gives what a fresh filter gives;
+// another terrain is built anew.
+TEST(TerrainRadiosity, AMovingSunReusesTheGeometryAndMatchesAFreshFilter)
+{
+  const RasterSpec spec = demSpec([](double x, double y) { return 40.0 * std::sin(x / 90.0) * std::cos(y / 70.0); });
+  LitTerrain lit("reuse.tif", spec, "2024-06-21T09:00:00+02:00");
+  auto morning = lit.run(true);
+  auto seconds = [&](const char* name) {
+    return lit.radiosity->GetOutput()->GetFieldData()->GetArray(name)->GetComponent(0, 0);
+  };
+  EXPECT_GT(seconds("SecondsVisibilityBuild"), 0.0);
+
+  lit.sun->SetDateTime("2024-06-21T16:00:00+02:00");
+  auto afternoon = lit.run(true);
+  EXPECT_EQ(seconds("SecondsVisibilityBuild"), 0.0); // nothing built: the horizons came with the rays
+
+  LitTerrain fresh("reuse.tif", spec, "2024-06-21T16:00:00+02:00");
+  auto expected = fresh.run(true);
+  vtkDataArray* got = array(afternoon, "Irradiance");
+  vtkDataArray* want = array(expected, "Irradiance");
+  double changed = 0.0;
+  for (vtkIdType k = 0; k < want->GetNumberOfTuples(); ++k)
+  {
+    EXPECT_EQ(got->GetComponent(k, 0), want->GetComponent(k, 0)) << k;
+    changed = std::max(changed, std::abs(got->GetComponent(k, 0) - array(morning, "Irradiance")->GetComponent(k, 0)));
+  }
+  EXPECT_GT(changed, 50.0); // the sun did move
+
+  // A terrain of another shape: built again.
+  lit.terrain->SetStride(2);
+  lit.run(true);
+  EXPECT_GT(seconds("SecondsVisibilityBuild"), 0.0);
+  // Off: nothing is kept, each update builds its own.
+  lit.radiosity->ReuseGeometryOff();
+  lit.sun->SetDateTime("2024-06-21T12:00:00+02:00");
+  lit.run(true);
+  EXPECT_GT(seconds("SecondsVisibilityBuild"), 0.0);
+}

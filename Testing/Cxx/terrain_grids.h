@@ -1,10 +1,12 @@
 #pragma once
 // Terrain grids for engine tests, built in code: planes, hills, steps, holes.
 
+#include "radiosity_types.h"
 #include "terrain_grid.h"
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace terralux_test
 {
@@ -27,5 +29,17 @@ inline std::unique_ptr<terralux::TerrainGrid> makeGrid(int nx, int ny, double sp
       grid->setCellValid(i, j, valid(i, j));
   grid->setUniformMaterial(terralux::uniformSpectrum(0.2), terralux::uniformSpectrum(0.0));
   return grid;
+}
+
+/// A scene of terrains alone.
+inline terralux::RadiosityScene sceneOf(const std::vector<const terralux::TerrainGrid*>& grids)
+{
+  terralux::RadiosityScene scene;
+  scene.terrains = grids;
+  return scene;
+}
+inline terralux::RadiosityScene sceneOf(const terralux::TerrainGrid& grid)
+{
+  return sceneOf(std::vector<const terralux::TerrainGrid*>{ &grid });
 }
 } // namespace terralux_test

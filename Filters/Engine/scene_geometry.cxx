@@ -1,0 +1,60 @@
+#include "scene_geometry.h"
+
+#include "horizon_map.h"
+#include "terrain_grid.h"
+#include "visibility.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace terralux
+{
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+} // namespace
+
+SceneGeometry::SceneGeometry(const RadiosityScene& scene)
+  : Points(scene.points)
+  , Polygons(scene.polygons)
+  , Terrains(scene.terrains)
+  , Horizons(scene.terrains.size())
+{
+  const auto start = std::chrono::steady_clock::now();
+  this->Rays = std::make_unique<Visibility>(scene);
+  this->SecondsBuild = secondsSince(start);
+}
+
+SceneGeometry::~SceneGeometry() = default;
+
+const HorizonMap& SceneGeometry::horizons(std::size_t index, double* seconds)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
+  if (!this->Horizons[index])
+    this->Horizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index]);
+  if (seconds)
+    *seconds = secondsSince(start);
+  return *this->Horizons[index];
+}
+
+bool SceneGeometry::sameShape(const RadiosityScene& scene) const
+{
+  if (scene.points != this->Points || scene.polygons.size() != this->Polygons.size() ||
+    scene.terrains.size() != this->Terrains.size())
+    return false;
+  for (std::size_t k = 0; k < scene.polygons.size(); ++k)
+  {
+    const ScenePolygon &a = scene.polygons[k], &b = this->Polygons[k];
+    if (a.vertexCount != b.vertexCount || a.vertices != b.vertices)
+      return false;
+  }
+  for (std::size_t k = 0; k < scene.terrains.size(); ++k)
+    if (!scene.terrains[k]->sameSurface(*this->Terrains[k]))
+      return false;
+  return true;
+}
+} // namespace terralux

@@ -1,0 +1,52 @@
+#pragma once
+// What a scene's shape alone determines, built once and shared by every solve over it:
+// the Embree scene of the rays (Visibility) and the horizons of a height-field terrain's
+// posts (HorizonMap). Sources and materials are the solver's; a time series or a moving
+// sun re-solves over the same SceneGeometry without rebuilding either (on the 1025^2
+// fractal DEM the horizons alone take a fifth of an instant's time).
+
+#include "radiosity_types.h"
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace terralux
+{
+class HorizonMap;
+class TerrainGrid;
+class Visibility;
+
+class SceneGeometry
+{
+public:
+  /// The rays of `scene` (see Visibility). The scene's terrain grids must outlive
+  /// this: the ray tracer shares their vertices.
+  explicit SceneGeometry(const RadiosityScene& scene);
+  ~SceneGeometry();
+  SceneGeometry(const SceneGeometry&) = delete;
+  SceneGeometry& operator=(const SceneGeometry&) = delete;
+
+  const Visibility& rays() const { return *this->Rays; }
+  /// Seconds the Embree scene took to build.
+  double secondsBuild() const { return this->SecondsBuild; }
+
+  /// The horizons of the posts of terrain `index` (a height field alone in its scene),
+  /// built on the first call (64 bytes a post) and kept; `seconds` gets the time this
+  /// call spent.
+  const HorizonMap& horizons(std::size_t index, double* seconds = nullptr);
+
+  /// Whether `scene` has this one's shape: the same polygons over the same points and
+  /// terrains with the same posts and valid cells (materials may differ).
+  bool sameShape(const RadiosityScene& scene) const;
+
+private:
+  std::vector<Vec3> Points;                 // the scene's polygon corners, to compare
+  std::vector<ScenePolygon> Polygons;       // (their vertex indices count)
+  std::vector<const TerrainGrid*> Terrains; // the grids rays and horizons are built on
+  std::unique_ptr<Visibility> Rays;
+  std::vector<std::unique_ptr<HorizonMap>> Horizons; // per terrain, built on demand
+  std::mutex HorizonsMutex;
+  double SecondsBuild = 0.0;
+};
+} // namespace terralux

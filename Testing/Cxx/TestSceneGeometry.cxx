@@ -1,0 +1,101 @@
+// SceneGeometry (scene_geometry.h): the rays and horizons of a scene's shape, shared by
+// solves over it. A second solve over the same shape (another sun, other materials)
+// builds neither again and gives what a solver of its own gives, value for value; a
+// scene of another shape gets geometry of its own.
+#include "angles.h"
+#include "cie_sky.h"
+#include "scene_geometry.h"
+#include "sky_hierarchy.h"
+#include "solver.h"
+#include "terrain_grids.h"
+#include "terrain_patch.h"
+#include "visibility.h"
+
+#include <gtest/gtest.h>
+
+using namespace terralux;
+using namespace terralux_test;
+
+namespace
+{
+std::unique_ptr<TerrainGrid> hills(double reflectance)
+{
+  auto grid = makeGrid(41, 41, 10.0, [](double x, double y) {
+    return 30.0 * std::sin(x / 40.0) * std::cos(y / 55.0) + 12.0 * std::sin((x + 2.0 * y) / 23.0);
+  });
+  grid->setUniformMaterial(uniformSpectrum(reflectance), uniformSpectrum(0.0));
+  return grid;
+}
+
+struct Solved
+{
+  std::unique_ptr<HierarchicalRadiosity> solver;
+  std::vector<PointIrradiance> posts;
+};
+
+// Sun from `azimuth` and a CIE clear sky; every 5th post evaluated as the filter does.
+Solved solve(const TerrainGrid& grid, double azimuth, std::shared_ptr<SceneGeometry> geometry)
+{
+  static const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(50.0 * degree, 2.0)), 120.0, 6);
+  RadiosityOptions options;
+  options.errorTolerance = 1e-2;
+  options.gatherSamples = 256;
+  Solved result;
+  result.solver = std::make_unique<HierarchicalRadiosity>(sceneOf(grid), options, std::move(geometry));
+  const Direction sun = directionFromZenithAzimuth(50.0 * degree, azimuth);
+  result.solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
+  result.solver->setSky(&sky);
+  EXPECT_TRUE(result.solver->solve());
+  result.solver->findPostHorizons();
+  const TerrainPatch& root = *result.solver->terrainRoots()[0];
+  result.solver->gatherPostLattice(root, false);
+  result.solver->gatherLeaves();
+  for (int j = 2; j < grid.postsY(); j += 5)
+    for (int i = 2; i < grid.postsX(); i += 5)
+    {
+      const TerrainPatch* leaf = root.mostLitLeafAt(i, j);
+      result.posts.push_back(result.solver->irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
+    }
+  return result;
+}
+} // namespace
+
+TEST(SceneGeometry, ASecondSolveOverTheSameShapeReusesRaysAndHorizonsAndAgreesExactly)
+{
+  const auto grid = hills(0.2);
+  const Solved first = solve(*grid, 1.0, nullptr);
+  const std::shared_ptr<SceneGeometry> geometry = first.solver->geometry();
+  EXPECT_GT(first.solver->statistics().secondsVisibilityBuild, 0.0);
+
+  // Another sun and another reflectance over a copy of the same terrain.
+  const auto again = hills(0.35);
+  const Solved reused = solve(*again, 4.0, geometry);
+  const Solved fresh = solve(*again, 4.0, nullptr);
+  EXPECT_EQ(reused.solver->geometry(), geometry);
+  EXPECT_NE(fresh.solver->geometry(), geometry);
+  EXPECT_EQ(reused.solver->statistics().secondsVisibilityBuild, 0.0);
+  // Each solver counts its own rays, the same whether or not it built the geometry.
+  EXPECT_EQ(reused.solver->raysCast(), fresh.solver->raysCast());
+  ASSERT_EQ(reused.posts.size(), fresh.posts.size());
+  double differs = 0.0;
+  for (std::size_t k = 0; k < fresh.posts.size(); ++k)
+    for (int c = 0; c < lightCategories; ++c)
+    {
+      EXPECT_EQ(reused.posts[k].irradiance[c][0], fresh.posts[k].irradiance[c][0]) << k << " " << c;
+      differs = std::max(differs, std::abs(reused.posts[k].irradiance[c][0] - first.posts[k].irradiance[c][0]));
+    }
+  EXPECT_GT(differs, 1.0); // the second sun and reflectance did change the values
+}
+
+TEST(SceneGeometry, AnotherShapeGetsGeometryOfItsOwn)
+{
+  const auto grid = hills(0.2);
+  const Solved first = solve(*grid, 1.0, nullptr);
+  auto raised = hills(0.2);
+  raised->setPost(20, 20, raised->post(20, 20) + Vec3(0.0, 0.0, 5.0));
+  EXPECT_FALSE(first.solver->geometry()->sameShape(sceneOf(*raised)));
+  EXPECT_TRUE(first.solver->geometry()->sameShape(sceneOf(*hills(0.5))));
+  const Solved other = solve(*raised, 1.0, first.solver->geometry());
+  EXPECT_NE(other.solver->geometry(), first.solver->geometry());
+  EXPECT_GT(other.solver->statistics().secondsVisibilityBuild, 0.0);
+}
