@@ -49,8 +49,8 @@ Values irradianceValues(const std::array<Spectrum, terralux::lightCategories>& i
     v[1][band] = irradiance[terralux::SunLight][band];
     v[2][band] = irradiance[terralux::SkyLight][band];
     v[3][band] = irradiance[terralux::ReflectedLight][band];
-    v[0][band] = v[1][band] + v[2][band] + v[3][band];
   }
+  v[0] = terralux::totalIrradiance(v[1], v[2], v[3]);
   return v;
 }
 
@@ -120,8 +120,7 @@ void store(const std::vector<vtkSmartPointer<vtkDoubleArray>>& arrays, vtkIdType
 Values valuesAtPoint(const terralux::PointIrradiance& point, const Spectrum& reflectance, const Spectrum& emission)
 {
   Values v = irradianceValues(point.irradiance);
-  for (int band = 0; band < terralux::maxBands; ++band)
-    v[4][band] = emission[band] + reflectance[band] * v[0][band];
+  v[4] = terralux::radiosityOf(emission, reflectance, v[0]);
   return v;
 }
 
@@ -242,11 +241,8 @@ void addTerrainPointArrays(const terralux::HierarchicalRadiosity& solver, const 
                 sunshine->SetValue(i + static_cast<vtkIdType>(j) * nx, sunlitHours);
               if (skyViewFactor)
                 skyViewFactor->SetValue(i + static_cast<vtkIdType>(j) * nx, flat[skyViewComponent]);
-              for (int band = 0; band < terralux::maxBands; ++band)
-              {
-                v[0][band] = v[1][band] + v[2][band] + v[3][band];
-                v[4][band] = leaf.emission()[band] + leaf.reflectance()[band] * v[0][band];
-              }
+              v[0] = terralux::totalIrradiance(v[1], v[2], v[3]);
+              v[4] = terralux::radiosityOf(leaf.emission(), leaf.reflectance(), v[0]);
               put(i + static_cast<vtkIdType>(j) * nx, v);
             }
         }
@@ -446,11 +442,8 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
         Values v{};
         accumulate(v, side.leafSum, 1.0 / side.leafWeight);
         v[1] = solver.directSunAt(points[k], normals[k], &sunlitHours[k]);
-        for (int band = 0; band < terralux::maxBands; ++band)
-        {
-          v[0][band] = v[1][band] + v[2][band] + v[3][band];
-          v[4][band] = leaves[k]->emission()[band] + leaves[k]->reflectance()[band] * v[0][band];
-        }
+        v[0] = terralux::totalIrradiance(v[1], v[2], v[3]);
+        v[4] = terralux::radiosityOf(leaves[k]->emission(), leaves[k]->reflectance(), v[0]);
         values[k] = v;
         skyViews[k] = side.skyView / side.leafWeight;
       }

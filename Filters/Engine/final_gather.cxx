@@ -89,10 +89,7 @@ Spectrum FinalGather::radiosityAt(
     this->PostSkies->interpolate(hit.u, hit.v, sky);
   if (hit.terrain == 0 && this->Lattice)
     this->Lattice->reflectedAt(hit.u, hit.v, reflected);
-  Spectrum b;
-  for (int band = 0; band < maxBands; ++band)
-    b[band] = leaf.emission()[band] + leaf.reflectance()[band] * (sun[band] + sky[band] + reflected[band]);
-  return b;
+  return radiosityOf(leaf.emission(), leaf.reflectance(), totalIrradiance(sun, sky, reflected));
 }
 
 int FinalGather::openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed) const

@@ -298,10 +298,8 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
     PolygonElement& leaf = *leaves[k];
     if (!light->mean(leaf.id(), leaf.Irradiance[SkyLight], leaf.Irradiance[ReflectedLight]))
       return;
-    for (int band = 0; band < maxBands; ++band)
-      leaf.Radiosity[band] = leaf.emission()[band] +
-        leaf.reflectance()[band] *
-          (leaf.Irradiance[SunLight][band] + leaf.Irradiance[SkyLight][band] + leaf.Irradiance[ReflectedLight][band]);
+    leaf.Radiosity = radiosityOf(leaf.emission(), leaf.reflectance(),
+      totalIrradiance(leaf.Irradiance[SunLight], leaf.Irradiance[SkyLight], leaf.Irradiance[ReflectedLight]));
   });
   this->Leaves = std::move(light);
   this->Gather->setLeafLight(this->Leaves.get());

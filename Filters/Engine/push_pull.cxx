@@ -212,12 +212,11 @@ LeafResult solveLeaf(const LeafTask& task, const DeferredLink* deferred, const V
   polygon.SkyViewFactor = skyView;
   polygon.PartialIrradiance = task.inherited.partial + polygon.DeferredPartial;
   LeafResult result;
-  double incident = 0.0;
+  const Spectrum total = totalIrradiance(irradiance[SunLight], irradiance[SkyLight], irradiance[ReflectedLight]);
+  result.radiosity = radiosityOf(polygon.emission(), polygon.reflectance(), total);
+  const double incident = largestBand(total);
   for (int band = 0; band < maxBands; ++band)
   {
-    const double total = irradiance[0][band] + irradiance[1][band] + irradiance[2][band];
-    incident = std::max(incident, total);
-    result.radiosity[band] = polygon.emission()[band] + polygon.reflectance()[band] * total;
     if (extrapolation > 0.0)
     {
       result.radiosity[band] = std::max(polygon.emission()[band],

@@ -37,6 +37,26 @@ inline double largestBand(const Spectrum& s)
   return std::max({ s[0], s[1], s[2] });
 }
 
+/// Sun + sky + reflected irradiance, in that order everywhere, so that every place that
+/// totals them agrees to the last bit.
+inline Spectrum totalIrradiance(const Spectrum& sun, const Spectrum& sky, const Spectrum& reflected)
+{
+  Spectrum total;
+  for (std::size_t band = 0; band < total.size(); ++band)
+    total[band] = sun[band] + sky[band] + reflected[band];
+  return total;
+}
+
+/// Radiosity B = Be + rho E (paper eq. 1's emitted plus reflected light) of a surface of
+/// emission Be and reflectance rho under irradiance E: the one place it is computed.
+inline Spectrum radiosityOf(const Spectrum& emission, const Spectrum& reflectance, const Spectrum& irradiance)
+{
+  Spectrum radiosity;
+  for (std::size_t band = 0; band < radiosity.size(); ++band)
+    radiosity[band] = emission[band] + reflectance[band] * irradiance[band];
+  return radiosity;
+}
+
 /// FNV-1a over the bits of a position (-0 and +0 alike): for hash maps keyed by exact
 /// positions and for seeds that belong to a point.
 inline std::uint64_t hashPosition(const Vec3& p)
