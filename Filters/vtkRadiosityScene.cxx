@@ -185,9 +185,10 @@ void checkSinglePrecision(vtkStructuredGrid* grid, const terralux::TerrainGrid& 
         grid->GetPoint((i + c % 2) + static_cast<vtkIdType>(j + c / 2) * dims[0], q);
         p[c] = terralux::Vec3(q[0], q[1], q[2]);
       }
-      // The cell's two triangles as TerrainGrid::cellTriangles splits it, in double.
-      const bool hasArea = glm::length(terralux::TerrainGrid::areaVector({ p[0], p[1], p[2] })) > 0.0 ||
-        glm::length(terralux::TerrainGrid::areaVector({ p[3], p[2], p[1] })) > 0.0;
+      // The cell's two triangles as TerrainGrid splits it, in double.
+      const auto triangles = terralux::TerrainGrid::cellTriangles(p[0], p[1], p[2], p[3]);
+      const bool hasArea = glm::length(terralux::TerrainGrid::areaVector(triangles[0])) > 0.0 ||
+        glm::length(terralux::TerrainGrid::areaVector(triangles[1])) > 0.0;
       if (hasArea && !(glm::length(terrain.cellAreaVector(i, j)) > 0.0))
       {
         throw terralux::Error("cell (" + std::to_string(i) + ", " + std::to_string(j) + ") of input " +

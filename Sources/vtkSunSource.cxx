@@ -145,21 +145,12 @@ int vtkSunSource::RequestData(
   this->ExtraterrestrialIrradiance =
     this->SolarConstant / (position.earthSunDistanceAU * position.earthSunDistanceAU);
 
-  terralux::ClearSkyIrradiance irradiance;
-  if (this->IrradianceModel == ESRA || this->IrradianceModel == INEICHEN_PEREZ)
-  {
-    irradiance = terralux::clearSkyIrradiance(this->IrradianceModel == ESRA ? terralux::ClearSkyModel::Esra
-                                                                            : terralux::ClearSkyModel::IneichenPerez,
-      position.zenithDeg, position.geometricZenithDeg, place[2], this->LinkeTurbidity,
-      this->ExtraterrestrialIrradiance);
-  }
-  else if (position.zenithDeg < 90.0) // the apparent sun is above the horizon
-  {
-    irradiance.directNormalWm2 = this->UserNormalIrradiance;
-    irradiance.diffuseHorizontalWm2 = this->UserDiffuseHorizontalIrradiance;
-    irradiance.globalHorizontalWm2 =
-      irradiance.directNormalWm2 * std::cos(position.zenithDeg * terralux::degree) + irradiance.diffuseHorizontalWm2;
-  }
+  const terralux::ClearSkyIrradiance irradiance = this->IrradianceModel == USER
+    ? terralux::givenIrradiance(position.zenithDeg, this->UserNormalIrradiance, this->UserDiffuseHorizontalIrradiance)
+    : terralux::clearSkyIrradiance(
+        this->IrradianceModel == ESRA ? terralux::ClearSkyModel::Esra : terralux::ClearSkyModel::IneichenPerez,
+        position.zenithDeg, position.geometricZenithDeg, place[2], this->LinkeTurbidity,
+        this->ExtraterrestrialIrradiance);
   this->NormalIrradiance = irradiance.directNormalWm2;
   this->DiffuseHorizontalIrradiance = irradiance.diffuseHorizontalWm2;
 

@@ -69,9 +69,7 @@ Spectrum TerrainGrid::cellEmission(int i, int j) const
 
 std::array<TerrainGrid::Triangle, 2> TerrainGrid::cellTriangles(int i, int j) const
 {
-  const Vec3 p00 = this->post(i, j), p10 = this->post(i + 1, j), p01 = this->post(i, j + 1),
-             p11 = this->post(i + 1, j + 1);
-  return { Triangle{ p00, p10, p01 }, Triangle{ p11, p01, p10 } };
+  return cellTriangles(this->post(i, j), this->post(i + 1, j), this->post(i, j + 1), this->post(i + 1, j + 1));
 }
 
 TerrainPoint TerrainGrid::surfacePoint(double u, double v) const

@@ -60,6 +60,12 @@ public:
   /// (p00, p10, p01) and upper (p11, p01, p10), counter-clockwise seen from above. Every
   /// use of the cell's surface goes through here, so all agree with what rays hit.
   std::array<Triangle, 2> cellTriangles(int i, int j) const;
+  /// The same split of any cell given its corners (a grid's points in double, before
+  /// they become a TerrainGrid's floats).
+  static std::array<Triangle, 2> cellTriangles(const Vec3& p00, const Vec3& p10, const Vec3& p01, const Vec3& p11)
+  {
+    return { Triangle{ p00, p10, p01 }, Triangle{ p11, p01, p10 } };
+  }
   /// Area x unit normal of a triangle.
   static Vec3 areaVector(const Triangle& t) { return 0.5 * glm::cross(t[1] - t[0], t[2] - t[0]); }
 

@@ -99,4 +99,15 @@ ClearSkyIrradiance clearSkyIrradiance(ClearSkyModel model, double apparentZenith
     ? esraClearSky(90.0 - geometricZenithDeg, heightM, linkeTurbidity, extraterrestrialWm2)
     : ineichenPerezClearSky(apparentZenithDeg, heightM, linkeTurbidity, extraterrestrialWm2);
 }
+
+ClearSkyIrradiance givenIrradiance(double apparentZenithDeg, double directNormalWm2, double diffuseHorizontalWm2)
+{
+  ClearSkyIrradiance result;
+  if (!(apparentZenithDeg < 90.0))
+    return result;
+  result.directNormalWm2 = directNormalWm2;
+  result.diffuseHorizontalWm2 = diffuseHorizontalWm2;
+  result.globalHorizontalWm2 = directNormalWm2 * std::cos(apparentZenithDeg * degree) + diffuseHorizontalWm2;
+  return result;
+}
 } // namespace terralux

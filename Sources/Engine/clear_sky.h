@@ -40,4 +40,9 @@ enum class ClearSkyModel
 /// zenith angles; zero while the apparent sun is below the horizon.
 ClearSkyIrradiance clearSkyIrradiance(ClearSkyModel model, double apparentZenithDeg, double geometricZenithDeg,
   double heightM, double linkeTurbidity, double extraterrestrialWm2);
+
+/// Given (measured or chosen) direct normal and diffuse horizontal irradiance with the
+/// global horizontal they make at the apparent zenith angle; zero while the apparent
+/// sun is below the horizon.
+ClearSkyIrradiance givenIrradiance(double apparentZenithDeg, double directNormalWm2, double diffuseHorizontalWm2);
 } // namespace terralux

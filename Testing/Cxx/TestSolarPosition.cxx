@@ -258,3 +258,15 @@ TEST(ClearSky, ModelsAgreeAndBehave)
   EXPECT_NEAR(kastenYoungAirMass(60.0), 1.995, 0.01);
   EXPECT_NEAR(kastenYoungAirMass(90.0), 37.92, 0.01); // Kasten & Young 1989
 }
+
+TEST(ClearSky, GivenIrradianceMakesItsGlobalAndNothingBelowTheHorizon)
+{
+  const ClearSkyIrradiance day = givenIrradiance(60.0, 700.0, 120.0);
+  EXPECT_DOUBLE_EQ(day.directNormalWm2, 700.0);
+  EXPECT_DOUBLE_EQ(day.diffuseHorizontalWm2, 120.0);
+  EXPECT_NEAR(day.globalHorizontalWm2, 700.0 * 0.5 + 120.0, 1e-9);
+  const ClearSkyIrradiance night = givenIrradiance(90.5, 700.0, 120.0);
+  EXPECT_EQ(night.directNormalWm2, 0.0);
+  EXPECT_EQ(night.diffuseHorizontalWm2, 0.0);
+  EXPECT_EQ(night.globalHorizontalWm2, 0.0);
+}

@@ -1,6 +1,7 @@
 #include "weather_file.h"
 
 #include "angles.h"
+#include "clear_sky.h"
 #include "date_time.h"
 #include "error.h"
 
@@ -238,11 +239,8 @@ std::vector<SolarStep> weatherSteps(const WeatherFile& weather, double startJuli
         continue;
       SolarStep step = solarStepAt(0.5 * (a + b), site);
       step.hours = (b - a) * 24.0;
-      step.irradiance.directNormalWm2 = record.directNormalWh / litHours;
-      step.irradiance.diffuseHorizontalWm2 = record.diffuseHorizontalWh / litHours;
-      step.irradiance.globalHorizontalWm2 = step.irradiance.directNormalWm2 *
-          std::max(0.0, std::cos(step.position.zenithDeg * pi / 180.0)) +
-        step.irradiance.diffuseHorizontalWm2;
+      step.irradiance = givenIrradiance(
+        step.position.zenithDeg, record.directNormalWh / litHours, record.diffuseHorizontalWh / litHours);
       if (step.position.zenithDeg < 90.0)
         steps.push_back(step);
     }
