@@ -235,8 +235,7 @@ int vtkSkySource::RequestData(
   }
   this->UpdateProgress(0.6);
 
-  // Map cell (i along compass azimuth, j along altitude) is pyramid cell
-  // (iu = j, iv = i + n/2): the engine's azimuth v runs westward from south.
+  // Map cell (i along compass azimuth, j along altitude): terralux::skyMapCell.
   const int n = 1 << this->Levels;
   const int bands = sky->bands();
   map->SetExtent(0, n, 0, n, 0, 0);
@@ -253,7 +252,7 @@ int vtkSkySource::RequestData(
   {
     for (int i = 0; i < n; ++i)
     {
-      const terralux::SkyPatch patch{ this->Levels, j, (i + n / 2) % n };
+      const terralux::SkyPatch patch = terralux::skyMapCell(this->Levels, i, j);
       const vtkIdType cell = i + static_cast<vtkIdType>(j) * n;
       for (int band = 0; band < bands; ++band)
       {
@@ -291,17 +290,12 @@ int vtkSkySource::RequestData(
   vtkNew<vtkPoints> points;
   points->SetNumberOfPoints(static_cast<vtkIdType>(n + 1) * (n + 1));
   for (int j = 0; j <= n; ++j)
-  {
-    const double altitude = 0.5 * terralux::pi * j / n;
     for (int i = 0; i <= n; ++i)
     {
-      const double azimuth = 2.0 * terralux::pi * i / n;
-      const terralux::Direction d = terralux::directionFromZenithAzimuth(
-        0.5 * terralux::pi - altitude, azimuth);
+      const terralux::Direction d = terralux::skyMapCorner(this->Levels, i, j);
       points->SetPoint(i + static_cast<vtkIdType>(j) * (n + 1), this->DomeRadius * d[0],
         this->DomeRadius * d[1], this->DomeRadius * d[2]);
     }
-  }
   vtkNew<vtkCellArray> quads;
   for (int j = 0; j < n; ++j)
   {

@@ -2,6 +2,7 @@
 
 #include "angles.h"
 #include "error.h"
+#include "sky_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -297,5 +298,17 @@ double SkyHierarchy::planeIrradiance(const Direction& normal, int level, int ban
       irradiance += skyIrradianceContribution(receiverFactor, 1.0, patch.solidAngle(), this->radiance(patch, band));
     }
   return irradiance;
+}
+
+SkyPatch skyMapCell(int level, int i, int j)
+{
+  const int n = 1 << level;
+  return SkyPatch{ level, j, (i + n / 2) % n }; // compass 0 (north) is the pyramid's half turn from south
+}
+
+Direction skyMapCorner(int level, int i, int j)
+{
+  const int n = 1 << level;
+  return directionFromZenithAzimuth(halfPi - halfPi * j / n, twoPi * i / n);
 }
 } // namespace terralux

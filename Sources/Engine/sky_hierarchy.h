@@ -56,6 +56,14 @@ struct SkyPatch
 /// Unit ENU vector toward altitude u and azimuth v (westward from south), radians.
 Direction directionFromSkyParameters(double u, double v);
 
+/// The sky map users see (vtkSkySource's radiance image and dome): at a level, n = 2^level
+/// columns of compass azimuth (clockwise from north) by n rows of altitude. The pyramid
+/// cell at map column i, row j (the pyramid's azimuth runs westward from south).
+SkyPatch skyMapCell(int level, int i, int j);
+/// Unit ENU vector toward corner (i, j) of the map: compass azimuth 360 i / n degrees,
+/// altitude 90 j / n degrees (i, j in [0, n]).
+Direction skyMapCorner(int level, int i, int j);
+
 /// Calls f(direction, weight, s, u, v) at the 3 x 3 Gauss-Legendre points of a cell over
 /// (s = sin u, v), where dOmega = ds dv: the weights sum to the cell's solid angle, and
 /// the rule is exact for radiance polynomial of degree 5 in s and v.

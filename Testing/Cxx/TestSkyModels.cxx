@@ -294,3 +294,28 @@ TEST(SkyHierarchy, SubsamplingBelowTheFinestLevel)
     omega += kid.solidAngle();
   EXPECT_NEAR(omega, parent.solidAngle(), 1e-15);
 }
+
+TEST(SkyHierarchy, TheSkyMapRunsClockwiseFromNorthAndUpFromTheHorizon)
+{
+  const int level = 4, n = 1 << level;
+  auto near = [](const Direction& d, double x, double y, double z) {
+    return std::abs(d[0] - x) < 1e-12 && std::abs(d[1] - y) < 1e-12 && std::abs(d[2] - z) < 1e-12;
+  };
+  EXPECT_TRUE(near(skyMapCorner(level, 0, 0), 0.0, 1.0, 0.0));     // north, on the horizon
+  EXPECT_TRUE(near(skyMapCorner(level, n / 4, 0), 1.0, 0.0, 0.0)); // east
+  EXPECT_TRUE(near(skyMapCorner(level, n / 2, 0), 0.0, -1.0, 0.0)); // south
+  EXPECT_NEAR(skyMapCorner(level, 3, n)[2], 1.0, 1e-12);            // the zenith
+  // Each map cell's pyramid patch lies between its corners' azimuths and altitudes.
+  for (int j = 0; j < n; j += 3)
+    for (int i = 0; i < n; i += 5)
+    {
+      const Direction d = skyMapCell(level, i, j).direction();
+      double compass = std::atan2(d[0], d[1]) / degree;
+      compass += compass < 0.0 ? 360.0 : 0.0;
+      EXPECT_GT(compass, 360.0 * i / n);
+      EXPECT_LT(compass, 360.0 * (i + 1) / n);
+      const double altitude = std::asin(d[2]) / degree;
+      EXPECT_GT(altitude, 90.0 * j / n);
+      EXPECT_LT(altitude, 90.0 * (j + 1) / n);
+    }
+}
