@@ -8,6 +8,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -157,87 +158,76 @@ int vtkSkySource::RequestData(
   vtkPolyData* dome = vtkPolyData::GetData(outputVector, 1);
   map->Initialize();
   dome->Initialize();
-
   try
   {
-    terralux::requireFiniteParameters({ { "SunZenith", this->SunZenith }, { "SunAzimuth", this->SunAzimuth },
-      { "DiffuseHorizontalIrradiance", this->DiffuseHorizontalIrradiance },
-      { "DirectNormalIrradiance", this->DirectNormalIrradiance },
-      { "ExtraterrestrialIrradiance", this->ExtraterrestrialIrradiance }, { "DomeRadius", this->DomeRadius } });
-  }
-  catch (const terralux::Error& error)
-  {
-    vtkErrorMacro(<< error.what());
-    return 0;
-  }
-  double sunZenith = this->SunZenith, sunAzimuth = this->SunAzimuth;
-  double diffuse = this->DiffuseHorizontalIrradiance, direct = this->DirectNormalIrradiance;
-  double extraterrestrial = this->ExtraterrestrialIrradiance;
-  vtkDataObject* sun = vtkDataObject::GetData(inputVector[0], 0);
-  if (sun && this->UseSunSource)
-  {
-    if (!vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunZenithName(), &sunZenith, 1) ||
-      !vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunAzimuthName(), &sunAzimuth, 1) ||
-      !vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), &diffuse, 1) ||
-      !vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunNormalIrradianceName(), &direct, 1) ||
-      !vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::ExtraterrestrialIrradianceName(), &extraterrestrial, 1))
-    {
-      vtkErrorMacro("Input port 0 must be a vtkSunSource output (field data SunZenith, "
-                    "SunAzimuth, SunNormalIrradiance, DiffuseHorizontalIrradiance, "
-                    "ExtraterrestrialIrradiance); or turn UseSunSource off.");
-      return 0;
-    }
-  }
-  if (!std::isfinite(sunAzimuth))
-  {
-    vtkErrorMacro("SunAzimuth must be a finite number of degrees.");
-    return 0;
-  }
-  const terralux::Direction sunDirection =
-    terralux::directionFromZenithAzimuth(sunZenith * terralux::degree, sunAzimuth * terralux::degree);
-
-  std::unique_ptr<terralux::SkyHierarchy> sky;
-  std::unique_ptr<terralux::PerezSky> perez;
-  try
-  {
-    std::unique_ptr<terralux::SkyModel> model;
-    switch (this->SkyModel)
-    {
-      case CIE_GENERAL:
-        model = std::make_unique<terralux::CieGeneralSky>(this->SkyType, sunDirection);
-        break;
-      case CIE_OVERCAST:
-        model = std::make_unique<terralux::CieOvercastSky>();
-        break;
-      case PEREZ:
-        model = std::make_unique<terralux::PerezSky>(sunDirection, direct, diffuse, extraterrestrial);
-        break;
-      default:
-        model = std::make_unique<terralux::UniformSky>();
-    }
+    const SkyConditions conditions = this->Conditions(vtkDataObject::GetData(inputVector[0], 0));
+    std::unique_ptr<terralux::SkyModel> model = this->Model(conditions);
     terralux::SkyTexture texture;
     vtkImageData* textureImage = vtkImageData::GetData(inputVector[1], 0);
     if (textureImage)
-    {
       texture = textureFrom(textureImage);
-    }
-    sky = std::make_unique<terralux::SkyHierarchy>(
-      *model, diffuse, this->Levels, textureImage ? &texture : nullptr);
-    if (this->SkyModel == PEREZ)
-    {
-      perez.reset(static_cast<terralux::PerezSky*>(model.release()));
-    }
+    const terralux::SkyHierarchy sky(*model, conditions.diffuse, this->Levels, textureImage ? &texture : nullptr);
+    this->UpdateProgress(0.6);
+    this->FillRadianceMap(sky, conditions, dynamic_cast<const terralux::PerezSky*>(model.get()), map);
   }
   catch (const terralux::Error& error)
   {
     vtkErrorMacro(<< error.what());
+    map->Initialize();
     return 0;
   }
-  this->UpdateProgress(0.6);
+  this->FillDome(map->GetCellData()->GetArray("Radiance"), dome);
+  this->UpdateProgress(1.0);
+  return 1;
+}
 
+//------------------------------------------------------------------------------
+vtkSkySource::SkyConditions vtkSkySource::Conditions(vtkDataObject* sun) const
+{
+  terralux::requireFiniteParameters({ { "SunZenith", this->SunZenith }, { "SunAzimuth", this->SunAzimuth },
+    { "DiffuseHorizontalIrradiance", this->DiffuseHorizontalIrradiance },
+    { "DirectNormalIrradiance", this->DirectNormalIrradiance },
+    { "ExtraterrestrialIrradiance", this->ExtraterrestrialIrradiance }, { "DomeRadius", this->DomeRadius } });
+  SkyConditions c{ this->SunZenith, this->SunAzimuth, this->DiffuseHorizontalIrradiance,
+    this->DirectNormalIrradiance, this->ExtraterrestrialIrradiance };
+  if (sun && this->UseSunSource &&
+    !(vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunZenithName(), &c.sunZenith, 1) &&
+      vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunAzimuthName(), &c.sunAzimuth, 1) &&
+      vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), &c.diffuse, 1) &&
+      vtkTerraLuxFieldData::GetVector(sun, vtkTerraLuxFieldData::SunNormalIrradianceName(), &c.direct, 1) &&
+      vtkTerraLuxFieldData::GetVector(
+        sun, vtkTerraLuxFieldData::ExtraterrestrialIrradianceName(), &c.extraterrestrial, 1)))
+    throw terralux::Error("Input port 0 must be a vtkSunSource output (field data SunZenith, SunAzimuth, "
+                          "SunNormalIrradiance, DiffuseHorizontalIrradiance, ExtraterrestrialIrradiance); "
+                          "or turn UseSunSource off.");
+  return c;
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<terralux::SkyModel> vtkSkySource::Model(const SkyConditions& c) const
+{
+  const terralux::Direction sun =
+    terralux::directionFromZenithAzimuth(c.sunZenith * terralux::degree, c.sunAzimuth * terralux::degree);
+  switch (this->SkyModel)
+  {
+    case CIE_GENERAL:
+      return std::make_unique<terralux::CieGeneralSky>(this->SkyType, sun);
+    case CIE_OVERCAST:
+      return std::make_unique<terralux::CieOvercastSky>();
+    case PEREZ:
+      return std::make_unique<terralux::PerezSky>(sun, c.direct, c.diffuse, c.extraterrestrial);
+    default:
+      return std::make_unique<terralux::UniformSky>();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSkySource::FillRadianceMap(const terralux::SkyHierarchy& sky, const SkyConditions& conditions,
+  const terralux::PerezSky* perez, vtkImageData* map) const
+{
   // Map cell (i along compass azimuth, j along altitude): terralux::skyMapCell.
   const int n = 1 << this->Levels;
-  const int bands = sky->bands();
+  const int bands = sky.bands();
   map->SetExtent(0, n, 0, n, 0, 0);
   map->SetSpacing(360.0 / n, 90.0 / n, 1.0);
   map->SetOrigin(0.0, 0.0, 0.0);
@@ -249,33 +239,27 @@ int vtkSkySource::RequestData(
   solidAngle->SetName("SolidAngle");
   solidAngle->SetNumberOfTuples(static_cast<vtkIdType>(n) * n);
   for (int j = 0; j < n; ++j)
-  {
     for (int i = 0; i < n; ++i)
     {
       const terralux::SkyPatch patch = terralux::skyMapCell(this->Levels, i, j);
       const vtkIdType cell = i + static_cast<vtkIdType>(j) * n;
       for (int band = 0; band < bands; ++band)
-      {
-        radiance->SetComponent(cell, band, sky->radiance(patch, band));
-      }
+        radiance->SetComponent(cell, band, sky.radiance(patch, band));
       solidAngle->SetValue(cell, patch.solidAngle());
     }
-  }
   map->GetCellData()->AddArray(radiance);
   map->GetCellData()->SetScalars(radiance);
   map->GetCellData()->AddArray(solidAngle);
 
   vtkFieldData* fieldData = map->GetFieldData();
-  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), diffuse);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), conditions.diffuse);
   std::vector<double> horizontal(bands);
   for (int band = 0; band < bands; ++band)
-  {
-    horizontal[band] = sky->horizontalIrradiance(band);
-  }
+    horizontal[band] = sky.horizontalIrradiance(band);
   vtkTerraLuxFieldData::AddVector(fieldData, "HorizontalIrradiance", horizontal.data(), bands);
-  vtkTerraLuxFieldData::AddValue(fieldData, "RadianceScale", sky->radianceScale());
-  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunZenithName(), sunZenith);
-  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunAzimuthName(), sunAzimuth);
+  vtkTerraLuxFieldData::AddValue(fieldData, "RadianceScale", sky.radianceScale());
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunZenithName(), conditions.sunZenith);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunAzimuthName(), conditions.sunAzimuth);
   if (perez)
   {
     vtkTerraLuxFieldData::AddValue(fieldData, "SkyClearness", perez->clearness());
@@ -285,8 +269,13 @@ int vtkSkySource::RequestData(
   name->SetName("SkyModel");
   name->InsertNextValue(modelName(this->SkyModel, this->SkyType));
   fieldData->AddArray(name);
+}
 
-  // Dome: the map's cell corners on a hemisphere.
+//------------------------------------------------------------------------------
+void vtkSkySource::FillDome(vtkDataArray* radiance, vtkPolyData* dome) const
+{
+  // The map's cell corners on a hemisphere of DomeRadius, its cells as quads.
+  const int n = 1 << this->Levels;
   vtkNew<vtkPoints> points;
   points->SetNumberOfPoints(static_cast<vtkIdType>(n + 1) * (n + 1));
   for (int j = 0; j <= n; ++j)
@@ -298,20 +287,16 @@ int vtkSkySource::RequestData(
     }
   vtkNew<vtkCellArray> quads;
   for (int j = 0; j < n; ++j)
-  {
     for (int i = 0; i < n; ++i)
     {
       const vtkIdType a = i + static_cast<vtkIdType>(j) * (n + 1);
       const vtkIdType ids[4] = { a, a + n + 1, a + n + 2, a + 1 }; // normals point inward
       quads->InsertNextCell(4, ids);
     }
-  }
   dome->SetPoints(points);
   dome->SetPolys(quads);
   dome->GetCellData()->AddArray(radiance);
   dome->GetCellData()->SetScalars(radiance);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

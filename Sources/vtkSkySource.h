@@ -40,8 +40,18 @@
 #include "TerraLuxSourcesModule.h" // For export macro
 #include "vtkDataObjectAlgorithm.h"
 
+#include <memory> // For std::unique_ptr
+
+class vtkDataArray;
 class vtkImageData;
 class vtkPolyData;
+
+namespace terralux
+{
+class PerezSky;
+class SkyHierarchy;
+class SkyModel;
+}
 
 class TERRALUXSOURCES_EXPORT vtkSkySource : public vtkDataObjectAlgorithm
 {
@@ -162,6 +172,18 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  // RequestData's steps; they throw terralux::Error on bad input.
+  struct SkyConditions
+  {
+    double sunZenith, sunAzimuth, diffuse, direct, extraterrestrial; // degrees, W/m^2
+  };
+  // The sun and irradiances: the connected vtkSunSource's, or the properties.
+  SkyConditions Conditions(vtkDataObject* sun) const;
+  std::unique_ptr<terralux::SkyModel> Model(const SkyConditions& conditions) const;
+  void FillRadianceMap(const terralux::SkyHierarchy& sky, const SkyConditions& conditions,
+    const terralux::PerezSky* perez, vtkImageData* map) const;
+  void FillDome(vtkDataArray* radiance, vtkPolyData* dome) const;
 
   int SkyModel;
   int SkyType;
