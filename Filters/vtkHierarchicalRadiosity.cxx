@@ -66,6 +66,87 @@ public:
 private:
   vtkHierarchicalRadiosity* Filter;
 };
+// Output 0: the inputs, same points and cells and the same composite structure (several
+// connections: a multiblock of them), with the point arrays; a terrain piece's posts
+// only when `pieceExtent` is given.
+void addPointArrays(vtkInformationVector* geometry, const terralux::HierarchicalRadiosity& solver,
+  const vtkRadiosityScene& scene, vtkRadiosityOutputs::PointOptions pointOptions, const int* pieceExtent,
+  vtkDataObject* output)
+{
+  int index = 0;
+  auto withResults = [&](vtkDataSet* input) {
+    vtkSmartPointer<vtkDataSet> copy;
+    copy.TakeReference(input->NewInstance());
+    copy->ShallowCopy(input);
+    vtkRadiosityOutputs::AddPointArrays(solver, scene, index++, pointOptions, copy);
+    return copy;
+  };
+  auto copyComposite = [&](vtkCompositeDataSet* input) {
+    vtkSmartPointer<vtkCompositeDataSet> copy;
+    copy.TakeReference(input->NewInstance());
+    copy->CopyStructure(input);
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(input->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+        copy->SetDataSet(it, withResults(dataSet));
+    return copy;
+  };
+  const int connections = geometry->GetNumberOfInformationObjects();
+  auto inputAt = [&](int k) { return geometry->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()); };
+  if (connections == 1 && vtkCompositeDataSet::SafeDownCast(inputAt(0)))
+  {
+    output->ShallowCopy(copyComposite(vtkCompositeDataSet::SafeDownCast(inputAt(0))));
+  }
+  else if (auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(output))
+  {
+    multiblock->SetNumberOfBlocks(static_cast<unsigned int>(connections));
+    for (int k = 0; k < connections; ++k)
+    {
+      vtkDataObject* input = inputAt(k);
+      if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+        multiblock->SetBlock(static_cast<unsigned int>(k), copyComposite(composite));
+      else if (auto* dataSet = vtkDataSet::SafeDownCast(input))
+        multiblock->SetBlock(static_cast<unsigned int>(k), withResults(dataSet));
+    }
+  }
+  else
+  {
+    auto* dataSet = vtkDataSet::SafeDownCast(output);
+    dataSet->ShallowCopy(scene.Inputs[0].data);
+    if (pieceExtent)
+      std::copy(pieceExtent, pieceExtent + 4, pointOptions.posts); // only the piece's posts
+    vtkRadiosityOutputs::AddPointArrays(solver, scene, 0, pointOptions, dataSet);
+    if (pieceExtent)
+      vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), pieceExtent);
+  }
+}
+
+// Field data: sizes, rays and seconds per phase, so a user sees where the time went.
+void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
+  double secondsPoints, vtkFieldData* fieldData)
+{
+  const terralux::RadiosityStatistics& stats = solver.statistics();
+  auto addValue = [&](const char* name, double value) { vtkRadiosityOutputs::AddFieldValue(fieldData, name, value); };
+  addValue("Elements", static_cast<double>(stats.elements));
+  addValue("Links", static_cast<double>(stats.links));
+  addValue("Rays", static_cast<double>(solver.raysCast())); // the solve's and the points'
+  addValue("Iterations", stats.iterations);
+  addValue("Residual", stats.residual);
+  addValue("DegeneratePolygons", static_cast<double>(solver.degeneratePolygons()));
+  addValue("SkippedCells", static_cast<double>(scene.SkippedCells)); // vertices, lines: no area
+  addValue("SecondsVisibilityBuild", stats.secondsVisibilityBuild);
+  addValue("SecondsRefine", stats.secondsRefine);
+  addValue("SecondsGather", stats.secondsGather);
+  addValue("SecondsPushPull", stats.secondsPushPull);
+  addValue("SecondsHorizons", stats.secondsHorizons);
+  addValue("SecondsPoints", secondsPoints);
+  addValue("RaysRefine", static_cast<double>(stats.raysRefine));
+  addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
+  addValue("RaysPoints", static_cast<double>(solver.raysCast() - stats.rays));
+
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -282,31 +363,26 @@ int vtkHierarchicalRadiosity::RequestData(
 }
 
 //------------------------------------------------------------------------------
-int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const PieceRequest& piece,
-  vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links)
+std::unique_ptr<vtkRadiosityScene> vtkHierarchicalRadiosity::BuildScene(vtkInformationVector** inputVector)
 {
   terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
     { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
     { "DefaultReflectance", this->DefaultReflectance }, { "GatherError", this->GatherError } });
   this->CheckCellArraysToProcess();
-  auto ownScene = std::make_unique<vtkRadiosityScene>();
-  vtkRadiosityScene& scene = *ownScene;
-  const std::vector<vtkDataSet*> inputs = inputDataSets(inputVector[0]);
-  for (vtkDataSet* input : inputs)
-  {
-    scene.AddDataSet(input, this->DefaultReflectance, this->CellArrayToProcess(ReflectanceArray),
+  auto scene = std::make_unique<vtkRadiosityScene>();
+  for (vtkDataSet* input : inputDataSets(inputVector[0]))
+    scene->AddDataSet(input, this->DefaultReflectance, this->CellArrayToProcess(ReflectanceArray),
       this->CellArrayToProcess(EmissionArray), this->UseTerrainHierarchy != 0);
-  }
-  if (!this->AddLights(inputVector, scene) && !scene.HasEmission)
-  {
+  if (!this->AddLights(inputVector, *scene) && !scene->HasEmission)
     throw terralux::Error("no light source: connect a vtkSunSource or vtkSkySource with "
                           "AddLightConnection(), or give an EmissionArrayName");
-  }
-  if (this->GetAbortExecute()) // asked while the lights were made (vtkSolarIrradiation's steps)
-  {
-    vtkWarningMacro("Aborted.");
-    return 1;
-  }
+  return scene;
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<terralux::HierarchicalRadiosity> vtkHierarchicalRadiosity::MakeSolver(
+  std::unique_ptr<vtkRadiosityScene>& scene)
+{
   terralux::RadiosityOptions options;
   options.errorTolerance = this->ErrorTolerance;
   options.minimumElementArea = this->MinimumElementArea;
@@ -317,17 +393,33 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   options.maximumIterations = this->MaximumIterations;
   options.convergenceTolerance = this->ConvergenceTolerance;
   options.maximumElements = static_cast<std::size_t>(this->MaximumNumberOfElements);
-  if (!this->ReuseGeometry || (this->Geometry && !this->Geometry->Rays->sameShape(scene.Scene)))
+  if (!this->ReuseGeometry || (this->Geometry && !this->Geometry->Rays->sameShape(scene->Scene)))
     this->Geometry.reset(); // before the new geometry is built: never two at once
   auto solver = std::make_unique<terralux::HierarchicalRadiosity>(
-    scene.Scene, options, this->Geometry ? this->Geometry->Rays : nullptr);
+    scene->Scene, options, this->Geometry ? this->Geometry->Rays : nullptr);
   if (this->ReuseGeometry && (!this->Geometry || solver->geometry() != this->Geometry->Rays))
   {
-    // Built anew: kept with the scene whose terrain grids it shares.
+    // Built anew: kept with the scene whose terrain grids it shares (which the cache
+    // now owns; the caller's references to it stay valid).
     this->Geometry = std::make_unique<GeometryCache>();
     this->Geometry->Rays = solver->geometry();
-    this->Geometry->Scene = std::move(ownScene);
+    this->Geometry->Scene = std::move(scene);
   }
+  return solver;
+}
+
+//------------------------------------------------------------------------------
+int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const PieceRequest& piece,
+  vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links)
+{
+  std::unique_ptr<vtkRadiosityScene> ownScene = this->BuildScene(inputVector);
+  vtkRadiosityScene& scene = *ownScene;
+  if (this->GetAbortExecute()) // asked while the lights were made (vtkSolarIrradiation's steps)
+  {
+    vtkWarningMacro("Aborted.");
+    return 1;
+  }
+  std::unique_ptr<terralux::HierarchicalRadiosity> solver = this->MakeSolver(ownScene);
   if (solver->degeneratePolygons() > 0)
   {
     vtkWarningMacro("Skipped " << solver->degeneratePolygons()
@@ -383,73 +475,10 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;
   pointOptions.hornNormals = hornNormals;
   pointOptions.sunshine = scene.SunshineDuration;
-  int index = 0;
-  auto withResults = [&](vtkDataSet* input) {
-    vtkSmartPointer<vtkDataSet> copy;
-    copy.TakeReference(input->NewInstance());
-    copy->ShallowCopy(input);
-    vtkRadiosityOutputs::AddPointArrays(*solver, scene, index++, pointOptions, copy);
-    return copy;
-  };
-  auto copyComposite = [&](vtkCompositeDataSet* input) {
-    vtkSmartPointer<vtkCompositeDataSet> copy;
-    copy.TakeReference(input->NewInstance());
-    copy->CopyStructure(input);
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(input->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-      if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
-        copy->SetDataSet(it, withResults(dataSet));
-    return copy;
-  };
-  const int connections = inputVector[0]->GetNumberOfInformationObjects();
-  auto inputAt = [&](int k) { return inputVector[0]->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()); };
-  if (connections == 1 && vtkCompositeDataSet::SafeDownCast(inputAt(0)))
-  {
-    output->ShallowCopy(copyComposite(vtkCompositeDataSet::SafeDownCast(inputAt(0))));
-  }
-  else if (auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(output))
-  {
-    multiblock->SetNumberOfBlocks(static_cast<unsigned int>(connections));
-    for (int k = 0; k < connections; ++k)
-    {
-      vtkDataObject* input = inputAt(k);
-      if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-        multiblock->SetBlock(static_cast<unsigned int>(k), copyComposite(composite));
-      else if (auto* dataSet = vtkDataSet::SafeDownCast(input))
-        multiblock->SetBlock(static_cast<unsigned int>(k), withResults(dataSet));
-    }
-  }
-  else
-  {
-    auto* dataSet = vtkDataSet::SafeDownCast(output);
-    dataSet->ShallowCopy(scene.Inputs[0].data);
-    if (piece.extent)
-      std::copy(piece.extent, piece.extent + 4, pointOptions.posts); // only the piece's posts
-    vtkRadiosityOutputs::AddPointArrays(*solver, scene, 0, pointOptions, dataSet);
-    if (piece.extent)
-      vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), piece.extent);
-  }
+  addPointArrays(inputVector[0], *solver, scene, pointOptions, piece.extent, output);
   const double secondsPoints =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
-  vtkFieldData* fieldData = output->GetFieldData();
-  auto addValue = [&](const char* name, double value) { vtkRadiosityOutputs::AddFieldValue(fieldData, name, value); };
-  addValue("Elements", static_cast<double>(stats.elements));
-  addValue("Links", static_cast<double>(stats.links));
-  addValue("Rays", static_cast<double>(solver->raysCast())); // the solve's and the points'
-  addValue("Iterations", stats.iterations);
-  addValue("Residual", stats.residual);
-  addValue("DegeneratePolygons", static_cast<double>(solver->degeneratePolygons()));
-  addValue("SkippedCells", static_cast<double>(scene.SkippedCells)); // vertices, lines: no area
-  addValue("SecondsVisibilityBuild", stats.secondsVisibilityBuild);
-  addValue("SecondsRefine", stats.secondsRefine);
-  addValue("SecondsGather", stats.secondsGather);
-  addValue("SecondsPushPull", stats.secondsPushPull);
-  addValue("SecondsHorizons", stats.secondsHorizons);
-  addValue("SecondsPoints", secondsPoints);
-  addValue("RaysRefine", static_cast<double>(stats.raysRefine));
-  addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
-  addValue("RaysPoints", static_cast<double>(solver->raysCast() - stats.rays));
+  addStatistics(*solver, scene, secondsPoints, output->GetFieldData());
 
   if (piece.withMeshAndLinks)
   {

@@ -76,6 +76,10 @@
 
 class vtkPolyData;
 class vtkRadiosityScene;
+namespace terralux
+{
+class HierarchicalRadiosity;
+}
 
 class TERRALUXFILTERS_EXPORT vtkHierarchicalRadiosity : public vtkDataObjectAlgorithm
 {
@@ -363,6 +367,13 @@ protected:
     const int* extent;
     bool withMeshAndLinks;
   };
+  // The engine's scene of the geometry inputs and the lights; throws terralux::Error on
+  // bad input.
+  std::unique_ptr<vtkRadiosityScene> BuildScene(vtkInformationVector** inputVector);
+  // A solver of the scene with this filter's options, over the kept geometry where the
+  // scene has its shape (ReuseGeometry); a new geometry is kept with `scene`, which it
+  // then owns.
+  std::unique_ptr<terralux::HierarchicalRadiosity> MakeSolver(std::unique_ptr<vtkRadiosityScene>& scene);
   // RequestData's work; throws terralux::Error on bad input.
   int Solve(vtkInformationVector** inputVector, const PieceRequest& piece, vtkDataObject* output,
     vtkPolyData* leafMesh, vtkPolyData* links);
