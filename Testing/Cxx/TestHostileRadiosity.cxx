@@ -29,6 +29,7 @@
 #include <cmath>
 #include <vector>
 
+using terralux_test::fieldValue;
 using terralux_test::MessageCatcher;
 using terralux_test::runPipeline;
 using terralux_test::triangle;
@@ -164,7 +165,7 @@ TEST(HostileRadiosity, RunawayToleranceStopsAtTheElementBudget)
   EXPECT_NE(messages->Warnings.find("MaximumNumberOfElements"), std::string::npos) << messages->Warnings;
   auto* out = vtkMultiBlockDataSet::SafeDownCast(radiosity->GetOutput());
   ASSERT_NE(out, nullptr);
-  const double elements = out->GetFieldData()->GetArray("Elements")->GetComponent(0, 0);
+  const double elements = fieldValue(out, "Elements");
   EXPECT_LE(elements, 20000 + 4 * 5000); // the last refinement pass may finish its splits
   auto* ground = vtkDataSet::SafeDownCast(out->GetBlock(0));
   const double mean = meanOf(ground, "Irradiance");
@@ -317,7 +318,7 @@ TEST(HostileRadiosity, BrightClosedBoxConvergesAndWarnsWhenStoppedEarly)
   EXPECT_EQ(messages->Warnings.find("did not converge"), std::string::npos) << messages->Warnings;
   auto* out = vtkDataSet::SafeDownCast(radiosity->GetOutput());
   EXPECT_NEAR(meanOf(out, "Radiosity"), 100000.0, 1000.0);
-  EXPECT_LE(out->GetFieldData()->GetArray("Iterations")->GetComponent(0, 0), 30);
+  EXPECT_LE(fieldValue(out, "Iterations"), 30);
 
   radiosity->SetMaximumIterations(3);
   vtkNew<MessageCatcher> early;
@@ -560,8 +561,7 @@ TEST(HostileRadiosity, SunBelowTheHorizonCostsNothing)
   };
   auto without = solve(false), with = solve(true);
   for (const char* name : { "Elements", "Links" })
-    EXPECT_EQ(with->GetFieldData()->GetArray(name)->GetComponent(0, 0),
-      without->GetFieldData()->GetArray(name)->GetComponent(0, 0)) << name;
+    EXPECT_EQ(fieldValue(with, name), fieldValue(without, name)) << name;
   auto* lit = vtkDataSet::SafeDownCast(with);
   vtkDataArray* sunIrradiance = lit->GetPointData()->GetArray("SunIrradiance");
   for (vtkIdType k = 0; k < sunIrradiance->GetNumberOfTuples(); ++k)

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <map>
 
+using terralux_test::fieldValue;
 using terralux_test::MessageCatcher;
 using terralux_test::runPipeline;
 
@@ -56,10 +57,6 @@ struct Lights
   }
 };
 
-double fieldValue(vtkDataObject* data, const char* name)
-{
-  return data->GetFieldData()->GetArray(name)->GetComponent(0, 0);
-}
 } // namespace
 
 TEST(RadiosityFilter, PlaneUnderSunAndSkyMatchesClosedForm)

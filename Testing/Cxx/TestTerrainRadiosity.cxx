@@ -30,6 +30,7 @@
 #include <map>
 #include <string>
 
+using terralux_test::fieldValue;
 using terralux_test::MessageCatcher;
 using terralux_test::RasterSpec;
 using terralux_test::runPipeline;
@@ -146,7 +147,7 @@ TEST(TerrainRadiosity, PathsAgreeAndMatchClosedFormsOnPlanesAndAHill)
     EXPECT_LT(relativeRms(array(patches, "SkyIrradiance"), array(triangles, "SkyIrradiance")), 0.01);
     EXPECT_LT(relativeRms(array(patches, "SkyViewFactor"), array(triangles, "SkyViewFactor")), 0.01);
     // Fewer elements than the plain path's 2 x 64 x 64 triangles.
-    EXPECT_LT(patches->GetFieldData()->GetArray("Elements")->GetComponent(0, 0), 2 * 64 * 64);
+    EXPECT_LT(fieldValue(patches, "Elements"), 2 * 64 * 64);
     if (c.slope < 0.0)
       continue;
     // Planes: direct sun E cos(incidence) everywhere, sky pi L (1 + cos slope) / 2.
@@ -443,9 +444,7 @@ TEST(TerrainRadiosity, AMovingSunReusesTheGeometryAndMatchesAFreshFilter)
   const RasterSpec spec = demSpec([](double x, double y) { return 40.0 * std::sin(x / 90.0) * std::cos(y / 70.0); });
   LitTerrain lit("reuse.tif", spec, "2024-06-21T09:00:00+02:00");
   auto morning = lit.run(true);
-  auto seconds = [&](const char* name) {
-    return lit.radiosity->GetOutput()->GetFieldData()->GetArray(name)->GetComponent(0, 0);
-  };
+  auto seconds = [&](const char* name) { return fieldValue(lit.radiosity->GetOutput(), name); };
   EXPECT_GT(seconds("SecondsVisibilityBuild"), 0.0);
 
   lit.sun->SetDateTime("2024-06-21T16:00:00+02:00");

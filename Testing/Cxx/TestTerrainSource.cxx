@@ -26,6 +26,7 @@
 #include <fstream>
 #include <functional>
 
+using terralux_test::fieldValue;
 using terralux_test::MessageCatcher;
 using terralux_test::RasterSpec;
 using terralux_test::runPipeline;
@@ -64,12 +65,6 @@ struct Terrain
   }
 };
 
-double fieldValue(vtkDataObject* data, const char* name, int k)
-{
-  vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  // Value k, whether the array holds tuples of one value or one tuple of several.
-  return array ? array->GetComponent(k / array->GetNumberOfComponents(), k % array->GetNumberOfComponents()) : NAN;
-}
 
 // Every output point against GeographicLib: raster post (i, row) -> map (affine,
 // by hand) -> geodetic (the given inverse projection) -> ENU about GeoOrigin.

@@ -6,12 +6,14 @@
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkReverseSense.h"
 #include "vtkSmartPointer.h"
 #include "vtkTriangleFilter.h"
 
+#include <cmath>
 #include <string>
 
 namespace terralux_test
@@ -32,6 +34,14 @@ public:
 
 /// Runs the algorithm; returns the executive's status (0 when RequestData failed).
 /// Error and warning messages land in `messages` instead of the terminal.
+/// Value k of field array `name` of `data`, whether the array holds tuples of one value
+/// or one tuple of several (GeoOrigin); NaN if there is no such array.
+inline double fieldValue(vtkDataObject* data, const char* name, int k = 0)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetComponent(k / array->GetNumberOfComponents(), k % array->GetNumberOfComponents()) : NAN;
+}
+
 inline int runPipeline(vtkAlgorithm* algorithm, MessageCatcher* messages)
 {
   const unsigned long a = algorithm->AddObserver(vtkCommand::ErrorEvent, messages);

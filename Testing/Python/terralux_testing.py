@@ -1,4 +1,4 @@
-"""Helpers shared by the Python tests: paths and error capture."""
+"""Helpers shared by the Python tests: paths, field data and error capture."""
 import os
 import tempfile
 
@@ -24,6 +24,18 @@ def terrain_sun_sky(dem, when, sky_levels=6):
     sky.SetSunConnection(sun.GetOutputPort())
     sky.SetLevels(sky_levels)
     return terrain, sun, sky
+
+
+def field_values(data, name):
+    """Every value of field array `name` of `data` (tuples of one value, or one tuple of
+    several: GeoOrigin and SunDirection are one tuple of three)."""
+    array = data.GetFieldData().GetArray(name)
+    return [array.GetValue(k) for k in range(array.GetNumberOfValues())]
+
+
+def field(data, name, k=0):
+    """Value k of field array `name` of `data`."""
+    return field_values(data, name)[k]
 
 
 def scratch_dir():

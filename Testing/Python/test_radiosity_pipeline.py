@@ -8,11 +8,8 @@ import unittest
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter, vtkXMLStructuredGridReader, vtkXMLStructuredGridWriter
 
 from terralux import vtkHierarchicalRadiosity, vtkTerrainRasterWriter
-from terralux_testing import LUXEMBOURG, OLINDA, ErrorCatcher, scratch_dir, terrain_sun_sky
+from terralux_testing import LUXEMBOURG, OLINDA, ErrorCatcher, field, scratch_dir, terrain_sun_sky
 
-
-def field(data, name):
-    return data.GetFieldData().GetArray(name).GetValue(0)
 
 
 class OlindaRadiosity(unittest.TestCase):

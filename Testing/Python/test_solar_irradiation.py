@@ -18,7 +18,7 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 
 from terralux import vtkHierarchicalRadiosity, vtkSkySource, vtkSolarIrradiation, vtkSunSource, vtkTerrainSource
-from terralux_testing import OLINDA, ErrorCatcher, scratch_dir
+from terralux_testing import OLINDA, ErrorCatcher, field_values, scratch_dir
 
 SUMS = ("GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation")
 DAY = ("2024-06-21T00:00:00+01:00", "2024-06-22T00:00:00+01:00")
@@ -28,10 +28,6 @@ OLINDA_DAY = ("2024-06-21T00:00:00-02:00", "2024-06-22T00:00:00-02:00")
 def values(data, name):
     return vtk_to_numpy(data.GetPointData().GetArray(name)).astype(float)
 
-
-def field_values(data, name):
-    array = data.GetFieldData().GetArray(name)
-    return [array.GetValue(k) for k in range(array.GetNumberOfTuples())]
 
 
 def open_plane():

@@ -6,11 +6,8 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkCommonCore import vtkFloatArray
 
 from terralux import vtkSkySource
-from terralux_testing import OLINDA, ErrorCatcher, terrain_sun_sky
+from terralux_testing import OLINDA, ErrorCatcher, field, terrain_sun_sky
 
-
-def field(data, name, k=0):
-    return data.GetFieldData().GetArray(name).GetValue(k)
 
 
 def map_horizontal_irradiance(image, band=0):

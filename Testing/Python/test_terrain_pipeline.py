@@ -11,12 +11,8 @@ from vtkmodules.vtkIOImage import vtkDEMReader
 from vtkmodules.vtkIOXML import vtkXMLStructuredGridReader, vtkXMLStructuredGridWriter
 
 from terralux import vtkGeodeticFrame, vtkTerrainSource
-from terralux_testing import LUXEMBOURG, OLINDA, ErrorCatcher, scratch_dir
+from terralux_testing import LUXEMBOURG, OLINDA, ErrorCatcher, field_values, scratch_dir
 
-
-def field_values(data, name):
-    array = data.GetFieldData().GetArray(name)
-    return [array.GetValue(i) for i in range(array.GetNumberOfValues())]
 
 
 def hidden_count(grid):
