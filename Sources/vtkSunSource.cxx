@@ -21,6 +21,7 @@
 #include "finite_parameters.h"
 #include "vtkTerraLuxFieldData.h"
 
+#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(vtkSunSource);
@@ -77,6 +78,74 @@ int vtkSunSource::RequestUpdateExtent(
   return 1;
 }
 
+namespace
+{
+// NREL SPA for `sun`'s settings at `place` (latitude, longitude, height) and its
+// DateTime, which `instant` gets; throws terralux::Error naming a bad setting.
+terralux::SolarPosition solarPosition(vtkSunSource* sun, const double place[3], terralux::DateTime& instant)
+{
+  terralux::requireFiniteParameters({ { "Latitude", place[0] }, { "Longitude", place[1] }, { "Height", place[2] },
+    { "Pressure", sun->GetPressure() }, { "Temperature", sun->GetTemperature() }, { "DeltaT", sun->GetDeltaT() },
+    { "LinkeTurbidity", sun->GetLinkeTurbidity() }, { "SolarConstant", sun->GetSolarConstant() },
+    { "UserNormalIrradiance", sun->GetUserNormalIrradiance() },
+    { "UserDiffuseHorizontalIrradiance", sun->GetUserDiffuseHorizontalIrradiance() },
+    { "DisplayDistance", sun->GetDisplayDistance() } });
+  if (!(std::abs(place[1]) <= 360.0))
+    throw terralux::Error("Longitude " + std::to_string(place[1]) +
+      " is out of range: give degrees east in [-180, 180] (or [0, 360])");
+  if (!(place[2] >= -12000.0 && place[2] <= 100000.0))
+    throw terralux::Error("Height " + std::to_string(place[2]) +
+      " m is out of range: give metres above the ellipsoid in [-12000, 100000]");
+  instant = terralux::DateTime::parse(sun->GetDateTime() ? sun->GetDateTime() : "");
+  terralux::SolarPositionInput in;
+  in.julianDayUT = instant.julianDay();
+  in.deltaT = sun->GetDeltaT();
+  in.latitudeDeg = place[0];
+  in.longitudeDeg = place[1];
+  in.heightM = place[2];
+  in.pressureHPa = sun->GetPressure();
+  in.temperatureC = sun->GetTemperature();
+  in.refraction = sun->GetAtmosphericRefraction() != 0;
+  return terralux::computeSolarPosition(in);
+}
+
+// The output: one vertex at DisplayDistance toward the sun, and the field data of the
+// sun's results (what vtkSkySource and vtkHierarchicalRadiosity read).
+void fillOutput(vtkSunSource* sun, double globalHorizontal, const double place[3], const terralux::DateTime& instant,
+  vtkPolyData* output)
+{
+  const double* d = sun->GetDirection();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->InsertNextPoint(sun->GetDisplayDistance() * d[0], sun->GetDisplayDistance() * d[1],
+    sun->GetDisplayDistance() * d[2]);
+  vtkNew<vtkCellArray> vertices;
+  const vtkIdType vertex = 0;
+  vertices->InsertNextCell(1, &vertex);
+  output->SetPoints(points);
+  output->SetVerts(vertices);
+
+  vtkFieldData* fieldData = output->GetFieldData();
+  vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::SunDirectionName(), d, 3);
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunZenithName(), sun->GetZenith());
+  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunAzimuthName(), sun->GetAzimuth());
+  vtkTerraLuxFieldData::AddValue(fieldData, "SunAltitude", 90.0 - sun->GetZenith());
+  vtkTerraLuxFieldData::AddValue(
+    fieldData, vtkTerraLuxFieldData::SunNormalIrradianceName(), sun->GetNormalIrradiance());
+  vtkTerraLuxFieldData::AddValue(
+    fieldData, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), sun->GetDiffuseHorizontalIrradiance());
+  vtkTerraLuxFieldData::AddValue(fieldData, "GlobalHorizontalIrradiance", globalHorizontal);
+  vtkTerraLuxFieldData::AddValue(
+    fieldData, vtkTerraLuxFieldData::ExtraterrestrialIrradianceName(), sun->GetExtraterrestrialIrradiance());
+  vtkTerraLuxFieldData::AddValue(fieldData, "EarthSunDistance", sun->GetEarthSunDistance());
+  vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::GeoOriginName(), place, 3);
+  auto utc = vtkSmartPointer<vtkStringArray>::New();
+  utc->SetName("DateTime");
+  utc->InsertNextValue(instant.toUtcString());
+  fieldData->AddArray(utc);
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 int vtkSunSource::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -94,38 +163,11 @@ int vtkSunSource::RequestData(
       return 0;
     }
   }
-
   terralux::SolarPosition position;
   terralux::DateTime instant;
   try
   {
-    terralux::requireFiniteParameters({ { "Latitude", place[0] }, { "Longitude", place[1] },
-      { "Height", place[2] }, { "Pressure", this->Pressure }, { "Temperature", this->Temperature },
-      { "DeltaT", this->DeltaT }, { "LinkeTurbidity", this->LinkeTurbidity },
-      { "SolarConstant", this->SolarConstant }, { "UserNormalIrradiance", this->UserNormalIrradiance },
-      { "UserDiffuseHorizontalIrradiance", this->UserDiffuseHorizontalIrradiance },
-      { "DisplayDistance", this->DisplayDistance } });
-    if (!(std::abs(place[1]) <= 360.0))
-    {
-      throw terralux::Error("Longitude " + std::to_string(place[1]) +
-        " is out of range: give degrees east in [-180, 180] (or [0, 360])");
-    }
-    if (!(place[2] >= -12000.0 && place[2] <= 100000.0))
-    {
-      throw terralux::Error("Height " + std::to_string(place[2]) +
-        " m is out of range: give metres above the ellipsoid in [-12000, 100000]");
-    }
-    instant = terralux::DateTime::parse(this->DateTime ? this->DateTime : "");
-    terralux::SolarPositionInput in;
-    in.julianDayUT = instant.julianDay();
-    in.deltaT = this->DeltaT;
-    in.latitudeDeg = place[0];
-    in.longitudeDeg = place[1];
-    in.heightM = place[2];
-    in.pressureHPa = this->Pressure;
-    in.temperatureC = this->Temperature;
-    in.refraction = this->AtmosphericRefraction != 0;
-    position = terralux::computeSolarPosition(in);
+    position = solarPosition(this, place, instant);
   }
   catch (const terralux::Error& error)
   {
@@ -137,14 +179,10 @@ int vtkSunSource::RequestData(
     terralux::directionFromZenithAzimuth(position.zenithDeg * terralux::degree, position.azimuthDeg * terralux::degree);
   this->Zenith = position.zenithDeg;
   this->Azimuth = position.azimuthDeg;
-  for (int k = 0; k < 3; ++k)
-  {
-    this->Direction[k] = direction[k];
-  }
+  std::copy(direction.begin(), direction.end(), this->Direction);
   this->EarthSunDistance = position.earthSunDistanceAU;
   this->ExtraterrestrialIrradiance =
     this->SolarConstant / (position.earthSunDistanceAU * position.earthSunDistanceAU);
-
   const terralux::ClearSkyIrradiance irradiance = this->IrradianceModel == USER
     ? terralux::givenIrradiance(position.zenithDeg, this->UserNormalIrradiance, this->UserDiffuseHorizontalIrradiance)
     : terralux::clearSkyIrradiance(
@@ -153,32 +191,7 @@ int vtkSunSource::RequestData(
         this->ExtraterrestrialIrradiance);
   this->NormalIrradiance = irradiance.directNormalWm2;
   this->DiffuseHorizontalIrradiance = irradiance.diffuseHorizontalWm2;
-
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->InsertNextPoint(this->DisplayDistance * direction[0],
-    this->DisplayDistance * direction[1], this->DisplayDistance * direction[2]);
-  vtkNew<vtkCellArray> vertices;
-  const vtkIdType vertex = 0;
-  vertices->InsertNextCell(1, &vertex);
-  output->SetPoints(points);
-  output->SetVerts(vertices);
-
-  vtkFieldData* fieldData = output->GetFieldData();
-  vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::SunDirectionName(), this->Direction, 3);
-  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunZenithName(), this->Zenith);
-  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunAzimuthName(), this->Azimuth);
-  vtkTerraLuxFieldData::AddValue(fieldData, "SunAltitude", 90.0 - this->Zenith);
-  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::SunNormalIrradianceName(), this->NormalIrradiance);
-  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::DiffuseHorizontalIrradianceName(), this->DiffuseHorizontalIrradiance);
-  vtkTerraLuxFieldData::AddValue(fieldData, "GlobalHorizontalIrradiance", irradiance.globalHorizontalWm2);
-  vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::ExtraterrestrialIrradianceName(), this->ExtraterrestrialIrradiance);
-  vtkTerraLuxFieldData::AddValue(fieldData, "EarthSunDistance", this->EarthSunDistance);
-  vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::GeoOriginName(), place, 3);
-  auto utc = vtkSmartPointer<vtkStringArray>::New();
-  utc->SetName("DateTime");
-  utc->InsertNextValue(instant.toUtcString());
-  fieldData->AddArray(utc);
+  fillOutput(this, irradiance.globalHorizontalWm2, place, instant, output);
   return 1;
 }
 
