@@ -28,10 +28,23 @@ std::uint64_t Visibility::raysCast() const
   return total;
 }
 
+namespace
+{
+// One Embree device for the process, created on first use and never released. A
+// Visibility may outlive main (a filter keeping its geometry, destroyed with ParaView's
+// process module among the static destructors at exit); releasing a device then waits
+// forever on Embree's global state, already torn down. Scenes are released as usual.
+RTCDevice processDevice()
+{
+  static RTCDevice device = rtcNewDevice("verbose=0");
+  return device;
+}
+} // namespace
+
 Visibility::Visibility(const RadiosityScene& scene)
   : Rays(std::make_unique<RayCounters>())
 {
-  this->Device = rtcNewDevice("verbose=0");
+  this->Device = processDevice();
   if (!this->Device)
   {
     throw Error("Embree could not create a device");
@@ -218,8 +231,6 @@ Visibility::~Visibility()
 {
   if (this->Scene)
     rtcReleaseScene(this->Scene);
-  if (this->Device)
-    rtcReleaseDevice(this->Device);
 }
 
 namespace
