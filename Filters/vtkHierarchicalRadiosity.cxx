@@ -144,7 +144,6 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
   addValue("RaysRefine", static_cast<double>(stats.raysRefine));
   addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
   addValue("RaysPoints", static_cast<double>(solver.raysCast() - stats.rays));
-
 }
 
 } // namespace
@@ -217,9 +216,12 @@ vtkPolyData* vtkHierarchicalRadiosity::GetLinksOutput()
 //------------------------------------------------------------------------------
 void vtkHierarchicalRadiosity::SetCellArrayToProcess(int index, const char* name)
 {
-  const char* current = this->GetInputArrayInformation(index)->Get(vtkDataObject::FIELD_NAME());
+  // Unchanged (the same name, already a cell array): not Modified.
+  vtkInformation* info = this->GetInputArrayInformation(index);
+  const char* current = info->Get(vtkDataObject::FIELD_NAME());
   const std::string wanted = name ? name : "";
-  if (wanted == (current ? current : ""))
+  if (wanted == (current ? current : "") && info->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+    info->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS)
     return;
   this->SetInputArrayToProcess(index, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, wanted.c_str());
 }

@@ -4,40 +4,24 @@
 #include "terrain_grid.h"
 #include "visibility.h"
 
-#include <algorithm>
-#include <chrono>
-
 namespace terralux
 {
-namespace
-{
-double secondsSince(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-} // namespace
-
 SceneGeometry::SceneGeometry(const RadiosityScene& scene)
   : Points(scene.points)
   , Polygons(scene.polygons)
   , Terrains(scene.terrains)
+  , Rays(std::make_unique<Visibility>(scene))
   , Horizons(scene.terrains.size())
 {
-  const auto start = std::chrono::steady_clock::now();
-  this->Rays = std::make_unique<Visibility>(scene);
-  this->SecondsBuild = secondsSince(start);
 }
 
 SceneGeometry::~SceneGeometry() = default;
 
-const HorizonMap& SceneGeometry::horizons(std::size_t index, double* seconds)
+const HorizonMap& SceneGeometry::horizons(std::size_t index)
 {
-  const auto start = std::chrono::steady_clock::now();
   const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
   if (!this->Horizons[index])
     this->Horizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index]);
-  if (seconds)
-    *seconds = secondsSince(start);
   return *this->Horizons[index];
 }
 

@@ -28,13 +28,10 @@ public:
   SceneGeometry& operator=(const SceneGeometry&) = delete;
 
   const Visibility& rays() const { return *this->Rays; }
-  /// Seconds the Embree scene took to build.
-  double secondsBuild() const { return this->SecondsBuild; }
 
   /// The horizons of the posts of terrain `index` (a height field alone in its scene),
-  /// built on the first call (64 bytes a post) and kept; `seconds` gets the time this
-  /// call spent.
-  const HorizonMap& horizons(std::size_t index, double* seconds = nullptr);
+  /// built on the first call (64 bytes a post) and kept.
+  const HorizonMap& horizons(std::size_t index);
 
   /// Whether `scene` has this one's shape: the same polygons over the same points and
   /// terrains with the same posts and valid cells (materials may differ).
@@ -47,6 +44,5 @@ private:
   std::unique_ptr<Visibility> Rays;
   std::vector<std::unique_ptr<HorizonMap>> Horizons; // per terrain, built on demand
   std::mutex HorizonsMutex;
-  double SecondsBuild = 0.0;
 };
 } // namespace terralux

@@ -97,6 +97,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   this->Store->MaximumSkyLevel = options.maximumSkyLevel;
   this->RootCluster = Cluster::build(*this->Store, polygons, 0);
 
+  const auto start = std::chrono::steady_clock::now();
   const bool reused = geometry && geometry->sameShape(scene);
   this->Geometry = reused ? std::move(geometry) : std::make_shared<SceneGeometry>(scene);
   this->Rays = &this->Geometry->rays();
@@ -109,7 +110,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(
     std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
   if (this->HeightField && scene.terrains.size() == 1)
     this->HeightFieldGrid = scene.terrains.front();
-  this->Stats.secondsVisibilityBuild = reused ? 0.0 : this->Geometry->secondsBuild();
+  this->Stats.secondsVisibilityBuild = reused ? 0.0 : secondsSince(start);
 }
 
 HierarchicalRadiosity::~HierarchicalRadiosity() = default;

@@ -216,6 +216,9 @@ TEST(RadiosityFilter, SeveralInputsAndBands)
   radiosity->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Albedo");
   EXPECT_EQ(runPipeline(radiosity, messages), 0);
   EXPECT_NE(messages->Errors.find("must be a cell array"), std::string::npos) << messages->Errors;
+  // Naming it again makes it the cell array.
+  radiosity->SetReflectanceArrayName("Albedo");
+  ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
 }
 
 namespace
