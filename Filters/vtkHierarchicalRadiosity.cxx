@@ -29,10 +29,12 @@
 
 vtkStandardNewMacro(vtkHierarchicalRadiosity);
 
-struct vtkHierarchicalRadiosity::GeometryCache
+struct vtkHierarchicalRadiosity::KeptSolver
 {
-  std::unique_ptr<vtkRadiosityScene> Scene;
-  std::shared_ptr<terralux::SceneGeometry> Rays; // declared last: freed before the grids it shares
+  std::unique_ptr<vtkRadiosityScene> GeometryScene; // the grids its rays were built on
+  std::unique_ptr<vtkRadiosityScene> SolverScene;   // its elements', when not the same
+  // Declared last: freed before the grids it shares.
+  std::unique_ptr<terralux::HierarchicalRadiosity> Solver;
 };
 
 namespace
@@ -135,6 +137,7 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
   addValue("Residual", stats.residual);
   addValue("DegeneratePolygons", static_cast<double>(solver.degeneratePolygons()));
   addValue("SkippedCells", static_cast<double>(scene.SkippedCells)); // vertices, lines: no area
+  addValue("SecondsHierarchyBuild", stats.secondsHierarchyBuild);
   addValue("SecondsVisibilityBuild", stats.secondsVisibilityBuild);
   addValue("SecondsRefine", stats.secondsRefine);
   addValue("SecondsGather", stats.secondsGather);
@@ -382,8 +385,7 @@ std::unique_ptr<vtkRadiosityScene> vtkHierarchicalRadiosity::BuildScene(vtkInfor
 }
 
 //------------------------------------------------------------------------------
-std::unique_ptr<terralux::HierarchicalRadiosity> vtkHierarchicalRadiosity::MakeSolver(
-  std::unique_ptr<vtkRadiosityScene>& scene)
+terralux::HierarchicalRadiosity& vtkHierarchicalRadiosity::PrepareSolver(std::unique_ptr<vtkRadiosityScene>& scene)
 {
   terralux::RadiosityOptions options;
   options.errorTolerance = this->ErrorTolerance;
@@ -395,19 +397,41 @@ std::unique_ptr<terralux::HierarchicalRadiosity> vtkHierarchicalRadiosity::MakeS
   options.maximumIterations = this->MaximumIterations;
   options.convergenceTolerance = this->ConvergenceTolerance;
   options.maximumElements = static_cast<std::size_t>(this->MaximumNumberOfElements);
-  if (!this->ReuseGeometry || (this->Geometry && !this->Geometry->Rays->sameShape(scene->Scene)))
-    this->Geometry.reset(); // before the new geometry is built: never two at once
-  auto solver = std::make_unique<terralux::HierarchicalRadiosity>(
-    scene->Scene, options, this->Geometry ? this->Geometry->Rays : nullptr);
-  if (this->ReuseGeometry && (!this->Geometry || solver->geometry() != this->Geometry->Rays))
+  std::unique_ptr<KeptSolver>& kept = this->Kept;
+  if (!this->ReuseGeometry)
+    kept.reset(); // turned off since the last update
+  if (kept && kept->Solver->serves(scene->Scene, options))
   {
-    // Built anew: kept with the scene whose terrain grids it shares (which the cache
-    // now owns; the caller's references to it stay valid).
-    this->Geometry = std::make_unique<GeometryCache>();
-    this->Geometry->Rays = solver->geometry();
-    this->Geometry->Scene = std::move(scene);
+    // The same scene as the last update's: only the lights are new. The solver's grids
+    // stay the kept scene's, equal to this one's.
+    kept->Solver->clearSources();
+    return *kept->Solver;
   }
-  return solver;
+  // A new hierarchy, over the kept rays and horizons if the shape is the same.
+  std::shared_ptr<terralux::SceneGeometry> geometry;
+  std::unique_ptr<vtkRadiosityScene> geometryScene;
+  if (kept && kept->Solver->geometry()->sameShape(scene->Scene))
+  {
+    geometry = kept->Solver->geometry();
+    geometryScene = std::move(kept->GeometryScene);
+  }
+  kept.reset(); // the old solver, and a geometry of another shape, freed first
+  auto next = std::make_unique<KeptSolver>();
+  next->Solver = std::make_unique<terralux::HierarchicalRadiosity>(scene->Scene, options, geometry);
+  // The scenes it shares grids with move here; the caller's references stay valid.
+  next->SolverScene = geometryScene ? std::move(scene) : nullptr;
+  next->GeometryScene = geometryScene ? std::move(geometryScene) : std::move(scene);
+  kept = std::move(next);
+  return *kept->Solver;
+}
+
+//------------------------------------------------------------------------------
+void vtkHierarchicalRadiosity::ReleaseSolution()
+{
+  if (this->Kept && this->ReuseGeometry)
+    this->Kept->Solver->clearSources(); // its sky belongs to a scene that ends with the update
+  else
+    this->Kept.reset();
 }
 
 //------------------------------------------------------------------------------
@@ -421,7 +445,13 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
     vtkWarningMacro("Aborted.");
     return 1;
   }
-  std::unique_ptr<terralux::HierarchicalRadiosity> solver = this->MakeSolver(ownScene);
+  // However the update ends, the kept solver lets go of its lights and solution.
+  struct Release
+  {
+    vtkHierarchicalRadiosity* Filter;
+    ~Release() { this->Filter->ReleaseSolution(); }
+  } release{ this };
+  terralux::HierarchicalRadiosity* solver = &this->PrepareSolver(ownScene);
   if (solver->degeneratePolygons() > 0)
   {
     vtkWarningMacro("Skipped " << solver->degeneratePolygons()

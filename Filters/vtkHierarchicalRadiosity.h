@@ -258,12 +258,13 @@ public:
 
   ///@{
   /**
-   * Set/Get whether the scene's rays (the Embree scene) and its terrain's horizons are
-   * kept after an update and reused by the next while the geometry keeps its shape:
-   * when only the lights, materials or solver parameters change (a moving sun, a time
-   * step scrubbed in ParaView), they are not built again, and the values are the same
-   * as those of a fresh filter. Their memory (about 100 bytes a terrain post) stays
-   * held between updates; off frees it after each. Default is on.
+   * Set/Get whether the scene's rays (the Embree scene), its terrain's horizons and the
+   * element hierarchy are kept after an update and reused by the next: the rays and
+   * horizons while the geometry keeps its shape (when only the lights, materials or
+   * solver parameters change: a moving sun, a time step scrubbed in ParaView), the
+   * hierarchy also while materials and parameters stay. They are not built again, and
+   * the values are the same as those of a fresh filter. Their memory (about 100 bytes a
+   * terrain post) stays held between updates; off frees it after each. Default is on.
    */
   vtkSetMacro(ReuseGeometry, vtkTypeBool);
   vtkGetMacro(ReuseGeometry, vtkTypeBool);
@@ -356,10 +357,10 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   // What of the outputs a piece holds: a terrain's sub-extent (grid indices; nullptr:
   // the whole input), and whether the leaf mesh and the links (piece 0's).
-  // The rays and horizons of the last update's scene, with that scene, whose terrain
-  // grids they share (ReuseGeometry).
-  struct GeometryCache;
-  std::unique_ptr<GeometryCache> Geometry;
+  // The last update's solver (ReuseGeometry): its hierarchy, rays and horizons, with the
+  // scenes whose terrain grids they share.
+  struct KeptSolver;
+  std::unique_ptr<KeptSolver> Kept;
   vtkTypeBool ReuseGeometry;
 
   struct PieceRequest
@@ -370,10 +371,14 @@ protected:
   // The engine's scene of the geometry inputs and the lights; throws terralux::Error on
   // bad input.
   std::unique_ptr<vtkRadiosityScene> BuildScene(vtkInformationVector** inputVector);
-  // A solver of the scene with this filter's options, over the kept geometry where the
-  // scene has its shape (ReuseGeometry); a new geometry is kept with `scene`, which it
-  // then owns.
-  std::unique_ptr<terralux::HierarchicalRadiosity> MakeSolver(std::unique_ptr<vtkRadiosityScene>& scene);
+  // A solver of the scene with this filter's options: the last update's where it serves
+  // this scene (same shape, materials and options; ReuseGeometry), else a new one over
+  // the kept rays and horizons where the shape is the same, else all new. A new solver
+  // is kept, with `scene`, which the filter then owns.
+  terralux::HierarchicalRadiosity& PrepareSolver(std::unique_ptr<vtkRadiosityScene>& scene);
+  // After an update: the kept solver drops its lights and solution (without
+  // ReuseGeometry, the solver itself).
+  void ReleaseSolution();
   // RequestData's work; throws terralux::Error on bad input.
   int Solve(vtkInformationVector** inputVector, const PieceRequest& piece, vtkDataObject* output,
     vtkPolyData* leafMesh, vtkPolyData* links);

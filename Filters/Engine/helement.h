@@ -7,6 +7,7 @@
 #include "radiosity_types.h"
 #include "sampling.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <utility>
@@ -89,6 +90,13 @@ public:
   /// The element whose children() holds this one (null for roots and sources' roots).
   HElement* Parent = nullptr;
 
+  /// Back to the state of a new element: no links, no values (surfaces keep their
+  /// emission as radiosity).
+  virtual void resetSolution();
+  /// Forgets children with ids from `firstId` on (made by refinement after the element
+  /// store held that many), which the store is about to drop.
+  virtual void forgetChildrenFrom(std::uint64_t) {}
+
   // State of the solution.
   Spectrum Radiosity{};
   std::array<Spectrum, lightCategories> Gathered{}; ///< irradiance gathered at this level
@@ -110,19 +118,31 @@ private:
 
 /// Owns every element and hands out ids in creation order; refinement creates
 /// elements sequentially, so ids (and the samples seeded by them) are deterministic.
+/// Ids start at `firstId`: stores of different elements (surfaces, sources) never
+/// share one, so no two links share a seed.
 class ElementStore
 {
 public:
+  explicit ElementStore(std::uint64_t firstId = 0)
+    : FirstId(firstId)
+  {
+  }
   template <typename T, typename... Args>
   T* make(int level, Args&&... args)
   {
-    auto element = std::unique_ptr<T>(new T(this->Elements.size(), level, std::forward<Args>(args)...));
+    auto element =
+      std::unique_ptr<T>(new T(this->FirstId + this->Elements.size(), level, std::forward<Args>(args)...));
     T* raw = element.get();
     this->Elements.push_back(std::move(element));
     return raw;
   }
   std::size_t size() const { return this->Elements.size(); }
+  /// Element k has id firstId() + k.
+  std::uint64_t firstId() const { return this->FirstId; }
   const std::vector<std::unique_ptr<HElement>>& all() const { return this->Elements; }
+  /// Back to the first `count` elements, each as new (resetSolution): the elements made
+  /// later (by refinement) are dropped, so the next ones get the ids they had.
+  void restore(std::size_t count);
 
   /// Smallest area a polygon may be split into (its children's area), m^2.
   double MinimumArea = 0.0;
@@ -130,6 +150,7 @@ public:
   int MaximumSkyLevel = 10;
 
 private:
+  std::uint64_t FirstId;
   std::vector<std::unique_ptr<HElement>> Elements;
 };
 } // namespace terralux

@@ -80,6 +80,29 @@ const std::vector<HElement*>& PolygonElement::children()
   return this->Children;
 }
 
+void PolygonElement::resetSolution()
+{
+  HElement::resetSolution();
+  this->Radiosity = this->Emission;
+  this->Irradiance = {};
+  this->SkyViewFactor = 0.0;
+  this->LeafKernels = {};
+  this->LeafKernelKeys = {};
+  this->LeafKernelPartial = {};
+  this->LeafKernelSignature = 0;
+  this->PartialIrradiance = 0.0;
+  this->DeferredPartial = 0.0;
+  this->DeferredSkyView = 0.0;
+}
+
+void PolygonElement::forgetChildrenFrom(std::uint64_t firstId)
+{
+  // Siblings are made together: all by refinement, or all (a terrain's structural
+  // patches around missing cells) when the hierarchy was built.
+  if (!this->Children.empty() && this->Children.front()->id() >= firstId)
+    this->Children.clear();
+}
+
 double PolygonElement::receivedIrradiance() const
 {
   double total = 0.0;

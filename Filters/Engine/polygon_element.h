@@ -26,6 +26,8 @@ public:
   const std::vector<HElement*>& children() override;
   bool canSplit() const override { return this->Area >= 4.0 * this->Store->MinimumArea; }
   bool hasChildren() const { return !this->Children.empty(); }
+  void resetSolution() override;
+  void forgetChildrenFrom(std::uint64_t firstId) override;
   /// The leaf below this element that holds point p of its plane: at each level the
   /// child p lies deepest inside (so a point on a shared edge, or just off the
   /// polygon by rounding, still finds one).

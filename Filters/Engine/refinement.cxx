@@ -24,7 +24,7 @@ bool HierarchicalRadiosity::mayGrow()
 {
   // Links count too: at tight tolerances every pair of small elements wants a link, so
   // links can grow as the square of the elements while hardly any element is added.
-  if (this->Store->size() < this->Options.maximumElements &&
+  if (this->elementCount() < this->Options.maximumElements &&
     this->StoredLinks + this->PendingLinks < 4 * this->Options.maximumElements)
     return true;
   this->Stats.elementBudgetReached = true;

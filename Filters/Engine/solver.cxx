@@ -45,6 +45,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   const RadiosityScene& scene, const RadiosityOptions& options, std::shared_ptr<SceneGeometry> geometry)
   : Options(options)
   , Store(std::make_unique<ElementStore>())
+  , Sources(std::make_unique<ElementStore>(firstSourceId))
 {
   if (options.visibilitySamples < 1 || options.maximumIterations < 1 || !(options.errorTolerance > 0.0) ||
     options.gatherSamples < 0 || !(options.gatherError > 0.0))
@@ -52,6 +53,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(
     throw Error("radiosity options: VisibilitySamples and MaximumIterations must be >= 1, "
                 "ErrorTolerance > 0, MaximumGatherRays >= 0 and GatherError > 0");
   }
+  const auto hierarchyStart = std::chrono::steady_clock::now();
   std::vector<PolygonElement*>& polygons = this->TopSurfaces;
   this->Roots.assign(scene.polygons.size(), nullptr);
   for (std::size_t k = 0; k < scene.polygons.size(); ++k)
@@ -94,8 +96,10 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   }
   this->Store->MinimumArea =
     options.minimumElementArea > 0.0 ? options.minimumElementArea : 1e-6 * this->SceneArea;
-  this->Store->MaximumSkyLevel = options.maximumSkyLevel;
+  this->Sources->MaximumSkyLevel = options.maximumSkyLevel;
   this->RootCluster = Cluster::build(*this->Store, polygons, 0);
+  this->InitialElements = this->Store->size();
+  this->Stats.secondsHierarchyBuild = secondsSince(hierarchyStart);
 
   const auto start = std::chrono::steady_clock::now();
   const bool reused = geometry && geometry->sameShape(scene);
@@ -115,6 +119,40 @@ HierarchicalRadiosity::HierarchicalRadiosity(
 
 HierarchicalRadiosity::~HierarchicalRadiosity() = default;
 
+bool operator==(const RadiosityOptions& a, const RadiosityOptions& b)
+{
+  static_assert(sizeof(RadiosityOptions) == 72, "an option was added: compare it here");
+  return a.errorTolerance == b.errorTolerance && a.minimumElementArea == b.minimumElementArea &&
+    a.visibilitySamples == b.visibilitySamples && a.maximumIterations == b.maximumIterations &&
+    a.convergenceTolerance == b.convergenceTolerance && a.maximumSkyLevel == b.maximumSkyLevel &&
+    a.maximumElements == b.maximumElements && a.gatherSamples == b.gatherSamples &&
+    a.gatherError == b.gatherError && a.skyFromHorizons == b.skyFromHorizons;
+}
+
+bool HierarchicalRadiosity::serves(const RadiosityScene& scene, const RadiosityOptions& options) const
+{
+  // The cheap comparisons first: the shape's reads every post.
+  if (options != this->Options || scene.polygons.size() != this->Roots.size() ||
+    scene.terrains.size() != this->TerrainRoots.size())
+    return false;
+  for (std::size_t k = 0; k < scene.polygons.size(); ++k)
+  {
+    const PolygonElement* root = this->Roots[k]; // null for degenerate ones, in both
+    if (root &&
+      (root->reflectance() != scene.polygons[k].reflectance || root->emission() != scene.polygons[k].emission))
+      return false;
+  }
+  for (std::size_t k = 0; k < scene.terrains.size(); ++k)
+    if (this->TerrainRoots[k] && !this->TerrainRoots[k]->grid().sameMaterials(*scene.terrains[k]))
+      return false;
+  return this->Geometry->sameShape(scene);
+}
+
+std::size_t HierarchicalRadiosity::elementCount() const
+{
+  return this->Store->size() + this->Sources->size() + (this->MergedSuns ? this->MergedSuns->size() : 0);
+}
+
 std::uint64_t HierarchicalRadiosity::raysCast() const
 {
   return this->Rays->raysCast() - this->RaysBefore;
@@ -126,7 +164,7 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
   // would hide it, and inside the scene steep slopes that face it are shadowed anyway;
   // it gets no element and no links (they would only refine toward edge slopes).
   if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
-    this->PointSuns.push_back(this->Store->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
+    this->PointSuns.push_back(this->Sources->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
@@ -138,12 +176,50 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
     ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons)
     : nullptr;
   this->Gather->setHorizons(this->Horizons.get());
-  this->SkyRoot = sky ? this->Store->make<SkyPatchElement>(0, this->Store.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
+  this->SkyRoot =
+    sky ? this->Sources->make<SkyPatchElement>(0, this->Sources.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
+}
+
+void HierarchicalRadiosity::clearSources()
+{
+  this->restart();
+  this->PointSuns.clear();
+  this->SkyRoot = nullptr;
+  this->Sky = nullptr;
+  this->Gather->setSky(nullptr);
+  this->Gather->setHorizons(nullptr);
+  this->Horizons.reset();
+  this->SkyAtPoints.reset();
+  this->Sources = std::make_unique<ElementStore>(firstSourceId);
+  this->Sources->MaximumSkyLevel = this->Options.maximumSkyLevel;
+}
+
+void HierarchicalRadiosity::restart()
+{
+  this->Store->restore(this->InitialElements);
+  this->StoredLinks = 0;
+  this->PendingLinks = 0;
+  this->LargestRadiosity = 0.0;
+  this->Suns.clear();
+  this->MergedSuns.reset();
+  this->Gather->setPostSkies(nullptr);
+  this->Gather->setPostLattice(nullptr);
+  this->Gather->setLeafLight(nullptr);
+  this->PostSkies.reset(); // of the last sky; the horizons stay (the geometry's)
+  this->Lattice.reset();
+  this->Leaves.reset();
+  // The hierarchy and the geometry were built for the first solve only.
+  const RadiosityStatistics built = this->Stats;
+  this->Stats = RadiosityStatistics();
+  this->Stats.secondsHierarchyBuild = this->Solved ? 0.0 : built.secondsHierarchyBuild;
+  this->Stats.secondsVisibilityBuild = this->Solved ? 0.0 : built.secondsVisibilityBuild;
+  this->RaysBefore = this->Rays->raysCast();
+  this->Solved = true;
 }
 
 void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
 {
-  if (!this->Horizons || !this->HeightFieldGrid || this->PostHorizons)
+  if (!this->Horizons || !this->HeightFieldGrid || this->PostSkies)
     return;
   // 64 bytes a post: beyond 2 GiB (5,800^2 posts) the posts keep the rays' horizons,
   // slower but within the memory the rest of the solve needs.
@@ -224,13 +300,15 @@ void HierarchicalRadiosity::mergeSuns()
     bin.direction += largestBand(flux) * d;
   }
   this->Suns.clear();
+  this->MergedSuns = std::make_unique<ElementStore>(firstMergedSunId);
   for (const auto& entry : bins)
     this->Suns.push_back(
-      this->Store->make<SunElement>(0, glm::normalize(entry.second.direction), entry.second.flux));
+      this->MergedSuns->make<SunElement>(0, glm::normalize(entry.second.direction), entry.second.flux));
 }
 
 bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
 {
+  this->restart();
   this->mergeSuns();
   // Many points to evaluate: the open sky of each point's plane from a table over
   // normals (16,641 exact evaluations at side 128; 4,225 at side 64 for fewer points,
@@ -344,7 +422,7 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
     previousChange = absoluteChange;
   }
 
-  this->Stats.elements = this->Store->size();
+  this->Stats.elements = this->elementCount();
   this->Stats.links = 0;
   for (const auto& element : this->Store->all())
     this->Stats.links += element->Incoming.size();

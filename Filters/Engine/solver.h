@@ -59,6 +59,12 @@ struct RadiosityOptions
   bool skyFromHorizons = true;
 };
 
+bool operator==(const RadiosityOptions& a, const RadiosityOptions& b);
+inline bool operator!=(const RadiosityOptions& a, const RadiosityOptions& b)
+{
+  return !(a == b);
+}
+
 struct RadiosityStatistics
 {
   std::size_t elements = 0;
@@ -71,7 +77,8 @@ struct RadiosityStatistics
   bool converged = false;          ///< residual below convergenceTolerance
   bool elementBudgetReached = false; ///< refinement was cut at maximumElements
   double referencePowerW = 0.0;
-  double secondsVisibilityBuild = 0.0;
+  double secondsHierarchyBuild = 0.0; ///< elements and clusters (0 for a solver used again)
+  double secondsVisibilityBuild = 0.0; ///< the rays (0 when an earlier solve's are reused)
   double secondsRefine = 0.0;
   double secondsGather = 0.0;
   double secondsPushPull = 0.0;
@@ -120,8 +127,14 @@ public:
   /// points it reaches add up as PointIrradiance::sunlitHours.
   void addSun(const Vec3& directionTowardSun, const Spectrum& normalIrradiance, double duration = 0.0);
   void setSky(const SkyHierarchy* sky);
+  /// Drops the suns, the sky and the solution, keeping the hierarchy as it was built and
+  /// the geometry (rays, horizons): new sources then solve without building either
+  /// again, to the values a new solver would give them.
+  void clearSources();
 
-  /// Solves; returns false when aborted through `progress`.
+  /// Solves; returns false when aborted through `progress`. Each solve starts from the
+  /// hierarchy as it was built (the elements and links of an earlier solve dropped), so
+  /// that its values are those of a new solver with the same sources, bit for bit.
   bool solve(RadiosityProgress* progress = nullptr);
   /// Before posts are evaluated in a scene of one height-field terrain under a sky:
   /// the horizons of all its posts at once (HorizonMap, 64 bytes a post, up to 2 GiB),
@@ -130,17 +143,24 @@ public:
   /// does nothing.
   void findPostHorizons(bool hornNormals = false);
 
+  /// Whether this solver's hierarchy is the one `scene` and `options` would build: the
+  /// same shape (SceneGeometry::sameShape), materials and options. After clearSources it
+  /// then serves that scene's sources as a new solver would.
+  bool serves(const RadiosityScene& scene, const RadiosityOptions& options) const;
+
   const RadiosityStatistics& statistics() const { return this->Stats; }
   /// The scene's rays and horizons, to hand to the next solve over the same shape.
   const std::shared_ptr<SceneGeometry>& geometry() const { return this->Geometry; }
-  /// Rays this solver cast so far: the solve's and those of later point evaluations.
+  /// Rays this solver cast since the last solve began: the solve's and those of later
+  /// point evaluations.
   std::uint64_t raysCast() const;
   std::size_t degeneratePolygons() const { return this->Degenerate; }
   /// Root element of each input polygon (null for degenerate ones).
   const std::vector<PolygonElement*>& polygonRoots() const { return this->Roots; }
   /// Root of each terrain's patch tree (null for a terrain without a valid cell).
   const std::vector<TerrainPatch*>& terrainRoots() const { return this->TerrainRoots; }
-  /// Every element with its links, for the links output.
+  /// Every surface and cluster with its links, for the links output (senders may be
+  /// sources too).
   const ElementStore& elements() const { return *this->Store; }
   const Cluster* root() const { return this->RootCluster; }
 
@@ -210,6 +230,8 @@ private:
   double pushPull(double extrapolation = 0.0);
   /// Whether refinement may still create elements.
   bool mayGrow();
+  /// Surfaces, clusters and sources.
+  std::size_t elementCount() const;
   double referencePower() const;
   /// The hierarchy's suns: the added ones, or, beyond maximumSolveSuns (the sun
   /// positions of a month or a year), those within the same few degrees of the sky
@@ -219,9 +241,19 @@ private:
   static constexpr std::size_t maximumSolveSuns = 64;
   static constexpr double mergedSunDegrees = 2.0;
   OracleSettings oracleSettings() const;
+  /// The hierarchy as it was built, without a solution: what every solve starts from.
+  void restart();
 
   RadiosityOptions Options;
+  /// The surfaces and clusters; its first InitialElements are the hierarchy as built.
   std::unique_ptr<ElementStore> Store;
+  std::size_t InitialElements = 0;
+  std::unique_ptr<ElementStore> Sources;    // the suns and sky patches added
+  std::unique_ptr<ElementStore> MergedSuns; // of the last solve (mergeSuns)
+  // Ids of the three stores' elements start apart, so that the seeds of two links never coincide.
+  static constexpr std::uint64_t firstSourceId = std::uint64_t(1) << 40;
+  static constexpr std::uint64_t firstMergedSunId = std::uint64_t(1) << 41;
+  bool Solved = false; // a solve has run since the solver was built
   std::shared_ptr<SceneGeometry> Geometry;
   const Visibility* Rays = nullptr; // the geometry's
   std::uint64_t RaysBefore = 0;     // what the geometry's rays had cast before this solver

@@ -104,6 +104,13 @@ public:
       this->Valid == other.Valid;
   }
 
+  /// Whether `other` has the same materials in every cell.
+  bool sameMaterials(const TerrainGrid& other) const
+  {
+    return this->UniformReflectance == other.UniformReflectance && this->UniformEmission == other.UniformEmission &&
+      this->CellReflectance == other.CellReflectance && this->CellEmission == other.CellEmission;
+  }
+
   /// Float xyz relative to origin(), nx*ny posts row by row (i fastest), padded for
   /// Embree's 16-byte loads: share it with the ray tracer instead of copying.
   const float* vertices() const { return this->Xyz.data(); }

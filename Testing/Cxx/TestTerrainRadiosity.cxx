@@ -450,6 +450,7 @@ TEST(TerrainRadiosity, AMovingSunReusesTheGeometryAndMatchesAFreshFilter)
   lit.sun->SetDateTime("2024-06-21T16:00:00+02:00");
   auto afternoon = lit.run(true);
   EXPECT_EQ(seconds("SecondsVisibilityBuild"), 0.0); // nothing built: the horizons came with the rays
+  EXPECT_EQ(seconds("SecondsHierarchyBuild"), 0.0);  // nor the hierarchy: only the sun changed
 
   LitTerrain fresh("reuse.tif", spec, "2024-06-21T16:00:00+02:00");
   auto expected = fresh.run(true);
@@ -462,6 +463,25 @@ TEST(TerrainRadiosity, AMovingSunReusesTheGeometryAndMatchesAFreshFilter)
     changed = std::max(changed, std::abs(got->GetComponent(k, 0) - array(morning, "Irradiance")->GetComponent(k, 0)));
   }
   EXPECT_GT(changed, 50.0); // the sun did move
+
+  // Another reflectance: a hierarchy of its own over the same rays, and again the values
+  // of a fresh filter.
+  lit.radiosity->SetDefaultReflectance(0.45);
+  auto brighter = lit.run(true);
+  EXPECT_GT(seconds("SecondsHierarchyBuild"), 0.0);
+  EXPECT_EQ(seconds("SecondsVisibilityBuild"), 0.0);
+  fresh.radiosity->SetDefaultReflectance(0.45);
+  auto brighterExpected = fresh.run(true);
+  for (const char* name : { "Irradiance", "ReflectedIrradiance", "SkyIrradiance" })
+    for (vtkIdType k = 0; k < want->GetNumberOfTuples(); k += 7)
+      ASSERT_EQ(array(brighter, name)->GetComponent(k, 0), array(brighterExpected, name)->GetComponent(k, 0))
+        << name << " " << k;
+  // Back to the first reflectance and sun: the values of the first update.
+  lit.radiosity->SetDefaultReflectance(0.2);
+  lit.sun->SetDateTime("2024-06-21T09:00:00+02:00");
+  auto morningAgain = lit.run(true);
+  for (vtkIdType k = 0; k < want->GetNumberOfTuples(); ++k)
+    ASSERT_EQ(array(morningAgain, "Irradiance")->GetComponent(k, 0), array(morning, "Irradiance")->GetComponent(k, 0)) << k;
 
   // A terrain of another shape: built again.
   lit.terrain->SetStride(2);
