@@ -25,6 +25,7 @@
 #include "solver.h"
 
 #include <chrono>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkHierarchicalRadiosity);
@@ -234,7 +235,8 @@ const char* vtkHierarchicalRadiosity::CellArrayToProcess(int index)
 {
   vtkInformation* info = this->GetInputArrayInformation(index);
   const char* name = info->Get(vtkDataObject::FIELD_NAME());
-  if (!name || !*name)
+  // "None": what ParaView's array list passes when none is chosen.
+  if (!name || !*name || std::string(name) == NoArrayName)
     return nullptr;
   return name;
 }

@@ -199,7 +199,8 @@ public:
    * Set/Get the names of the cell arrays holding reflectance (values in [0, 1)) and
    * emitted radiosity (W/m^2, >= 0), 1 or 3 components: input arrays to process 0 and
    * 1 (SetInputArrayToProcess with FIELD_ASSOCIATION_CELLS), named. Default is
-   * nullptr: none (DefaultReflectance, no emission); nullptr or "" clears it.
+   * nullptr: none (DefaultReflectance, no emission); nullptr, "" or "None" (the entry
+   * for none in ParaView's array lists) clears it.
    */
   void SetReflectanceArrayName(const char* name) { this->SetCellArrayToProcess(ReflectanceArray, name); }
   const char* GetReflectanceArrayName() { return this->CellArrayToProcess(ReflectanceArray); }
@@ -341,7 +342,8 @@ protected:
     EmissionArray = 1
   };
   void SetCellArrayToProcess(int index, const char* name);
-  // The named array to process `index` (nullptr if none).
+  // The named array to process `index` (nullptr if none: no name, or NoArrayName).
+  static constexpr const char* NoArrayName = "None";
   const char* CellArrayToProcess(int index);
   // Throws terralux::Error naming the fix when an array to process is not a cell array.
   void CheckCellArraysToProcess();

@@ -172,12 +172,20 @@ void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
   this->Sky = sky;
   this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
   this->Gather->setSky(this->SkyAtPoints.get());
-  this->Horizons = sky && this->HeightField
-    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons)
-    : nullptr;
-  this->Gather->setHorizons(this->Horizons.get());
+  this->resetHorizons();
   this->SkyRoot =
     sky ? this->Sources->make<SkyPatchElement>(0, this->Sources.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
+}
+
+void HierarchicalRadiosity::resetHorizons()
+{
+  // Until findPostHorizons, the horizons of the rays alone.
+  this->PostHorizons = nullptr;
+  this->Gather->setHorizons(nullptr);
+  this->Horizons = this->SkyAtPoints && this->HeightField
+    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, nullptr)
+    : nullptr;
+  this->Gather->setHorizons(this->Horizons.get());
 }
 
 void HierarchicalRadiosity::clearSources()
@@ -187,9 +195,8 @@ void HierarchicalRadiosity::clearSources()
   this->SkyRoot = nullptr;
   this->Sky = nullptr;
   this->Gather->setSky(nullptr);
-  this->Gather->setHorizons(nullptr);
-  this->Horizons.reset();
   this->SkyAtPoints.reset();
+  this->resetHorizons();
   this->Sources = std::make_unique<ElementStore>(firstSourceId);
   this->Sources->MaximumSkyLevel = this->Options.maximumSkyLevel;
 }
@@ -205,9 +212,10 @@ void HierarchicalRadiosity::restart()
   this->Gather->setPostSkies(nullptr);
   this->Gather->setPostLattice(nullptr);
   this->Gather->setLeafLight(nullptr);
-  this->PostSkies.reset(); // of the last sky; the horizons stay (the geometry's)
+  this->PostSkies.reset(); // of the last sky; the posts' horizons stay (the geometry's)
   this->Lattice.reset();
   this->Leaves.reset();
+  this->resetHorizons();
   // The hierarchy and the geometry were built for the first solve only.
   const RadiosityStatistics built = this->Stats;
   this->Stats = RadiosityStatistics();

@@ -243,6 +243,9 @@ private:
   OracleSettings oracleSettings() const;
   /// The hierarchy as it was built, without a solution: what every solve starts from.
   void restart();
+  /// The sky's horizons before findPostHorizons: those the rays find (none without a
+  /// sky or outside a height field).
+  void resetHorizons();
 
   RadiosityOptions Options;
   /// The surfaces and clusters; its first InitialElements are the hierarchy as built.

@@ -67,6 +67,18 @@ class PluginPipeline(unittest.TestCase):
         self.assertGreater(second.mean(), 2.0 * first.mean())
         self.assertSameArrays(self.solver, "radiosity_rho05.vts")
 
+    def test_reflectance_array_from_the_array_list(self):
+        # A cell array of 0.5 chosen as the reflectance gives DefaultReflectance 0.5's
+        # values; the list's None gives the default's again.
+        albedo = pv.Calculator(Input=self.terrain, AttributeType="Cell Data", ResultArrayName="albedo",
+                               Function="0.5")
+        self.solver.Input = albedo
+        self.assertEqual(self.solver.ReflectanceArray[1], "None")
+        self.solver.ReflectanceArray = ["CELLS", "albedo"]
+        self.assertSameArrays(self.solver, "radiosity_rho05.vts")
+        self.solver.ReflectanceArray = ["POINTS", "None"]
+        self.assertSameArrays(self.solver, "radiosity.vts")
+
     def test_lights_reset_and_set_again(self):
         self.solver.UpdatePipeline()
         self.solver.Lights = [self.sun]
@@ -134,6 +146,9 @@ class PluginProxies(unittest.TestCase):
     PROXIES = {"TerrainSource": "vtkTerrainReader", "SunSource": "vtkSunSource",
                "SkySource": "vtkSkySource", "HierarchicalRadiosity": "vtkHierarchicalRadiosity",
                "SolarIrradiation": "vtkSolarIrradiation"}
+    # The arrays to process (SetInputArrayToProcess, index first, name last) and the
+    # class's named setters for them; the array list's "None" is the class's none.
+    ARRAYS_TO_PROCESS = {"0": "ReflectanceArrayName", "1": "EmissionArrayName"}
 
     def setUp(self):
         with open(os.path.join(REFERENCE_DIR, "defaults.json")) as f:
@@ -148,6 +163,11 @@ class PluginProxies(unittest.TestCase):
             if not command or not command.startswith("Set") or prop.GetInformationOnly():
                 continue
             key = command[3:]
+            if command == "SetInputArrayToProcess":
+                key = self.ARRAYS_TO_PROCESS[prop.GetElement(0)]
+                offered.add(key)
+                self.assertEqual(prop.GetElement(4), expected[key] or "None", "%s.%s" % (class_name, key))
+                continue
             offered.add(key)
             if key not in expected or key == "FileName":
                 continue

@@ -219,6 +219,14 @@ TEST(RadiosityFilter, SeveralInputsAndBands)
   // Naming it again makes it the cell array.
   radiosity->SetReflectanceArrayName("Albedo");
   ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+  // ParaView's "None" entry (passed with the point association) is no array: the
+  // DefaultReflectance everywhere, grey.
+  radiosity->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None");
+  EXPECT_EQ(radiosity->GetReflectanceArrayName(), nullptr);
+  ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+  blocks = vtkMultiBlockDataSet::SafeDownCast(radiosity->GetOutput());
+  b = vtkPolyData::SafeDownCast(blocks->GetBlock(0))->GetPointData()->GetArray("Radiosity");
+  EXPECT_NEAR(b->GetComponent(4, 2) / b->GetComponent(4, 0), 1.0, 1e-9);
 }
 
 namespace

@@ -132,6 +132,15 @@ TEST(SolverReuse, NewSourcesOverATerrainGiveWhatANewSolverGives)
   ASSERT_FALSE(expected.numbers.empty());
   EXPECT_TRUE(again == expected);
   EXPECT_FALSE(first == expected); // the sun did move
+
+  // The sun alone after a sky: none of the sky's horizons or lattice stay behind.
+  const Sources sunAlone = sources(25.0, 3.1, false);
+  used.clearSources();
+  light(used, sunAlone);
+  const Values withoutSky = solveTerrain(used, *grid);
+  HierarchicalRadiosity freshSun(sceneOf(*grid), options());
+  light(freshSun, sunAlone);
+  EXPECT_TRUE(withoutSky == solveTerrain(freshSun, *grid));
 }
 
 TEST(SolverReuse, PolygonsSolvedAgainAgreeBitForBit)
