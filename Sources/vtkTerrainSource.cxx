@@ -211,6 +211,119 @@ int vtkTerrainSource::RequestUpdateExtent(vtkInformation*, vtkInformationVector*
   return 1;
 }
 
+namespace
+{
+// Runs `work` on an Elevation array's heights as float* or double*, whichever it holds.
+template <typename Work>
+auto withHeights(vtkDataArray* elevation, Work&& work)
+{
+  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
+  {
+    return work(doubles->GetPointer(0));
+  }
+  return work(vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
+}
+
+// Marks the posts of `extent` outside `pieceExtent` (a piece's ghost posts, shared with
+// its neighbours) duplicate; returns whether there were any.
+bool markGhostPosts(const int extent[6], const int pieceExtent[6], vtkUnsignedCharArray* ghosts)
+{
+  if (std::equal(extent, extent + 6, pieceExtent))
+  {
+    return false;
+  }
+  const int nx = extent[1] - extent[0] + 1;
+  bool any = false;
+  for (int j = extent[2]; j <= extent[3]; ++j)
+    for (int i = extent[0]; i <= extent[1]; ++i)
+      if (i < pieceExtent[0] || i > pieceExtent[1] || j < pieceExtent[2] || j > pieceExtent[3])
+      {
+        ghosts->GetPointer(0)[(i - extent[0]) + static_cast<vtkIdType>(j - extent[2]) * nx] |=
+          vtkDataSetAttributes::DUPLICATEPOINT;
+        any = true;
+      }
+  return any;
+}
+
+// The georeference of a piece (of the whole grid when unsplit): CRS, GeoTransform,
+// RasterSize and the no-data value.
+void addGeoreference(vtkFieldData* fieldData, const terralux::RasterInfo& info,
+  const terralux::GeoTransform& pieceTransform, int nx, int ny)
+{
+  auto crs = vtkSmartPointer<vtkStringArray>::New();
+  crs->SetName(vtkTerraLuxFieldData::CRSName());
+  crs->InsertNextValue(info.crsWkt);
+  fieldData->AddArray(crs);
+  vtkTerraLuxFieldData::AddVector(
+    fieldData, vtkTerraLuxFieldData::GeoTransformName(), pieceTransform.coefficients.data(), 6);
+  auto rasterSize = vtkSmartPointer<vtkIntArray>::New();
+  rasterSize->SetName(vtkTerraLuxFieldData::RasterSizeName());
+  rasterSize->InsertNextValue(nx);
+  rasterSize->InsertNextValue(ny);
+  fieldData->AddArray(rasterSize);
+  if (info.hasNoData)
+  {
+    vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::NoDataValueName(), info.noData);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataArray> vtkTerrainSource::ReadElevation(
+  const RasterRequest& request, const terralux::PixelWindow& piece, vtkIdType count, std::size_t& valid)
+{
+  // The raster is read straight into the Elevation array (raster order first).
+  vtkSmartPointer<vtkDataArray> elevation = request.raster->info().needsDoublePrecision
+    ? newValues<vtkDoubleArray>("Elevation", 1, count)
+    : newValues<vtkFloatArray>("Elevation", 1, count);
+  valid = withHeights(elevation, [&](auto* heights) { return request.raster->read(piece, this->Stride, heights); });
+  const vtkIdType implausible =
+    withHeights(elevation, [&](auto* heights) { return dropImplausibleHeights(heights, count); });
+  valid -= static_cast<std::size_t>(implausible);
+  if (implausible > 0)
+  {
+    vtkWarningMacro(<< implausible << " post(s) of '" << this->FileName << "' hold heights beyond ["
+                    << lowestPlausibleHeightM << ", " << highestPlausibleHeightM
+                    << "] m, which no DEM holds: they are taken as no data. Set the band's no-data value "
+                       "(gdal_edit.py -a_nodata) if they mark missing posts.");
+  }
+  if (valid == 0)
+  {
+    vtkErrorMacro("Every post of '" << this->FileName
+                                    << "' in the requested window is no data: choose another "
+                                       "window, band or file.");
+    return nullptr;
+  }
+  return elevation;
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<terralux::TerrainPlacement> vtkTerrainSource::PlaceGrid(const terralux::GridGeoreference& grid,
+  const terralux::RasterInfo& info, const terralux::GridCentre& centre, vtkFieldData* fieldData)
+{
+  if (info.crsWkt.empty())
+  {
+    vtkWarningMacro("'" << this->FileName
+                        << "' has no coordinate reference system: its map coordinates are taken "
+                           "as local metres. Assign a CRS (gdal_edit.py -a_srs) to georeference it.");
+    double mapOrigin[3];
+    grid.geoTransform.pixelToMap(centre.col, centre.row, mapOrigin[0], mapOrigin[1]);
+    mapOrigin[2] = centre.heightM;
+    vtkTerraLuxFieldData::AddTuple(fieldData, "LocalOrigin", mapOrigin, 3);
+    return std::make_unique<terralux::TerrainPlacement>(
+      grid, terralux::LocalPoint{ mapOrigin[0], mapOrigin[1], mapOrigin[2] });
+  }
+  terralux::MapProjection projection(info.crsWkt);
+  terralux::GeodeticPoint origin{ this->GeoOrigin[0], this->GeoOrigin[1], this->GeoOrigin[2] };
+  if (!this->UseGeoOrigin)
+  {
+    origin = terralux::geodeticOfPixel(grid.geoTransform, projection, centre.col, centre.row, centre.heightM);
+  }
+  const double originValues[3] = { origin.latitudeDeg, origin.longitudeDeg, origin.heightM };
+  vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::GeoOriginName(), originValues, 3);
+  return std::make_unique<terralux::TerrainPlacement>(grid, projection, terralux::LocalFrame(origin));
+}
+
 //------------------------------------------------------------------------------
 bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output)
 {
@@ -245,35 +358,10 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
                                                       << " raster; it was clipped to it.");
   }
   this->UpdateProgress(0.05);
-
-  // The raster is read straight into the Elevation array (raster order first).
-  vtkSmartPointer<vtkDataArray> elevation = info.needsDoublePrecision
-    ? newValues<vtkDoubleArray>("Elevation", 1, count)
-    : newValues<vtkFloatArray>("Elevation", 1, count);
-  // Runs `work` on the heights as float* or double*, whichever the array holds.
-  auto withHeights = [&elevation](auto&& work) {
-    if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
-    {
-      return work(doubles->GetPointer(0));
-    }
-    return work(vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
-  };
-  std::size_t valid = withHeights(
-    [&](auto* heights) { return request.raster->read(piece, this->Stride, heights); });
-  const vtkIdType implausible = withHeights([&](auto* heights) { return dropImplausibleHeights(heights, count); });
-  valid -= static_cast<std::size_t>(implausible);
-  if (implausible > 0)
+  std::size_t valid = 0;
+  const vtkSmartPointer<vtkDataArray> elevation = this->ReadElevation(request, piece, count, valid);
+  if (!elevation)
   {
-    vtkWarningMacro(<< implausible << " post(s) of '" << this->FileName << "' hold heights beyond ["
-                    << lowestPlausibleHeightM << ", " << highestPlausibleHeightM
-                    << "] m, which no DEM holds: they are taken as no data. Set the band's no-data value "
-                       "(gdal_edit.py -a_nodata) if they mark missing posts.");
-  }
-  if (valid == 0)
-  {
-    vtkErrorMacro("Every post of '" << this->FileName
-                                    << "' in the requested window is no data: choose another "
-                                       "window, band or file.");
     return false;
   }
   this->UpdateProgress(0.4);
@@ -282,27 +370,19 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
     return false;
   }
 
-  terralux::GridGeoreference grid;
-  grid.nx = nx;
-  grid.ny = ny;
-  grid.geoTransform = wholeTransform;
-  grid.col0 = extent[0];
-  grid.row0 = firstRow;
-
   auto ghosts = vtkSmartPointer<vtkUnsignedCharArray>::New();
   ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
   ghosts->SetNumberOfTuples(count);
-  double lowest = 0.0;
-  withHeights([&](const auto* heights) { lowest = blankNoDataPosts(heights, count, ghosts); });
+  const double lowest =
+    withHeights(elevation, [&](const auto* heights) { return blankNoDataPosts(heights, count, ghosts); });
   // The frame origin is the whole grid's centre, whichever piece this is: the posts
   // around it are read on their own (the whole grid only if they are no data).
   std::vector<double> wholeHeights;
-  const int pieceFirstCol = extent[0];
   const terralux::GridCentre wholeCentre = terralux::findGridCentre(wholeNx, wholeNy, [&](int i, int row) {
-    if (i >= pieceFirstCol && i < pieceFirstCol + nx && row >= firstRow && row < firstRow + ny)
+    if (i >= extent[0] && i < extent[0] + nx && row >= firstRow && row < firstRow + ny)
     {
-      const vtkIdType k = (i - pieceFirstCol) + static_cast<vtkIdType>(row - firstRow) * nx;
-      return withHeights([&](const auto* heights) { return static_cast<double>(heights[k]); });
+      const vtkIdType k = (i - extent[0]) + static_cast<vtkIdType>(row - firstRow) * nx;
+      return withHeights(elevation, [&](const auto* heights) { return static_cast<double>(heights[k]); });
     }
     if (wholeHeights.empty())
     {
@@ -313,41 +393,21 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
     return wholeHeights[static_cast<std::size_t>(row) * wholeNx + i];
   });
 
-  vtkFieldData* fieldData = output->GetFieldData();
-  std::unique_ptr<terralux::TerrainPlacement> placement;
-  if (info.crsWkt.empty())
-  {
-    vtkWarningMacro("'" << this->FileName
-                        << "' has no coordinate reference system: its map coordinates are taken "
-                           "as local metres. Assign a CRS (gdal_edit.py -a_srs) to georeference it.");
-    double mapOrigin[3];
-    wholeTransform.pixelToMap(wholeCentre.col, wholeCentre.row, mapOrigin[0], mapOrigin[1]);
-    mapOrigin[2] = wholeCentre.heightM;
-    placement = std::make_unique<terralux::TerrainPlacement>(
-      grid, terralux::LocalPoint{ mapOrigin[0], mapOrigin[1], mapOrigin[2] });
-    vtkTerraLuxFieldData::AddTuple(fieldData, "LocalOrigin", mapOrigin, 3);
-  }
-  else
-  {
-    terralux::MapProjection projection(info.crsWkt);
-    terralux::GeodeticPoint origin{ this->GeoOrigin[0], this->GeoOrigin[1], this->GeoOrigin[2] };
-    if (!this->UseGeoOrigin)
-    {
-      origin = terralux::geodeticOfPixel(
-        wholeTransform, projection, wholeCentre.col, wholeCentre.row, wholeCentre.heightM);
-    }
-    const terralux::LocalFrame frame(origin);
-    placement = std::make_unique<terralux::TerrainPlacement>(grid, projection, frame);
-    const double originValues[3] = { origin.latitudeDeg, origin.longitudeDeg, origin.heightM };
-    vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::GeoOriginName(), originValues, 3);
-  }
+  terralux::GridGeoreference grid;
+  grid.nx = nx;
+  grid.ny = ny;
+  grid.geoTransform = wholeTransform;
+  grid.col0 = extent[0];
+  grid.row0 = firstRow;
+  const std::unique_ptr<terralux::TerrainPlacement> placement =
+    this->PlaceGrid(grid, info, wholeCentre, output->GetFieldData());
 
   // Raster order -> grid order (GeoTransform::gridRow): reversed for north-up rasters.
   vtkNew<vtkPoints> points;
   points->SetDataType(this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
   points->SetNumberOfPoints(count);
   void* xyz = points->GetData()->GetVoidPointer(0);
-  withHeights([&](auto* heights) {
+  withHeights(elevation, [&](auto* heights) {
     if (points->GetDataType() == VTK_DOUBLE)
     {
       placement->place(heights, lowest, static_cast<double*>(xyz));
@@ -361,17 +421,7 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
   });
   if (rowsReversed)
     flipRows(ghosts->GetPointer(0), nx, ny);
-  // A piece's ghost posts (shared with its neighbours) are duplicates.
-  bool anyGhost = valid < static_cast<std::size_t>(count);
-  const bool withGhosts = !std::equal(extent, extent + 6, pieceExtent);
-  for (int j = extent[2]; withGhosts && j <= extent[3]; ++j)
-    for (int i = extent[0]; i <= extent[1]; ++i)
-      if (i < pieceExtent[0] || i > pieceExtent[1] || j < pieceExtent[2] || j > pieceExtent[3])
-      {
-        unsigned char& ghost = ghosts->GetPointer(0)[(i - extent[0]) + static_cast<vtkIdType>(j - extent[2]) * nx];
-        ghost |= vtkDataSetAttributes::DUPLICATEPOINT;
-        anyGhost = true;
-      }
+  const bool anyGhost = markGhostPosts(extent, pieceExtent, ghosts) || valid < static_cast<std::size_t>(count);
   this->UpdateProgress(0.9);
 
   output->SetExtent(const_cast<int*>(extent));
@@ -382,23 +432,7 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
   {
     output->GetPointData()->AddArray(ghosts);
   }
-
-  auto crs = vtkSmartPointer<vtkStringArray>::New();
-  crs->SetName(vtkTerraLuxFieldData::CRSName());
-  crs->InsertNextValue(info.crsWkt);
-  fieldData->AddArray(crs);
-  // The georeference of this piece (of the whole grid when unsplit).
-  const terralux::GeoTransform pieceTransform = wholeTransform.pieceOf(extent[0], extent[2], extent[3], wholeNy);
-  vtkTerraLuxFieldData::AddVector(fieldData, vtkTerraLuxFieldData::GeoTransformName(), pieceTransform.coefficients.data(), 6);
-  auto rasterSize = vtkSmartPointer<vtkIntArray>::New();
-  rasterSize->SetName(vtkTerraLuxFieldData::RasterSizeName());
-  rasterSize->InsertNextValue(nx);
-  rasterSize->InsertNextValue(ny);
-  fieldData->AddArray(rasterSize);
-  if (info.hasNoData)
-  {
-    vtkTerraLuxFieldData::AddValue(fieldData, vtkTerraLuxFieldData::NoDataValueName(), info.noData);
-  }
+  addGeoreference(output->GetFieldData(), info, wholeTransform.pieceOf(extent[0], extent[2], extent[3], wholeNy), nx, ny);
   return true;
 }
 

@@ -73,10 +73,24 @@
 #define vtkTerrainSource_h
 
 #include "TerraLuxSourcesModule.h" // For export macro
+#include "vtkSmartPointer.h"            // For ReadElevation
 #include "vtkStructuredGridAlgorithm.h"
 
+#include <memory> // For PlaceGrid
+
+class vtkDataArray;
+class vtkFieldData;
 class vtkImageData;
 class vtkStructuredGrid;
+
+namespace terralux
+{
+struct GridCentre;
+struct GridGeoreference;
+struct PixelWindow;
+struct RasterInfo;
+class TerrainPlacement;
+}
 
 class TERRALUXSOURCES_EXPORT vtkTerrainSource : public vtkStructuredGridAlgorithm
 {
@@ -207,6 +221,14 @@ private:
   // Reads the posts of `extent` (grid indices within the whole extent; a piece, ghost
   // posts included) with the ghost posts outside `pieceExtent` marked duplicate.
   bool ReadRaster(const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output);
+  // The heights of `piece`, implausible ones made no data (with a warning); `valid`
+  // counts the rest. Null, with an error, when none is valid.
+  vtkSmartPointer<vtkDataArray> ReadElevation(
+    const RasterRequest& request, const terralux::PixelWindow& piece, vtkIdType count, std::size_t& valid);
+  // Where the grid's posts go (the frame at the whole grid's centre, or GeoOrigin), its
+  // origin recorded in field data.
+  std::unique_ptr<terralux::TerrainPlacement> PlaceGrid(const terralux::GridGeoreference& grid,
+    const terralux::RasterInfo& info, const terralux::GridCentre& centre, vtkFieldData* fieldData);
   bool ConvertHeightField(vtkImageData* input, vtkStructuredGrid* output);
 };
 
