@@ -268,6 +268,145 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
   }
   return terrain;
 }
+
+// A structured grid's dimensions, checked: a 2-D surface with one point per post.
+std::array<int, 3> surfaceDimensions(vtkStructuredGrid* grid, int owner)
+{
+  std::array<int, 3> dims{};
+  grid->GetDimensions(dims.data());
+  if (dims[2] != 1 || dims[0] < 2 || dims[1] < 2)
+  {
+    throw terralux::Error("structured grids must be 2-D surfaces (dimensions nx x ny x 1, nx, ny >= 2), "
+                          "as vtkTerrainSource makes them");
+  }
+  const vtkIdType posts = static_cast<vtkIdType>(dims[0]) * dims[1];
+  if (grid->GetNumberOfPoints() != posts)
+  {
+    throw terralux::Error("structured grid " + std::to_string(owner) + " has dimensions " +
+      std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " but " +
+      std::to_string(grid->GetNumberOfPoints()) + " points: give it exactly nx * ny points "
+      "(SetDimensions() and SetPoints() must agree)");
+  }
+  return dims;
+}
+
+// The polygons of one input as they enter the scene, their points checked.
+class PolygonInput
+{
+public:
+  PolygonInput(terralux::RadiosityScene& scene, vtkDataSet* data, int owner, const CellSpectrum& reflectance,
+    const CellSpectrum& emission)
+    : Scene(scene)
+    , First(static_cast<vtkIdType>(scene.points.size()))
+    , PointCount(data->GetNumberOfPoints())
+    , Owner(owner)
+    , Reflectance(reflectance)
+    , Emission(emission)
+  {
+    for (vtkIdType k = 0; k < this->PointCount; ++k)
+    {
+      double p[3];
+      data->GetPoint(k, p);
+      scene.points.emplace_back(p[0], p[1], p[2]);
+    }
+  }
+
+  // Cell `cell` with point ids `ids` (valid ones, of usable coordinates: else an error).
+  void check(vtkIdType cell, vtkIdType count, const vtkIdType* ids) const
+  {
+    checkPointIds(cell, count, ids, this->PointCount, this->Owner);
+    for (vtkIdType c = 0; c < count; ++c)
+      if (!usableCoordinate(this->Scene.points[this->First + ids[c]]))
+      {
+        throw terralux::Error("point " + std::to_string(ids[c]) + " of input " + std::to_string(this->Owner) +
+          " has a NaN, infinite or huge coordinate (beyond 1e12 m): remove or repair it, and give the "
+          "scene in local metres");
+      }
+  }
+
+  void add(vtkIdType cell, int count, const vtkIdType* ids) const
+  {
+    terralux::ScenePolygon polygon;
+    polygon.vertexCount = count;
+    for (int c = 0; c < count; ++c)
+      polygon.vertices[c] = static_cast<int>(this->First + ids[c]);
+    polygon.reflectance = this->Reflectance.at(cell);
+    polygon.emission = this->Emission.at(cell);
+    polygon.owner = this->Owner;
+    polygon.cell = cell;
+    this->Scene.polygons.push_back(polygon);
+  }
+
+  // A polygon cell of any size: convex quads are taken as planar, larger or concave
+  // polygons ear-clipped into triangles (a fan would cover a notch). Returns false for
+  // a cell of fewer than 3 points, which has no area.
+  bool addPolygonCell(vtkIdType cell, vtkIdType count, const vtkIdType* ids) const
+  {
+    this->check(cell, count, ids);
+    if (count < 3)
+      return false;
+    if (count == 3 || (count == 4 && convexQuad(this->Scene.points, this->First, ids)))
+      this->add(cell, static_cast<int>(count), ids);
+    else
+      for (const auto& triangle : triangulate(this->Scene.points, this->First, cell, count, ids, this->Owner))
+        this->add(cell, 3, triangle.data());
+    return true;
+  }
+
+private:
+  terralux::RadiosityScene& Scene;
+  const vtkIdType First, PointCount;
+  const int Owner;
+  const CellSpectrum& Reflectance;
+  const CellSpectrum& Emission;
+};
+
+// Terrain cells are not planar: two triangles each, skipping blanked cells, split as
+// terrain patches and Embree's grids are (TerrainGrid::cellTriangleCorners), so both
+// paths see the same surface.
+void addGridTriangles(vtkStructuredGrid* grid, const std::array<int, 3>& dims, const PolygonInput& input)
+{
+  for (int j = 0; j + 1 < dims[1]; ++j)
+    for (int i = 0; i + 1 < dims[0]; ++i)
+    {
+      const vtkIdType cell = i + static_cast<vtkIdType>(j) * (dims[0] - 1);
+      if (!grid->IsCellVisible(cell))
+        continue;
+      const vtkIdType p00 = i + static_cast<vtkIdType>(j) * dims[0];
+      const vtkIdType corners[4] = { p00, p00 + 1, p00 + dims[0], p00 + dims[0] + 1 };
+      for (const auto& triangle : terralux::TerrainGrid::cellTriangleCorners)
+      {
+        const vtkIdType ids[3] = { corners[triangle[0]], corners[triangle[1]], corners[triangle[2]] };
+        input.check(cell, 3, ids);
+        input.add(cell, 3, ids);
+      }
+    }
+}
+
+// The polygons and strips of a poly data; returns how many cells were skipped
+// (vertices, lines, polygons of fewer than 3 points).
+std::size_t addPolyDataCells(vtkPolyData* polyData, const PolygonInput& input)
+{
+  std::size_t skipped = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
+  vtkIdType cell = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
+  vtkNew<vtkIdList> ids;
+  auto polys = polyData->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(ids); ++cell)
+    if (!input.addPolygonCell(cell, ids->GetNumberOfIds(), ids->GetPointer(0)))
+      ++skipped;
+  auto strips = polyData->GetStrips();
+  for (strips->InitTraversal(); strips->GetNextCell(ids); ++cell)
+  {
+    const vtkIdType* p = ids->GetPointer(0);
+    input.check(cell, ids->GetNumberOfIds(), p);
+    for (vtkIdType k = 0; k + 2 < ids->GetNumberOfIds(); ++k)
+    {
+      const vtkIdType tri[3] = { p[k], p[k % 2 ? k + 2 : k + 1], p[k % 2 ? k + 1 : k + 2] };
+      input.add(cell, 3, tri);
+    }
+  }
+  return skipped;
+}
 } // namespace
 
 void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, const char* reflectanceName,
@@ -279,24 +418,13 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
   const vtkIdType first = static_cast<vtkIdType>(this->Scene.points.size());
   const int owner = static_cast<int>(this->Inputs.size());
   auto* structured = vtkStructuredGrid::SafeDownCast(data);
-  int dims[3] = { 0, 0, 0 };
-  if (structured)
+  auto* polyData = vtkPolyData::SafeDownCast(data);
+  if (!structured && !polyData)
   {
-    structured->GetDimensions(dims);
-    if (dims[2] != 1 || dims[0] < 2 || dims[1] < 2)
-    {
-      throw terralux::Error("structured grids must be 2-D surfaces (dimensions nx x ny x 1, nx, ny >= 2), "
-                            "as vtkTerrainSource makes them");
-    }
-    const vtkIdType posts = static_cast<vtkIdType>(dims[0]) * dims[1];
-    if (structured->GetNumberOfPoints() != posts)
-    {
-      throw terralux::Error("structured grid " + std::to_string(owner) + " has dimensions " +
-        std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " but " +
-        std::to_string(structured->GetNumberOfPoints()) + " points: give it exactly nx * ny points "
-        "(SetDimensions() and SetPoints() must agree)");
-    }
+    throw terralux::Error(std::string("input of type ") + data->GetClassName() +
+      " is not supported: give vtkPolyData or vtkStructuredGrid");
   }
+  const std::array<int, 3> dims = structured ? surfaceDimensions(structured, owner) : std::array<int, 3>{};
   checkGhostArrays(data, owner);
   if (structured && terrainHierarchy)
   {
@@ -306,101 +434,11 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
     return;
   }
   this->Inputs.push_back({ data, first, -1 });
-  for (vtkIdType k = 0; k < data->GetNumberOfPoints(); ++k)
-  {
-    double p[3];
-    data->GetPoint(k, p);
-    this->Scene.points.emplace_back(p[0], p[1], p[2]);
-  }
-  const vtkIdType pointCount = data->GetNumberOfPoints();
-  auto requireFinite = [&](vtkIdType count, const vtkIdType* ids) {
-    for (vtkIdType c = 0; c < count; ++c)
-    {
-      const terralux::Vec3& p = this->Scene.points[first + ids[c]];
-      if (!usableCoordinate(p))
-      {
-        throw terralux::Error("point " + std::to_string(ids[c]) + " of input " + std::to_string(owner) +
-          " has a NaN, infinite or huge coordinate (beyond 1e12 m): remove or repair it, and give the "
-          "scene in local metres");
-      }
-    }
-  };
-  auto addPolygon = [&](vtkIdType cell, int count, const vtkIdType* ids) {
-    terralux::ScenePolygon polygon;
-    polygon.vertexCount = count;
-    for (int c = 0; c < count; ++c)
-      polygon.vertices[c] = static_cast<int>(first + ids[c]);
-    polygon.reflectance = reflectance.at(cell);
-    polygon.emission = emission.at(cell);
-    polygon.owner = owner;
-    polygon.cell = cell;
-    this->Scene.polygons.push_back(polygon);
-  };
-
-  if (auto* grid = structured)
-  {
-    // Terrain cells are not planar: two triangles each, skipping blanked cells, split
-    // along the (i+1, j)-(i, j+1) diagonal as terrain patches and Embree's grids are,
-    // so both paths see the same surface.
-    for (int j = 0; j + 1 < dims[1]; ++j)
-      for (int i = 0; i + 1 < dims[0]; ++i)
-      {
-        const vtkIdType cell = i + static_cast<vtkIdType>(j) * (dims[0] - 1);
-        if (!grid->IsCellVisible(cell))
-          continue;
-        const vtkIdType p00 = i + static_cast<vtkIdType>(j) * dims[0], p10 = p00 + 1;
-        const vtkIdType p01 = p00 + dims[0], p11 = p01 + 1;
-        const vtkIdType a[3] = { p00, p10, p01 }, b[3] = { p11, p01, p10 };
-        requireFinite(3, a);
-        requireFinite(3, b);
-        addPolygon(cell, 3, a);
-        addPolygon(cell, 3, b);
-      }
-    return;
-  }
-  auto* polyData = vtkPolyData::SafeDownCast(data);
-  if (!polyData)
-  {
-    throw terralux::Error(std::string("input of type ") + data->GetClassName() +
-      " is not supported: give vtkPolyData or vtkStructuredGrid");
-  }
-  this->SkippedCells += polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
-  vtkIdType cell = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
-  vtkNew<vtkIdList> ids;
-  auto polys = polyData->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(ids); ++cell)
-  {
-    const vtkIdType n = ids->GetNumberOfIds();
-    const vtkIdType* p = ids->GetPointer(0);
-    checkPointIds(cell, n, p, pointCount, owner);
-    requireFinite(n, p);
-    if (n < 3)
-    {
-      ++this->SkippedCells; // a polygon cell of fewer than 3 points has no area
-    }
-    else if (n == 3 || (n == 4 && convexQuad(this->Scene.points, first, p)))
-    {
-      addPolygon(cell, static_cast<int>(n), p); // convex quads are taken as planar
-    }
-    else
-    {
-        // Larger or concave polygons: ear-clipped triangles (a fan would cover a notch).
-      for (const auto& triangle : triangulate(this->Scene.points, first, cell, n, p, owner))
-        addPolygon(cell, 3, triangle.data());
-    }
-  }
-  auto strips = polyData->GetStrips();
-  for (strips->InitTraversal(); strips->GetNextCell(ids); ++cell)
-  {
-    const vtkIdType* p = ids->GetPointer(0);
-    checkPointIds(cell, ids->GetNumberOfIds(), p, pointCount, owner);
-    requireFinite(ids->GetNumberOfIds(), p);
-    for (vtkIdType k = 0; k + 2 < ids->GetNumberOfIds(); ++k)
-    {
-      const vtkIdType tri[3] = { p[k], p[k % 2 ? k + 2 : k + 1], p[k % 2 ? k + 1 : k + 2] };
-      addPolygon(cell, 3, tri);
-    }
-  }
+  const PolygonInput input(this->Scene, data, owner, reflectance, emission);
+  if (structured)
+    addGridTriangles(structured, dims, input);
+  else
+    this->SkippedCells += addPolyDataCells(polyData, input);
 }
 
 void vtkRadiosityScene::AddLight(vtkDataObject* light)

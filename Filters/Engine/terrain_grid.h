@@ -64,8 +64,13 @@ public:
   /// they become a TerrainGrid's floats).
   static std::array<Triangle, 2> cellTriangles(const Vec3& p00, const Vec3& p10, const Vec3& p01, const Vec3& p11)
   {
-    return { Triangle{ p00, p10, p01 }, Triangle{ p11, p01, p10 } };
+    const Vec3 p[4] = { p00, p10, p01, p11 };
+    const auto& c = cellTriangleCorners;
+    return { Triangle{ p[c[0][0]], p[c[0][1]], p[c[0][2]] }, Triangle{ p[c[1][0]], p[c[1][1]], p[c[1][2]] } };
   }
+  /// That split as corner numbers, corner c = (i + c % 2, j + c / 2): for meshes that
+  /// take a grid's cells as triangles of point ids.
+  static constexpr std::array<std::array<int, 3>, 2> cellTriangleCorners{ { { 0, 1, 2 }, { 3, 2, 1 } } };
   /// Area x unit normal of a triangle.
   static Vec3 areaVector(const Triangle& t) { return 0.5 * glm::cross(t[1] - t[0], t[2] - t[0]); }
 
