@@ -4,6 +4,8 @@
 #define vtkTerrainHeights_h
 
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
@@ -23,6 +25,17 @@ inline vtkSmartPointer<vtkDataArray> newValues(const char* name, int components,
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(tuples);
   return array;
+}
+
+// Runs `work` on an Elevation array's heights as float* or double*, whichever it holds.
+template <typename Work>
+inline auto withHeights(vtkDataArray* elevation, Work&& work)
+{
+  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
+  {
+    return work(doubles->GetPointer(0));
+  }
+  return work(vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
 }
 
 // Heights no DEM on Earth holds (the Mariana Trench is at -11 km, Everest at 8.8 km).

@@ -213,17 +213,6 @@ int vtkTerrainSource::RequestUpdateExtent(vtkInformation*, vtkInformationVector*
 
 namespace
 {
-// Runs `work` on an Elevation array's heights as float* or double*, whichever it holds.
-template <typename Work>
-auto withHeights(vtkDataArray* elevation, Work&& work)
-{
-  if (auto* doubles = vtkDoubleArray::SafeDownCast(elevation))
-  {
-    return work(doubles->GetPointer(0));
-  }
-  return work(vtkFloatArray::SafeDownCast(elevation)->GetPointer(0));
-}
-
 // Marks the posts of `extent` outside `pieceExtent` (a piece's ghost posts, shared with
 // its neighbours) duplicate; returns whether there were any.
 bool markGhostPosts(const int extent[6], const int pieceExtent[6], vtkUnsignedCharArray* ghosts)

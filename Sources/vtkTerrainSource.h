@@ -230,6 +230,8 @@ private:
   std::unique_ptr<terralux::TerrainPlacement> PlaceGrid(const terralux::GridGeoreference& grid,
     const terralux::RasterInfo& info, const terralux::GridCentre& centre, vtkFieldData* fieldData);
   bool ConvertHeightField(vtkImageData* input, vtkStructuredGrid* output);
+  // Whether the image is a height field that makes finite points (an error if not).
+  bool CheckHeightField(vtkImageData* input);
 };
 
 #endif

@@ -15,13 +15,14 @@
 #include "error.h"
 #include "local_frame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 using namespace vtkTerrainHeights;
 
 //------------------------------------------------------------------------------
-bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid* output)
+bool vtkTerrainSource::CheckHeightField(vtkImageData* input)
 {
   int dims[3];
   input->GetDimensions(dims);
@@ -37,18 +38,6 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
     vtkErrorMacro("The input image needs one-component point scalars holding the heights.");
     return false;
   }
-  const vtkIdType count = input->GetNumberOfPoints();
-  vtkUnsignedCharArray* inputGhosts = input->GetPointGhostArray();
-  const bool useDouble = scalars->GetDataType() == VTK_DOUBLE ||
-    scalars->GetDataType() == VTK_INT || scalars->GetDataType() == VTK_UNSIGNED_INT ||
-    scalars->GetDataType() == VTK_LONG || scalars->GetDataType() == VTK_LONG_LONG;
-  vtkSmartPointer<vtkDataArray> elevation = useDouble
-    ? newValues<vtkDoubleArray>("Elevation", 1, count)
-    : newValues<vtkFloatArray>("Elevation", 1, count);
-  auto ghosts = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
-  ghosts->SetNumberOfTuples(count);
-
   double spacing[3], origin[3];
   input->GetSpacing(spacing);
   input->GetOrigin(origin);
@@ -73,35 +62,47 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
     vtkErrorMacro("The input image's x or y spacing is 0: give it the post spacing in metres (SetSpacing()).");
     return false;
   }
-  vtkIdType valid = 0, implausible = 0;
-  double lowest = std::numeric_limits<double>::infinity();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid* output)
+{
+  if (!this->CheckHeightField(input))
+  {
+    return false;
+  }
+  int dims[3];
+  input->GetDimensions(dims);
+  vtkDataArray* scalars = input->GetPointData()->GetScalars();
+  const vtkIdType count = input->GetNumberOfPoints();
+  // Integers wider than a float's mantissa stay exact in double.
+  const bool useDouble = scalars->GetDataType() == VTK_DOUBLE ||
+    scalars->GetDataType() == VTK_INT || scalars->GetDataType() == VTK_UNSIGNED_INT ||
+    scalars->GetDataType() == VTK_LONG || scalars->GetDataType() == VTK_LONG_LONG;
+  vtkSmartPointer<vtkDataArray> elevation = useDouble
+    ? newValues<vtkDoubleArray>("Elevation", 1, count)
+    : newValues<vtkFloatArray>("Elevation", 1, count);
+  // Hidden posts of the input are no data, as NaN heights are.
+  vtkUnsignedCharArray* inputGhosts = input->GetPointGhostArray();
   for (vtkIdType k = 0; k < count; ++k)
   {
-    double h = scalars->GetComponent(k, 0);
-    if (inputGhosts && (inputGhosts->GetValue(k) & vtkDataSetAttributes::HIDDENPOINT))
-    {
-      h = std::numeric_limits<double>::quiet_NaN();
-    }
-    if (std::isfinite(h) && !(h >= lowestPlausibleHeightM && h <= highestPlausibleHeightM))
-    {
-      h = std::numeric_limits<double>::quiet_NaN();
-      ++implausible;
-    }
-    const bool isValid = std::isfinite(h);
-    elevation->SetComponent(k, 0, isValid ? h : std::numeric_limits<double>::quiet_NaN());
-    ghosts->SetValue(k, isValid ? 0 : vtkDataSetAttributes::HIDDENPOINT);
-    if (isValid)
-    {
-      ++valid;
-      lowest = std::min(lowest, h);
-    }
+    const bool hidden = inputGhosts && (inputGhosts->GetValue(k) & vtkDataSetAttributes::HIDDENPOINT);
+    elevation->SetComponent(k, 0, hidden ? std::numeric_limits<double>::quiet_NaN() : scalars->GetComponent(k, 0));
   }
+  const vtkIdType implausible =
+    withHeights(elevation, [&](auto* heights) { return dropImplausibleHeights(heights, count); });
   if (implausible > 0)
   {
     vtkWarningMacro(<< implausible << " height(s) of the input image lie beyond [" << lowestPlausibleHeightM << ", "
                     << highestPlausibleHeightM << "] m, which no DEM holds: they are taken as no data.");
   }
-  if (valid == 0)
+  auto ghosts = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfTuples(count);
+  const double lowest =
+    withHeights(elevation, [&](const auto* heights) { return blankNoDataPosts(heights, count, ghosts); });
+  if (!std::isfinite(lowest))
   {
     vtkErrorMacro("Every height of the input image is NaN, blanked or implausible: nothing to build.");
     return false;
@@ -125,7 +126,8 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
   output->SetPoints(points);
   output->GetPointData()->AddArray(elevation);
   output->GetPointData()->SetScalars(elevation);
-  if (valid < count)
+  const unsigned char* ghost = ghosts->GetPointer(0);
+  if (std::any_of(ghost, ghost + count, [](unsigned char g) { return g != 0; }))
   {
     output->GetPointData()->AddArray(ghosts);
   }
