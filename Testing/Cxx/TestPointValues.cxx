@@ -1,0 +1,153 @@
+// What users read at points (point_values.h): a vertex on a crease takes each side's
+// value on its own side, averaged by area; one normal across it only when asked; a
+// terrain's posts, at points or averaged, within a window. Checked against closed
+// forms: a sun alone over black surfaces gives E cos(angle) and nothing else.
+#include "point_values.h"
+#include "radiosity_scenes.h"
+#include "solver.h"
+#include "terrain_grids.h"
+#include "terrain_patch.h"
+
+#include <gtest/gtest.h>
+
+using namespace terralux;
+using namespace terralux_test;
+
+namespace
+{
+constexpr double sunIrradiance = 1000.0;
+const Vec3 towardSun = glm::normalize(Vec3(std::sqrt(3.0), 0.0, 1.0)); // 60 deg from the zenith, over +x
+
+// A black floor [0, 10]^2 facing up and a black wall on its edge x = 0, 5 m high, facing
+// +x, sharing the points of that edge; point 6 belongs to no polygon.
+RadiosityScene floorAndWall()
+{
+  RadiosityScene scene;
+  for (const Vec3& p : { Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(10, 10, 0), Vec3(0, 10, 0), Vec3(0, 0, 5),
+         Vec3(0, 10, 5), Vec3(20, 20, 0) })
+    scene.points.push_back(p);
+  ScenePolygon floor, wall;
+  floor.vertexCount = wall.vertexCount = 4;
+  floor.vertices = { 0, 1, 2, 3 };
+  wall.vertices = { 0, 3, 5, 4 };
+  wall.cell = 1;
+  scene.polygons = { floor, wall };
+  return scene;
+}
+
+std::unique_ptr<HierarchicalRadiosity> solvedUnderTheSun(const RadiosityScene& scene)
+{
+  auto solver = std::make_unique<HierarchicalRadiosity>(scene, RadiosityOptions{});
+  solver->addSun(towardSun, uniformSpectrum(sunIrradiance));
+  EXPECT_TRUE(solver->solve());
+  return solver;
+}
+
+std::vector<PointValues> pointValues(
+  const HierarchicalRadiosity& solver, const RadiosityScene& scene, bool oneNormal, bool atPoints, std::vector<bool>& reached)
+{
+  PointEvaluation how;
+  how.atPoints = atPoints;
+  return polygonPointValues(solver, scene, 0, 0, scene.points.size(), oneNormal, how, reached);
+}
+} // namespace
+
+TEST(PointValues, FlattenedAndBackAreTheSame)
+{
+  PointValues v;
+  v.irradiance = { Spectrum{ 1, 2, 3 }, Spectrum{ 4, 5, 6 }, Spectrum{ 7, 8, 9 } };
+  v.radiosity = { 10, 11, 12 };
+  v.skyViewFactor = 0.5;
+  double flat[PointValues::flatComponents];
+  v.flatten(flat);
+  const PointValues back = PointValues::unflatten(flat);
+  EXPECT_EQ(back.irradiance, v.irradiance);
+  EXPECT_EQ(back.radiosity, v.radiosity);
+  EXPECT_EQ(back.skyViewFactor, v.skyViewFactor);
+  EXPECT_EQ(v.globalIrradiance(), (Spectrum{ 12, 15, 18 }));
+}
+
+TEST(PointValues, ACreaseIsEvaluatedOnEachOfItsSides)
+{
+  const RadiosityScene scene = floorAndWall();
+  const auto solver = solvedUnderTheSun(scene);
+  const double onFloor = sunIrradiance * towardSun.z, onWall = sunIrradiance * towardSun.x;
+  // Floor 100 m^2, wall 50 m^2: the edge's points weigh them so.
+  const double onEdge = (100.0 * onFloor + 50.0 * onWall) / 150.0;
+  for (const bool atPoints : { true, false })
+  {
+    std::vector<bool> reached;
+    const auto values = pointValues(*solver, scene, false, atPoints, reached);
+    ASSERT_EQ(values.size(), 7u);
+    const double expected[6] = { onEdge, onFloor, onFloor, onEdge, onWall, onWall };
+    for (int p = 0; p < 6; ++p)
+    {
+      ASSERT_TRUE(reached[p]) << p;
+      EXPECT_NEAR(values[p].irradiance[SunLight][0], expected[p], 1e-9 * sunIrradiance) << p << " at points " << atPoints;
+      EXPECT_NEAR(values[p].globalIrradiance()[0], expected[p], 1e-9 * sunIrradiance) << p;
+      EXPECT_EQ(values[p].sunlitHours, 0.0); // the sun has no duration here
+    }
+    EXPECT_FALSE(reached[6]); // a loose point has no value
+  }
+}
+
+TEST(PointValues, OneNormalAveragesTheCrease)
+{
+  // A terrain given as polygons: one side per point, the area-weighted normal.
+  const RadiosityScene scene = floorAndWall();
+  const auto solver = solvedUnderTheSun(scene);
+  std::vector<bool> reached;
+  const auto values = pointValues(*solver, scene, true, true, reached);
+  const Vec3 normal = glm::normalize(100.0 * Vec3(0, 0, 1) + 50.0 * Vec3(1, 0, 0));
+  EXPECT_NEAR(values[0].irradiance[SunLight][0], sunIrradiance * glm::dot(normal, towardSun), 1e-9 * sunIrradiance);
+  EXPECT_NEAR(values[1].irradiance[SunLight][0], sunIrradiance * towardSun.z, 1e-9 * sunIrradiance);
+}
+
+TEST(PointValues, RadiosityIsEmissionPlusReflectedIrradiance)
+{
+  RadiosityScene scene = floorAndWall();
+  for (ScenePolygon& polygon : scene.polygons)
+  {
+    polygon.reflectance = uniformSpectrum(0.3);
+    polygon.emission = uniformSpectrum(7.0);
+  }
+  const auto solver = solvedUnderTheSun(scene);
+  for (const bool atPoints : { true, false })
+  {
+    std::vector<bool> reached;
+    const auto values = pointValues(*solver, scene, false, atPoints, reached);
+    for (int p = 1; p < 3; ++p) // the floor's far corners: one side
+      EXPECT_NEAR(values[p].radiosity[0], 7.0 + 0.3 * values[p].globalIrradiance()[0], 1e-9) << p;
+    EXPECT_GT(values[1].irradiance[ReflectedLight][0], 0.0); // the wall lights the floor
+  }
+}
+
+TEST(PointValues, TerrainPostsInAWindow)
+{
+  const auto grid = makeGrid(9, 7, 5.0, [](double, double) { return 0.0; });
+  grid->setUniformMaterial(uniformSpectrum(0.0), uniformSpectrum(0.0));
+  HierarchicalRadiosity solver(sceneOf(*grid), RadiosityOptions{});
+  solver.addSun(towardSun, uniformSpectrum(sunIrradiance));
+  ASSERT_TRUE(solver.solve());
+  const TerrainPatch& root = *solver.terrainRoots()[0];
+  for (const bool atPoints : { true, false })
+  {
+    PointEvaluation how;
+    how.atPoints = atPoints;
+    const int window[4] = { 2, 5, -3, 3 }; // clipped to the grid: j 0 to 3
+    std::vector<int> seen(9 * 7, 0);
+    std::vector<double> sun(9 * 7, 0.0);
+    terrainPostValues(solver, root, window, how, [&](std::size_t post, const PointValues& v) {
+      ++seen[post]; // distinct posts only: no race
+      sun[post] = v.irradiance[SunLight][0];
+    });
+    for (int j = 0; j < 7; ++j)
+      for (int i = 0; i < 9; ++i)
+      {
+        const bool inside = i >= 2 && i <= 5 && j <= 3;
+        EXPECT_EQ(seen[i + 9 * j], inside ? 1 : 0) << i << ", " << j << " at points " << atPoints;
+        if (inside)
+          EXPECT_NEAR(sun[i + 9 * j], sunIrradiance * towardSun.z, 1e-9 * sunIrradiance);
+      }
+  }
+}
