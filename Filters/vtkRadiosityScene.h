@@ -54,7 +54,7 @@ public:
   std::vector<SunLight> Suns;
   bool HasEmission = false;
   bool SunshineDuration = false; ///< the outputs add SunshineDuration (the suns' hours at each point)
-  std::size_t SkippedCells = 0; ///< vertices and lines, ignored
+  std::size_t SkippedCells = 0; ///< vertices, lines and polygons of fewer than 3 points: no area
 
 private:
   void AddSky(int level, int bands, std::vector<double> averages);

@@ -1,5 +1,5 @@
 """Time of a second vtkHierarchicalRadiosity update over the same terrain (ReuseGeometry:
-the Embree scene and the posts' horizons kept) against a fresh filter at the same
+the Embree scene, the posts' horizons and the hierarchy kept) against a fresh filter at the same
 instant, and whether their values agree. Usage (with the build's Python package on
 PYTHONPATH): /usr/bin/python3 benchmark_reuse_geometry.py DEM.tif"""
 import sys, time
