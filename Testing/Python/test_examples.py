@@ -29,6 +29,10 @@ def read(path):
     return reader.GetOutput()
 
 
+# What VTK prints before it aborts when it cannot open its X display.
+X_SERVER_LOST = "bad X server connection"
+
+
 def values(data, name):
     array = data.GetPointData().GetArray(name)
     return [array.GetComponent(k, 0) for k in range(array.GetNumberOfTuples())]
@@ -42,6 +46,12 @@ class Examples(unittest.TestCase):
         if not os.environ.get("DISPLAY"):
             command = ["xvfb-run", "-a"] + command
         result = subprocess.run(command, capture_output=True, text=True, timeout=600)
+        if result.returncode < 0 and X_SERVER_LOST in result.stderr:
+            # The X server, not the example, failed (seen once in a clean-clone run, the
+            # example's second window): once more on an X server of its own.
+            print("%s: %s; run again under a new xvfb-run" % (script, X_SERVER_LOST), file=sys.stderr)
+            again = command if command[0] == "xvfb-run" else ["xvfb-run", "-a"] + command
+            result = subprocess.run(again, capture_output=True, text=True, timeout=600)
         self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
         return out, result.stdout
 
