@@ -492,6 +492,7 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   {
     solver->findPostHorizons(hornNormals);
   }
+  solver->findSunHorizons();
   // Leaves gathered first: at points, what gather rays meet; averaged, the polygons'
   // values themselves (terrain patches keep the hierarchy's: the fast mode of a DEM).
   solver->gatherLeaves(this->EvaluateAtPoints != 0);

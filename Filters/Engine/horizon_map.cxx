@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace terralux
@@ -81,6 +82,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
   : Terrain(terrain)
 {
   this->fitMeanMap();
+  this->measureRelief();
   // Azimuths in increasing order, each step's slot its rank.
   const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths();
   std::vector<double> azimuths;
@@ -219,6 +221,70 @@ void HorizonMap::sweep(int q, int p, int slot)
       }
     }
   });
+}
+
+void HorizonMap::measureRelief()
+{
+  const TerrainGrid& t = this->Terrain;
+  double steepest = 0.0, highest = -std::numeric_limits<double>::infinity();
+  for (int j = 0; j < t.cellsY(); ++j)
+    for (int i = 0; i < t.cellsX(); ++i)
+      if (t.cellValid(i, j))
+        for (const TerrainGrid::Triangle& triangle : t.cellTriangles(i, j))
+        {
+          const Vec3 n = TerrainGrid::areaVector(triangle);
+          if (n.z > 0.0)
+            steepest = std::max(steepest, std::hypot(n.x, n.y) / n.z);
+          for (const Vec3& corner : triangle)
+            highest = std::max(highest, corner.z);
+        }
+  this->SteepestSlope = steepest;
+  this->HighestZ = highest;
+}
+
+HorizonMap::Bearing HorizonMap::bearing(double azimuth) const
+{
+  const std::vector<double>& a = this->Azimuths;
+  const double angle = azimuth - twoPi * std::floor(azimuth / twoPi);
+  // The map's azimuths increase in [0, 2 pi): the one at or below, cyclically.
+  const auto above = std::upper_bound(a.begin(), a.end(), angle);
+  const int k = above == a.begin() ? static_cast<int>(a.size()) - 1 : static_cast<int>(above - a.begin()) - 1;
+  const int next = (k + 1) % static_cast<int>(a.size());
+  Bearing b;
+  b.k = k;
+  b.fromBelow = angle - a[k] + (angle < a[k] ? twoPi : 0.0);
+  b.toAbove = a[next] - angle + (a[next] < angle ? twoPi : 0.0);
+  return b;
+}
+
+double HorizonMap::farBound(const Post& post) const
+{
+  const TerrainGrid& t = this->Terrain;
+  const int nx = t.postsX(), ny = t.postsY();
+  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
+  // Distance to the nearest edge of the grid (a parallelogram under the mean map),
+  // a little less for the map's departures from it.
+  const double area = std::abs(this->Ux * this->Vy - this->Vx * this->Uy);
+  const double toEdge = 0.999 *
+    std::min(std::min(i, nx - 1 - i) * area / std::hypot(this->Vx, this->Vy),
+      std::min(j, ny - 1 - j) * area / std::hypot(this->Ux, this->Uy));
+  const double rise = this->HighestZ - t.post(i, j).z;
+  if (rise <= 0.0)
+    return 0.0;
+  return toEdge > 0.0 ? std::atan(rise / toEdge) : 0.5 * pi;
+}
+
+bool HorizonMap::clearlyAbove(const Post& post, const Bearing& bearing, double elevation, double farBound) const
+{
+  if (!this->Complete)
+    return false;
+  // Quantisation (2.4e-5 rad), and lines placed by the mean map: their azimuths off by
+  // a small fraction of a degree, their horizons by S times that.
+  const double margin = 1e-3 + 2e-3 * this->SteepestSlope;
+  const int next = (bearing.k + 1) % azimuthCount;
+  const double near = std::min(this->elevation(post, bearing.k) + this->SteepestSlope * bearing.fromBelow,
+    this->elevation(post, next) + this->SteepestSlope * bearing.toAbove);
+  return elevation > std::max(near, farBound) + margin;
 }
 
 HorizonMap::Post HorizonMap::find(const Vec3& point) const

@@ -48,6 +48,33 @@ public:
   /// rises above the horizontal), to 2.4e-5 rad.
   double elevation(const Post& post, int a) const;
 
+  /// A direction between two of the map's azimuths: the one below it (k) and how far
+  /// it lies from it and from the next (radians).
+  struct Bearing
+  {
+    int k = 0;
+    double fromBelow = 0.0, toAbove = 0.0;
+  };
+  Bearing bearing(double azimuth) const;
+  /// What the horizon between the map's azimuths can be proven not to reach, by two
+  /// bounds (Lipschitz, as horizon sectors are bounded; Stewart 1998):
+  /// - terrain within the post's distance to the grid's edge, R: a point's elevation
+  ///   seen from the post turns with the azimuth at most as fast as the steepest
+  ///   triangle's slope S (d/da atan((z(r, a) - z0) / r) <= |grad z|), so the horizon
+  ///   of those points at a lies below min(H_k + S da_k, H_k+1 + S da_k+1);
+  /// - terrain farther: below atan((highest height - z0) / R).
+  /// farBound is the second, one per post (it needs no azimuth).
+  double farBound(const Post& post) const;
+  /// Whether the terrain's own triangles (what rays meet) leave the direction of
+  /// `bearing` at `elevation` (radians) open from the post, proven by those bounds with
+  /// a margin for the map's quantisation and mean directions; false where only a ray
+  /// can tell. Only for grids without missing cells (holes have no such bound).
+  bool clearlyAbove(const Post& post, const Bearing& bearing, double elevation, double farBound) const;
+  /// Whether every cell of the grid is valid (clearlyAbove needs it).
+  bool complete() const { return this->Complete; }
+  /// The steepest slope (tan) of the grid's triangles: S above.
+  double steepestSlope() const { return this->SteepestSlope; }
+
 private:
   void fitMeanMap();
   void sweep(int q, int p, int slot);
@@ -56,6 +83,8 @@ private:
   /// The mean affine map from parameters to xy: x = X0 + Ux u + Vx v, and so on.
   double X0 = 0.0, Y0 = 0.0, Ux = 1.0, Uy = 0.0, Vx = 0.0, Vy = 1.0;
   bool Complete = true; ///< no missing cells (from fitMeanMap)
+  double SteepestSlope = 0.0, HighestZ = 0.0; // of the valid cells
+  void measureRelief();
   std::vector<double> Azimuths;
   /// Azimuth by azimuth, each azimuth's posts in order; elevation / (pi / 2) x 65535.
   std::vector<std::uint16_t> Elevations;

@@ -1,6 +1,7 @@
 #include "solver.h"
 
 #include "final_gather.h"
+#include "horizon_map.h"
 #include "leaf_light.h"
 #include "external_source.h"
 #include "link_transport.h"
@@ -176,7 +177,29 @@ Vec3 HierarchicalRadiosity::openSideOf(
 
 Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours) const
 {
-  return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
+  const HorizonMap::Post post = this->SunHorizons ? this->SunHorizons->find(point) : HorizonMap::Post{};
+  if (!post)
+    return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
+  // As directSunlight, but a sun the post's horizons prove open takes no ray.
+  const double farBound = this->SunHorizons->farBound(post);
+  Spectrum result{};
+  for (std::size_t s = 0; s < this->PointSuns.size(); ++s)
+  {
+    const ExternalSource& sun = *this->PointSuns[s]->asExternal();
+    const double cosine = sun.kernel(normal);
+    if (!(cosine > 0.0))
+      continue;
+    const SunBearing& at = this->SunBearings[s];
+    if (!this->SunHorizons->clearlyAbove(post, at.bearing, at.elevation, farBound) &&
+      this->Rays->occludedToward(point, normal, sun.direction()))
+      continue;
+    const Spectrum flux = this->PointSuns[s]->emittance();
+    for (int band = 0; band < maxBands; ++band)
+      result[band] += cosine * flux[band];
+    if (sunlitHours)
+      *sunlitHours += sun.duration();
+  }
+  return result;
 }
 
 bool HierarchicalRadiosity::gathersAtPoints() const

@@ -5,6 +5,7 @@
 #include "cluster.h"
 #include "error.h"
 #include "final_gather.h"
+#include "horizon_map.h"
 #include "horizon_sky.h"
 #include "leaf_light.h"
 #include "post_lattice.h"
@@ -181,6 +182,8 @@ void HierarchicalRadiosity::resetHorizons()
 {
   // Until findPostHorizons, the horizons of the rays alone.
   this->PostHorizons = nullptr;
+  this->SunHorizons = nullptr;
+  this->SunBearings.clear();
   this->Gather->setHorizons(nullptr);
   this->Horizons = this->SkyAtPoints && this->HeightField
     ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, nullptr)
@@ -244,6 +247,32 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
     std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals);
   this->Gather->setPostSkies(this->PostSkies.get());
   this->Stats.secondsHorizons = secondsSince(start);
+}
+
+void HierarchicalRadiosity::findSunHorizons()
+{
+  this->SunHorizons = nullptr;
+  this->SunBearings.clear();
+  const TerrainGrid* grid = this->HeightFieldGrid;
+  if (!grid || this->PointSuns.empty())
+    return;
+  const HorizonMap* map = this->PostHorizons;
+  const double bytes = 2.0 * HorizonMap::azimuthCount * grid->postsX() * grid->postsY();
+  if (!map && this->PointSuns.size() >= sunsForHorizonMap && bytes <= 2147483648.0)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    map = &this->Geometry->horizons(0);
+    this->Stats.secondsHorizons += secondsSince(start);
+  }
+  if (!map || !map->complete())
+    return;
+  for (const HElement* sun : this->PointSuns)
+  {
+    const Vec3& d = sun->asExternal()->direction();
+    this->SunBearings.push_back(
+      { map->bearing(std::atan2(d.y, d.x)), std::asin(std::max(-1.0, std::min(1.0, d.z))) });
+  }
+  this->SunHorizons = map;
 }
 
 OracleSettings HierarchicalRadiosity::oracleSettings() const
