@@ -2,6 +2,7 @@
 // value on its own side, averaged by area; one normal across it only when asked; a
 // terrain's posts, at points or averaged, within a window. Checked against closed
 // forms: a sun alone over black surfaces gives E cos(angle) and nothing else.
+#include "angles.h"
 #include "point_values.h"
 #include "radiosity_scenes.h"
 #include "solver.h"
@@ -150,4 +151,43 @@ TEST(PointValues, TerrainPostsInAWindow)
           EXPECT_NEAR(sun[i + 9 * j], sunIrradiance * towardSun.z, 1e-9 * sunIrradiance);
       }
   }
+}
+
+TEST(PointValues, DirectSunAtPostsCastsRaysOnlyWhereHorizonsCannotTell)
+{
+  // Hills under 60 suns all round the sky, an hour each: the values and hours at
+  // every post are those of one ray per sun, bit for bit, with far fewer rays.
+  const auto grid = makeGrid(97, 97, 30.0, [](double x, double y) {
+    return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0);
+  });
+  auto underSuns = [&]() {
+    auto solver = std::make_unique<HierarchicalRadiosity>(sceneOf(*grid), RadiosityOptions{});
+    for (int s = 0; s < 60; ++s)
+    {
+      const double azimuth = 0.37 * s, elevation = (2.0 + 68.0 * ((s * 7) % 60) / 59.0) * degree;
+      solver->addSun(Vec3(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                       std::sin(elevation)),
+        uniformSpectrum(900.0), 1.0);
+    }
+    EXPECT_TRUE(solver->solve());
+    return solver;
+  };
+  const auto byRays = underSuns(), byHorizons = underSuns();
+  byHorizons->findSunHorizons();
+  const std::uint64_t raysBefore[2] = { byRays->raysCast(), byHorizons->raysCast() };
+  int lit = 0;
+  for (int j = 0; j < 97; ++j)
+    for (int i = 0; i < 97; ++i)
+      for (const bool horn : { false, true })
+      {
+        double hours[2] = { 0.0, 0.0 };
+        const Spectrum a = byRays->directSunAt(grid->post(i, j), grid->normalAt(i, j, horn), &hours[0]);
+        const Spectrum b = byHorizons->directSunAt(grid->post(i, j), grid->normalAt(i, j, horn), &hours[1]);
+        ASSERT_EQ(a, b) << i << " " << j;
+        ASSERT_EQ(hours[0], hours[1]) << i << " " << j;
+        lit += hours[0] > 0.0;
+      }
+  EXPECT_GT(lit, 97 * 97);
+  const std::uint64_t rays = byRays->raysCast() - raysBefore[0], fewer = byHorizons->raysCast() - raysBefore[1];
+  EXPECT_LT(fewer, rays / 2) << fewer << " rays against " << rays;
 }
