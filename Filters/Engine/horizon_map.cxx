@@ -240,6 +240,15 @@ void HorizonMap::measureRelief()
         }
   this->SteepestSlope = steepest;
   this->HighestZ = highest;
+  // The shortest way to the edge u = 0 runs square to v's direction, against u's.
+  const Vec3 u(this->Ux, this->Uy, 0.0), v(this->Vx, this->Vy, 0.0);
+  const Vec3 acrossU = u - glm::dot(u, v) / glm::dot(v, v) * v, acrossV = v - glm::dot(v, u) / glm::dot(u, u) * u;
+  const Vec3 ways[4] = { -acrossU, acrossU, -acrossV, acrossV };
+  for (int edge = 0; edge < 4; ++edge)
+  {
+    const double a = std::atan2(ways[edge].y, ways[edge].x);
+    this->EdgeAzimuths[edge] = a < 0.0 ? a + twoPi : a;
+  }
 }
 
 HorizonMap::Bearing HorizonMap::bearing(double azimuth) const
@@ -257,21 +266,78 @@ HorizonMap::Bearing HorizonMap::bearing(double azimuth) const
   return b;
 }
 
-double HorizonMap::farBound(const Post& post) const
+double HorizonMap::edgeDistance(int i, int j, int edge) const
 {
   const TerrainGrid& t = this->Terrain;
-  const int nx = t.postsX(), ny = t.postsY();
-  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
-  // Distance to the nearest edge of the grid (a parallelogram under the mean map),
-  // a little less for the map's departures from it.
   const double area = std::abs(this->Ux * this->Vy - this->Vx * this->Uy);
-  const double toEdge = 0.999 *
-    std::min(std::min(i, nx - 1 - i) * area / std::hypot(this->Vx, this->Vy),
-      std::min(j, ny - 1 - j) * area / std::hypot(this->Ux, this->Uy));
-  const double rise = this->HighestZ - t.post(i, j).z;
+  switch (edge)
+  {
+    case 0:
+      return i * area / std::hypot(this->Vx, this->Vy);
+    case 1:
+      return (t.postsX() - 1 - i) * area / std::hypot(this->Vx, this->Vy);
+    case 2:
+      return j * area / std::hypot(this->Ux, this->Uy);
+    default:
+      return (t.postsY() - 1 - j) * area / std::hypot(this->Ux, this->Uy);
+  }
+}
+
+double HorizonMap::exitDistance(int i, int j, double azimuth) const
+{
+  // The direction in grid parameters (the mean map inverted) of a metre along azimuth.
+  const double det = this->Ux * this->Vy - this->Vx * this->Uy;
+  const double x = std::cos(azimuth), y = std::sin(azimuth);
+  const double du = (this->Vy * x - this->Vx * y) / det, dv = (this->Ux * y - this->Uy * x) / det;
+  const TerrainGrid& t = this->Terrain;
+  double r = std::numeric_limits<double>::infinity();
+  if (du > 0.0)
+    r = std::min(r, (t.postsX() - 1 - i) / du);
+  else if (du < 0.0)
+    r = std::min(r, -i / du);
+  if (dv > 0.0)
+    r = std::min(r, (t.postsY() - 1 - j) / dv);
+  else if (dv < 0.0)
+    r = std::min(r, -j / dv);
+  return r;
+}
+
+double HorizonMap::farBoundAt(int i, int j, double distance) const
+{
+  const double rise = this->HighestZ - this->Terrain.post(i, j).z;
   if (rise <= 0.0)
     return 0.0;
-  return toEdge > 0.0 ? std::atan(rise / toEdge) : 0.5 * pi;
+  // A little nearer for the grid's departures from its mean map.
+  const double r = 0.999 * distance;
+  return r > 0.0 ? std::atan(rise / r) : 0.5 * pi;
+}
+
+double HorizonMap::farBound(const Post& post) const
+{
+  const int nx = this->Terrain.postsX();
+  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
+  double r = std::numeric_limits<double>::infinity();
+  for (int edge = 0; edge < 4; ++edge)
+    r = std::min(r, this->edgeDistance(i, j, edge));
+  return this->farBoundAt(i, j, r);
+}
+
+double HorizonMap::farBound(const Post& post, int k) const
+{
+  const int nx = this->Terrain.postsX();
+  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
+  const double a0 = this->Azimuths[k], a1 = this->Azimuths[(k + 1) % azimuthCount];
+  // The distance to a convex edge along an azimuth is least at the bracket's ends or
+  // where it meets an edge square on.
+  double r = std::min(this->exitDistance(i, j, a0), this->exitDistance(i, j, a1));
+  for (int edge = 0; edge < 4; ++edge)
+  {
+    const double a = this->EdgeAzimuths[edge];
+    const bool inside = a0 <= a1 ? (a >= a0 && a <= a1) : (a >= a0 || a <= a1);
+    if (inside)
+      r = std::min(r, this->edgeDistance(i, j, edge));
+  }
+  return this->farBoundAt(i, j, r);
 }
 
 bool HorizonMap::clearlyAbove(const Post& post, const Bearing& bearing, double elevation, double farBound) const

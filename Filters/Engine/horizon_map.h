@@ -16,6 +16,7 @@
 
 #include "radiosity_types.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -63,7 +64,10 @@ public:
   ///   triangle's slope S (d/da atan((z(r, a) - z0) / r) <= |grad z|), so the horizon
   ///   of those points at a lies below min(H_k + S da_k, H_k+1 + S da_k+1);
   /// - terrain farther: below atan((highest height - z0) / R).
-  /// farBound is the second, one per post (it needs no azimuth).
+  /// farBound is the second. R is the least distance from the post to the grid's edge
+  /// between the azimuths k and k + 1 (the arcs of points nearer stay on the grid);
+  /// without k, in any direction.
+  double farBound(const Post& post, int k) const;
   double farBound(const Post& post) const;
   /// Whether the terrain's own triangles (what rays meet) leave the direction of
   /// `bearing` at `elevation` (radians) open from the post, proven by those bounds with
@@ -84,6 +88,11 @@ private:
   double X0 = 0.0, Y0 = 0.0, Ux = 1.0, Uy = 0.0, Vx = 0.0, Vy = 1.0;
   bool Complete = true; ///< no missing cells (from fitMeanMap)
   double SteepestSlope = 0.0, HighestZ = 0.0; // of the valid cells
+  // Toward the edges u = 0, u = max, v = 0, v = max: the azimuth of the shortest way.
+  std::array<double, 4> EdgeAzimuths{};
+  double edgeDistance(int i, int j, int edge) const;
+  double exitDistance(int i, int j, double azimuth) const;
+  double farBoundAt(int i, int j, double distance) const;
   void measureRelief();
   std::vector<double> Azimuths;
   /// Azimuth by azimuth, each azimuth's posts in order; elevation / (pi / 2) x 65535.

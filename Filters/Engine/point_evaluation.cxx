@@ -180,8 +180,10 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
   const HorizonMap::Post post = this->SunHorizons ? this->SunHorizons->find(point) : HorizonMap::Post{};
   if (!post)
     return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
-  // As directSunlight, but a sun the post's horizons prove open takes no ray.
-  const double farBound = this->SunHorizons->farBound(post);
+  // As directSunlight, but a sun the post's horizons prove open takes no ray. The far
+  // bound of each azimuth bracket, found when a sun first needs it.
+  std::array<double, HorizonMap::azimuthCount> farBounds;
+  farBounds.fill(-1.0);
   Spectrum result{};
   for (std::size_t s = 0; s < this->PointSuns.size(); ++s)
   {
@@ -190,6 +192,9 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
     if (!(cosine > 0.0))
       continue;
     const SunBearing& at = this->SunBearings[s];
+    double& farBound = farBounds[at.bearing.k];
+    if (farBound < 0.0)
+      farBound = this->SunHorizons->farBound(post, at.bearing.k);
     if (!this->SunHorizons->clearlyAbove(post, at.bearing, at.elevation, farBound) &&
       this->Rays->occludedToward(point, normal, sun.direction()))
       continue;
