@@ -19,7 +19,9 @@
  * one solve under all of them: every step's sun (its irradiance x its hours) and the
  * cumulative sky (each sky cell's radiance summed over the steps, Robinson & Stone
  * 2004). The hierarchy, its visibility and the final gather at each point are built
- * once for the whole range; each step costs one shadow ray per point.
+ * once for the whole range; each step costs one shadow ray per point at most: at the
+ * posts of a DEM without missing cells, none where the post's horizons prove the sun
+ * open (HorizonMap::clearlyAbove; the values are the same to the last bit).
  *
  * Input port 0: the scene, as vtkHierarchicalRadiosity's (terrains, objects,
  * composites; reflectance and emission arrays). The place is the first input's
