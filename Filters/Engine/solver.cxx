@@ -166,6 +166,9 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
   // it gets no element and no links (they would only refine toward edge slopes).
   if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
     this->PointSuns.push_back(this->Sources->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
+  // The suns' bearings on the horizon map are those of the suns before this one.
+  this->SunHorizons = nullptr;
+  this->SunBearings.clear();
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)

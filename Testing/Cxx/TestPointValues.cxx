@@ -190,4 +190,11 @@ TEST(PointValues, DirectSunAtPostsCastsRaysOnlyWhereHorizonsCannotTell)
   EXPECT_GT(lit, 97 * 97);
   const std::uint64_t rays = byRays->raysCast() - raysBefore[0], fewer = byHorizons->raysCast() - raysBefore[1];
   EXPECT_LT(fewer, rays / 2) << fewer << " rays against " << rays;
+  // A sun added afterwards has no bearing on the map: every sun takes its ray again.
+  for (auto* solver : { byRays.get(), byHorizons.get() })
+    solver->addSun(Vec3(0.3, 0.2, 0.9), uniformSpectrum(500.0), 1.0);
+  const std::uint64_t before = byHorizons->raysCast();
+  EXPECT_EQ(byRays->directSunAt(grid->post(40, 40), grid->postNormal(40, 40)),
+    byHorizons->directSunAt(grid->post(40, 40), grid->postNormal(40, 40)));
+  EXPECT_GE(byHorizons->raysCast() - before, 50u);
 }
