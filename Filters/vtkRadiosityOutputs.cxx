@@ -45,11 +45,12 @@ std::array<Spectrum, quantities> quantitiesOf(const terralux::PointValues& v)
     v.irradiance[terralux::ReflectedLight], v.radiosity };
 }
 
-// One value per point (SkyViewFactor, SunshineDuration), NaN until set.
-vtkSmartPointer<vtkDoubleArray> scalarArray(const char* name, vtkIdType count)
+// A point array of `components` values per point, NaN until set.
+vtkSmartPointer<vtkDoubleArray> unsetArray(const char* name, int components, vtkIdType count)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
+  array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(count);
   array->Fill(std::numeric_limits<double>::quiet_NaN());
   return array;
@@ -64,18 +65,11 @@ public:
     : Bands(bands)
   {
     for (int q = 0; q < quantities; ++q)
-    {
-      auto array = vtkSmartPointer<vtkDoubleArray>::New();
-      array->SetName(quantityNames[q]);
-      array->SetNumberOfComponents(bands);
-      array->SetNumberOfTuples(count);
-      array->Fill(std::numeric_limits<double>::quiet_NaN());
-      this->Quantities[q] = array;
-    }
+      this->Quantities[q] = unsetArray(quantityNames[q], bands, count);
     if (skyViewFactor)
-      this->SkyViewFactor = scalarArray(vtkRadiosityOutputs::SkyViewFactorName(), count);
+      this->SkyViewFactor = unsetArray(vtkRadiosityOutputs::SkyViewFactorName(), 1, count);
     if (sunshine)
-      this->Sunshine = scalarArray(vtkRadiosityOutputs::SunshineDurationName(), count);
+      this->Sunshine = unsetArray(vtkRadiosityOutputs::SunshineDurationName(), 1, count);
   }
 
   // Thread-safe for distinct points.

@@ -102,6 +102,12 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
   }
 }
 
+bool HorizonMap::fits(const TerrainGrid& terrain)
+{
+  const double bytes = 2.0 * azimuthCount * terrain.postsX() * terrain.postsY();
+  return bytes <= 2147483648.0;
+}
+
 void HorizonMap::fitMeanMap()
 {
   // Mean steps along u and v over the valid cells, and the mean offset: posts outside

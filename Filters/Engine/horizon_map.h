@@ -32,6 +32,9 @@ public:
   /// must outlive this.
   explicit HorizonMap(const TerrainGrid& terrain);
   static constexpr int azimuthCount = 32;
+  /// Whether the map of `terrain` fits the 2 GiB it may take (64 bytes a post: grids up
+  /// to about 5,800^2 posts); beyond, posts keep the rays' horizons.
+  static bool fits(const TerrainGrid& terrain);
 
   /// A post of the grid.
   struct Post

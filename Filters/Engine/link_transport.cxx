@@ -229,17 +229,7 @@ double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
   const Visibility& visibility, double* sunlitHours)
 {
-  Spectrum result{};
-  for (HElement* sun : suns)
-  {
-    const double transport = transportToPoint(point, normal, *sun, visibility, 1, 0);
-    const Spectrum flux = sun->emittance();
-    for (int band = 0; band < maxBands; ++band)
-      result[band] += transport * flux[band];
-    if (sunlitHours && transport > 0.0)
-      *sunlitHours += sun->asExternal()->duration();
-  }
-  return result;
+  return directSunlight(point, normal, suns, visibility, sunlitHours, [](std::size_t) { return false; });
 }
 
 int lightCategoryOf(const HElement& sender)

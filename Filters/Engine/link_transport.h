@@ -4,7 +4,9 @@
 // visibility fraction from stratified, jittered rays seeded by the two element ids.
 // External sources compute their own transport (paper section 5.3).
 
+#include "external_source.h"
 #include "helement.h"
+#include "visibility.h"
 
 namespace terralux
 {
@@ -44,6 +46,35 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
 /// `sunlitHours`, also the durations of the suns that reach the point (sunshine).
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
   const Visibility& visibility, double* sunlitHours = nullptr);
+/// The same, where `provenOpen(s)` says that sun s, in front of the surface, reaches the
+/// point without a ray (the caller proved it, e.g. HorizonMap::clearlyAbove): the same
+/// value, without that ray.
+template <typename ProvenOpen>
+Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
+  const Visibility& visibility, double* sunlitHours, ProvenOpen&& provenOpen)
+{
+  Spectrum result{};
+  for (std::size_t s = 0; s < suns.size(); ++s)
+  {
+    HElement& sun = *suns[s];
+    const ExternalSource& source = *sun.asExternal();
+    // A parallel sun in front of the surface is its kernel x 1 where its one ray (or the
+    // caller's proof) finds it open, else 0: transportToPoint's value, without its
+    // sampling machinery on this hot path.
+    double transport = 0.0;
+    if (!source.parallel())
+      transport = transportToPoint(point, normal, sun, visibility, 1, 0);
+    else if (const double kernel = source.kernel(normal);
+             kernel > 0.0 && (provenOpen(s) || !visibility.occludedToward(point, normal, source.direction())))
+      transport = kernel;
+    const Spectrum flux = sun.emittance();
+    for (int band = 0; band < maxBands; ++band)
+      result[band] += transport * flux[band];
+    if (sunlitHours && transport > 0.0)
+      *sunlitHours += source.duration();
+  }
+  return result;
+}
 
 /// Kernel, visibility and direction of the link receiver <- sender.
 Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples);

@@ -180,31 +180,17 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
   const HorizonMap::Post post = this->SunHorizons ? this->SunHorizons->find(point) : HorizonMap::Post{};
   if (!post)
     return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
-  // As directSunlight, but a sun the post's horizons prove open takes no ray. The far
-  // bound of each azimuth bracket, found when a sun first needs it.
+  // A sun the post's horizons prove open takes no ray. The far bound of each azimuth
+  // bracket, found when a sun first needs it.
   std::array<double, HorizonMap::azimuthCount> farBounds;
   farBounds.fill(-1.0);
-  Spectrum result{};
-  for (std::size_t s = 0; s < this->PointSuns.size(); ++s)
-  {
-    const ExternalSource& sun = *this->PointSuns[s]->asExternal();
-    const double cosine = sun.kernel(normal);
-    if (!(cosine > 0.0))
-      continue;
+  return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours, [&](std::size_t s) {
     const SunBearing& at = this->SunBearings[s];
     double& farBound = farBounds[at.bearing.k];
     if (farBound < 0.0)
       farBound = this->SunHorizons->farBound(post, at.bearing.k);
-    if (!this->SunHorizons->clearlyAbove(post, at.bearing, at.elevation, farBound) &&
-      this->Rays->occludedToward(point, normal, sun.direction()))
-      continue;
-    const Spectrum flux = this->PointSuns[s]->emittance();
-    for (int band = 0; band < maxBands; ++band)
-      result[band] += cosine * flux[band];
-    if (sunlitHours)
-      *sunlitHours += sun.duration();
-  }
-  return result;
+    return this->SunHorizons->clearlyAbove(post, at.bearing, at.elevation, farBound);
+  });
 }
 
 bool HierarchicalRadiosity::gathersAtPoints() const

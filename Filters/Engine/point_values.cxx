@@ -1,6 +1,7 @@
 #include "point_values.h"
 
 #include "polygon_element.h"
+#include "solver.h"
 
 namespace terralux
 {
@@ -10,6 +11,16 @@ PointValues PointValues::ofLeaf(const PolygonElement& leaf)
   v.irradiance = leaf.Irradiance;
   v.radiosity = leaf.Radiosity;
   v.skyViewFactor = leaf.SkyViewFactor;
+  return v;
+}
+
+PointValues PointValues::atPoint(const PointIrradiance& received, const PolygonElement& leaf)
+{
+  PointValues v;
+  v.irradiance = received.irradiance;
+  v.radiosity = radiosityOf(leaf.emission(), leaf.reflectance(), v.globalIrradiance());
+  v.skyViewFactor = received.skyViewFactor;
+  v.sunlitHours = received.sunlitHours;
   return v;
 }
 

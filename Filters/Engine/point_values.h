@@ -15,6 +15,7 @@ namespace terralux
 {
 class HierarchicalRadiosity;
 class PolygonElement;
+struct PointIrradiance;
 class TerrainPatch;
 
 struct PointValues
@@ -26,6 +27,9 @@ struct PointValues
 
   /// A leaf's own values (uniform over it, as the hierarchy holds them).
   static PointValues ofLeaf(const PolygonElement& leaf);
+  /// What a point of `leaf` receives (HierarchicalRadiosity::irradianceAt), with the
+  /// radiosity the leaf's material makes of it.
+  static PointValues atPoint(const PointIrradiance& received, const PolygonElement& leaf);
   /// sun + sky + reflected
   Spectrum globalIrradiance() const;
   void accumulate(const PointValues& v, double weight);

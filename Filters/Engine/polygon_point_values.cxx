@@ -187,15 +187,7 @@ std::vector<PointValues> evaluatedAtPoints(const HierarchicalRadiosity& solver,
   }
   std::vector<PointValues> values(points.size());
   for (std::size_t k = 0; k < points.size(); ++k)
-  {
-    const PointIrradiance& r = results[best[k]];
-    const PolygonElement& leaf = *leaves[best[k]];
-    PointValues& v = values[k];
-    v.irradiance = r.irradiance;
-    v.radiosity = radiosityOf(leaf.emission(), leaf.reflectance(), v.globalIrradiance());
-    v.skyViewFactor = r.skyViewFactor;
-    v.sunlitHours = r.sunlitHours;
-  }
+    values[k] = PointValues::atPoint(results[best[k]], *leaves[best[k]]);
   return values;
 }
 

@@ -235,10 +235,9 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
 {
   if (!this->Horizons || !this->HeightFieldGrid || this->PostSkies)
     return;
-  // 64 bytes a post: beyond 2 GiB (5,800^2 posts) the posts keep the rays' horizons,
-  // slower but within the memory the rest of the solve needs.
-  const double bytes = 2.0 * HorizonMap::azimuthCount * this->HeightFieldGrid->postsX() * this->HeightFieldGrid->postsY();
-  if (bytes > 2147483648.0)
+  // Beyond the map's memory the posts keep the rays' horizons, slower but within the
+  // memory the rest of the solve needs.
+  if (!HorizonMap::fits(*this->HeightFieldGrid))
     return;
   const auto start = std::chrono::steady_clock::now();
   // The one terrain's horizons: built by the first solve over this geometry, reused by
@@ -260,8 +259,7 @@ void HierarchicalRadiosity::findSunHorizons()
   if (!grid || this->PointSuns.empty())
     return;
   const HorizonMap* map = this->PostHorizons;
-  const double bytes = 2.0 * HorizonMap::azimuthCount * grid->postsX() * grid->postsY();
-  if (!map && this->PointSuns.size() >= sunsForHorizonMap && bytes <= 2147483648.0)
+  if (!map && this->PointSuns.size() >= sunsForHorizonMap && HorizonMap::fits(*grid))
   {
     const auto start = std::chrono::steady_clock::now();
     map = &this->Geometry->horizons(0);

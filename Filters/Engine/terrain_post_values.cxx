@@ -13,19 +13,6 @@
 
 namespace terralux
 {
-namespace
-{
-PointValues valuesFrom(const PointIrradiance& result, const PolygonElement& leaf)
-{
-  PointValues v;
-  v.irradiance = result.irradiance;
-  v.radiosity = radiosityOf(leaf.emission(), leaf.reflectance(), v.globalIrradiance());
-  v.skyViewFactor = result.skyViewFactor;
-  v.sunlitHours = result.sunlitHours;
-  return v;
-}
-} // namespace
-
 void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& root, const int posts[4],
   const PointEvaluation& how, const std::function<void(std::size_t, const PointValues&)>& sink)
 {
@@ -46,7 +33,7 @@ void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& 
         const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
         if (leaf)
           sink(index(i, j),
-            valuesFrom(solver.irradianceAt(*leaf, grid.post(i, j), grid.normalAt(i, j, how.hornNormals)), *leaf));
+            PointValues::atPoint(solver.irradianceAt(*leaf, grid.post(i, j), grid.normalAt(i, j, how.hornNormals)), *leaf));
       }
     });
     return;
