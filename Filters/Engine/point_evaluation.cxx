@@ -7,6 +7,7 @@
 #include "link_transport.h"
 #include "polygon_element.h"
 #include "post_lattice.h"
+#include "post_sky.h"
 #include "terrain_grid.h"
 #include "terrain_patch.h"
 #include "sampling.h"
@@ -15,6 +16,8 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cstdio>
 
 // Point evaluation: irradiance at the points users read (terrain posts, polygon
 // vertices), from the solved hierarchy but with what varies sharply taken at the point.
@@ -122,7 +125,10 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
       const int nx = this->HeightFieldGrid->postsX(), i = static_cast<int>(post.index % nx);
       const int j = static_cast<int>(post.index / nx);
       Spectrum expected;
-      budget.knownVariance = this->Lattice->varianceAround(i, j);
+      const PostLattice::Around around = this->Lattice->around(i, j);
+      budget.knownVariance = around.variance;
+      if (budget.knownVariance >= 0.0 && this->readFromLattice(post, normal, i, j, around, result))
+        return result;
       if (budget.knownVariance >= 0.0 && this->Lattice->reflectedAt(i, j, expected))
         budget.pilot = 0, budget.minimum = std::min(budget.maximum, 9), budget.knownSurfaces = largestBand(expected);
       else
@@ -151,6 +157,37 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     result.skyViewFactor = light.skyViewFactor;
   }
   return result;
+}
+
+bool HierarchicalRadiosity::readFromLattice(const HorizonMap::Post& post, const Vec3& normal, int i, int j,
+  const PostLattice::Around& around, PointIrradiance& result) const
+{
+  PostSky::Value sky;
+  if (!this->PostSkies || !this->PostSkies->found(post, normal, sky))
+    return false;
+  // What a gather adds to the horizons' sky (light from surfaces, the sky where the
+  // interpolated horizon was wrong) comes from the terrain the post sees, 1 - its sky
+  // view factor: that times what the lattice's posts around found per terrain seen.
+  // Where theirs agree within the error a gather would leave, reading it between them
+  // errs no more. Posts where light from surfaces is more than a small share of what
+  // they receive gather it still: read between posts it comes out about 3 % low on
+  // average (the accuracy report's hills and Olinda against a gather at each post),
+  // where the accuracy work asks for 5 % wherever it exceeds 1 % of the global.
+  const double terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
+  const double received = largestBand(result.irradiance[SunLight]) + largestBand(sky.irradiance);
+  PostLattice::PerTerrainSeen found;
+  if (terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen) > this->Options.gatherError * received ||
+    terrainSeen * around.largestPerTerrainSeen > smallReflectedShare * received ||
+    !this->Lattice->perTerrainSeenAt(i, j, found))
+    return false;
+  for (int band = 0; band < maxBands; ++band)
+  {
+    result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * found.reflected[band]);
+    result.irradiance[SkyLight][band] = std::max(0.0, sky.irradiance[band] + terrainSeen * found.skyCorrection[band]);
+  }
+  result.skyViewFactor = std::clamp(sky.skyViewFactor + terrainSeen * found.skyViewCorrection, 0.0, 1.0);
+  result.gatherVariance = around.variance;
+  return true;
 }
 
 Vec3 HierarchicalRadiosity::openSideOf(
@@ -215,8 +252,20 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
       const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
       if (!leaf)
         continue;
-      const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), grid.normalAt(i, j, hornNormals));
-      lattice->set(i, j, result.irradiance[ReflectedLight], result.gatherVariance);
+      const Vec3 normal = grid.normalAt(i, j, hornNormals);
+      const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), normal);
+      // What the gather found beyond the post's horizons' sky.
+      PostSky::Value sky;
+      if (!this->PostSkies || !this->PostSkies->found({ true, static_cast<std::size_t>(j) * grid.postsX() + i }, normal, sky))
+        continue;
+      PostLattice::Gathered gathered;
+      gathered.reflected = result.irradiance[ReflectedLight];
+      for (int band = 0; band < maxBands; ++band)
+        gathered.skyCorrection[band] = result.irradiance[SkyLight][band] - sky.irradiance[band];
+      gathered.skyViewCorrection = result.skyViewFactor - sky.skyViewFactor;
+      gathered.variance = result.gatherVariance;
+      gathered.terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
+      lattice->set(i, j, gathered);
     }
   });
   this->Lattice = std::move(lattice);

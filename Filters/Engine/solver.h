@@ -10,6 +10,7 @@
 #include "bf_oracle.h"
 #include "helement.h"
 #include "horizon_map.h"
+#include "post_lattice.h"
 #include "radiosity_types.h"
 
 #include <memory>
@@ -20,7 +21,6 @@ class Cluster;
 class FinalGather;
 class HorizonSky;
 class LeafLight;
-class PostLattice;
 class PostSky;
 class SceneGeometry;
 class OpenSky;
@@ -198,6 +198,11 @@ public:
   /// others take their light from surfaces one bounce more exact and cast no pilot.
   /// Does nothing for other scenes.
   void gatherPostLattice(const TerrainPatch& root, bool hornNormals);
+  /// After gatherPostLattice, a post between lattice posts that agree, per terrain seen,
+  /// on what their gathers found beyond their horizons' sky (within gatherError of what
+  /// the post receives), and whose light from surfaces is at most this share of it,
+  /// reads that between them instead of gathering (no rays).
+  static constexpr double smallReflectedShare = 0.01;
   /// After the solve (and findPostHorizons): what every leaf receives from the sky and
   /// from surfaces, by a gather of leafGatherRays from 4 of its points (16 where some
   /// lie inside something), fitted by a plane across the leaf (LeafLight), in parallel;
@@ -226,6 +231,11 @@ private:
   /// rule, Testing/Reference): a post on the line of a house's wall is judged from
   /// outside the house, not from its dark inside.
   Vec3 openSideOf(const Vec3& point, const Vec3& inside, const Vec3& normal, std::uint64_t seed) const;
+  /// Post (i, j), between gathered lattice posts that agree on the radiosity of the
+  /// terrain they see, takes its light from surfaces from them and its sky from its
+  /// horizons, without a gather: true, with `result` (its sun already in it) filled.
+  bool readFromLattice(const HorizonMap::Post& post, const Vec3& normal, int i, int j,
+    const PostLattice::Around& around, PointIrradiance& result) const;
   /// Refines pending links; returns how many were split.
   std::size_t refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated);
   std::size_t splitShadowedLeaves();

@@ -101,7 +101,7 @@ vtkSmartPointer<vtkPolyData> box(double x0, double x1, double y0, double y1, dou
 
 std::vector<std::string> accuracySceneNames()
 {
-  return { "olinda", "fractal", "crater", "canyon", "box", "house-sky", "house-sun", "olinda-sky", "olinda-black" };
+  return { "olinda", "fractal", "hills", "crater", "canyon", "box", "house-sky", "house-sun", "olinda-sky", "olinda-black" };
 }
 
 namespace
@@ -209,6 +209,19 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
     scene.reflectance = 0.5;
     scene.terrain = true;
     scene.description = "fractal DEM 129 x 129 at 30 m, 800 m relief, sun 10.7 deg up (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.5";
+  }
+  else if (name == "hills")
+  {
+    // (b') The scale benchmarks' terrain (make_fractal_dem: roughness 0.55, its finest
+    // scales as on the 1025^2 DEM), a morning sun 25 deg up: mostly open slopes, where
+    // light from surfaces is small and smooth.
+    const int n = 257;
+    const std::vector<float> heights = fractalHeights(n, 1, 0.55, 450.0);
+    scene.geometry = heightField(n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(j) * n + i]; });
+    scene.lights = { sunAt(25.0, 120.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 65.0, 120.0, 100.0) };
+    scene.reflectance = 0.2;
+    scene.terrain = true;
+    scene.description = "fractal hills 257 x 257 at 30 m, 450 m relief, sun 25 deg up (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.2";
   }
   else if (name == "crater")
   {

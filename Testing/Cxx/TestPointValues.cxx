@@ -3,8 +3,10 @@
 // terrain's posts, at points or averaged, within a window. Checked against closed
 // forms: a sun alone over black surfaces gives E cos(angle) and nothing else.
 #include "angles.h"
+#include "cie_sky.h"
 #include "point_values.h"
 #include "radiosity_scenes.h"
+#include "sky_hierarchy.h"
 #include "solver.h"
 #include "terrain_grids.h"
 #include "terrain_patch.h"
@@ -197,4 +199,70 @@ TEST(PointValues, DirectSunAtPostsCastsRaysOnlyWhereHorizonsCannotTell)
   EXPECT_EQ(byRays->directSunAt(grid->post(40, 40), grid->postNormal(40, 40)),
     byHorizons->directSunAt(grid->post(40, 40), grid->postNormal(40, 40)));
   EXPECT_GE(byHorizons->raysCast() - before, 50u);
+}
+
+TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
+{
+  // Rolling hills under a sun and a clear sky, reflectance 0.2: on most posts light from
+  // surfaces is a small, smooth share of what they receive. Read between the lattice's
+  // gathered posts it agrees with each post's own gather within the gather's error, for
+  // a fraction of the rays; where it is more than a small share, posts still gather.
+  const auto grid = makeGrid(97, 97, 30.0, [](double x, double y) {
+    return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0);
+  });
+  grid->setUniformMaterial(uniformSpectrum(0.2), Spectrum{});
+  const Direction sun = directionFromZenithAzimuth(55.0 * degree, 2.0);
+  const SkyHierarchy sky(CieGeneralSky(12, sun), 120.0, 6);
+  auto lit = [&](bool lattice) {
+    auto solver = std::make_unique<HierarchicalRadiosity>(sceneOf(*grid), RadiosityOptions{});
+    solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
+    solver->setSky(&sky);
+    EXPECT_TRUE(solver->solve());
+    solver->findPostHorizons();
+    solver->gatherLeaves();
+    if (lattice)
+      solver->gatherPostLattice(*solver->terrainRoots()[0], false);
+    return solver;
+  };
+  const auto reading = lit(true), gathering = lit(false);
+  const TerrainPatch& root = *reading->terrainRoots()[0];
+  const double gatherError = RadiosityOptions{}.gatherError;
+  int read = 0, gathered = 0;
+  double readSum = 0.0, gatheredSum = 0.0;
+  std::uint64_t rays[2] = { 0, 0 };
+  for (int j = 1; j < 97; j += 2)
+    for (int i = 1; i < 97; i += 2)
+    {
+      const TerrainPatch* leaf = root.mostLitLeafAt(i, j);
+      ASSERT_NE(leaf, nullptr);
+      const std::uint64_t before[2] = { reading->raysCast(), gathering->raysCast() };
+      const PointIrradiance a = reading->irradianceAt(*leaf, grid->post(i, j), grid->postNormal(i, j));
+      const PointIrradiance b =
+        gathering->irradianceAt(*gathering->terrainRoots()[0]->mostLitLeafAt(i, j), grid->post(i, j), grid->postNormal(i, j));
+      const std::uint64_t spent = reading->raysCast() - before[0];
+      rays[0] += spent;
+      rays[1] += gathering->raysCast() - before[1];
+      EXPECT_EQ(a.irradiance[SunLight], b.irradiance[SunLight]);
+      const double received = a.irradiance[SunLight][0] + b.irradiance[SkyLight][0] + b.irradiance[ReflectedLight][0];
+      if (spent > 1) // more than the sun's one ray: gathered
+      {
+        ++gathered;
+        continue;
+      }
+      ++read;
+      readSum += a.irradiance[ReflectedLight][0];
+      gatheredSum += b.irradiance[ReflectedLight][0];
+      // Within the error both gathers may leave; never where light from surfaces is
+      // more than a small share.
+      EXPECT_NEAR(a.irradiance[ReflectedLight][0] + a.irradiance[SkyLight][0],
+        b.irradiance[ReflectedLight][0] + b.irradiance[SkyLight][0], 5.0 * gatherError * received)
+        << i << ", " << j;
+      EXPECT_LT(b.irradiance[ReflectedLight][0], 2.0 * HierarchicalRadiosity::smallReflectedShare * received)
+        << i << ", " << j;
+      EXPECT_NEAR(a.skyViewFactor, b.skyViewFactor, 0.01) << i << ", " << j;
+    }
+  EXPECT_GT(read, 3 * gathered) << read << " posts read, " << gathered << " gathered";
+  EXPECT_GT(gathered, 0);
+  EXPECT_NEAR(readSum, gatheredSum, 0.05 * gatheredSum);
+  EXPECT_LT(rays[0], rays[1] / 3) << rays[0] << " rays against " << rays[1];
 }

@@ -223,9 +223,18 @@ TEST(PostLattice, ReadsBetweenItsPostsAndTellsTheLargestSpreadAround)
   EXPECT_EQ(lattice.varianceAround(5, 1), -1.0); // nothing gathered yet
   Spectrum read;
   EXPECT_FALSE(lattice.reflectedAt(5.0, 1.0, read));
-  lattice.set(4, 0, uniformSpectrum(10.0), 2.0);
-  lattice.set(8, 0, uniformSpectrum(20.0), 5.0);
-  lattice.set(4, 4, uniformSpectrum(30.0), 1.0);
+  auto gathered = [](double reflected, double variance, double terrainSeen, double skyCorrection = 0.0) {
+    PostLattice::Gathered g;
+    g.reflected = uniformSpectrum(reflected);
+    g.skyCorrection = uniformSpectrum(skyCorrection);
+    g.skyViewCorrection = skyCorrection / 100.0;
+    g.variance = variance;
+    g.terrainSeen = terrainSeen;
+    return g;
+  };
+  lattice.set(4, 0, gathered(10.0, 2.0, 0.1));
+  lattice.set(8, 0, gathered(20.0, 5.0, 0.1, -1.0));
+  lattice.set(4, 4, gathered(30.0, 1.0, 0.2));
   // (8, 4) has no data: the others share its weight.
   EXPECT_EQ(lattice.varianceAround(5, 1), 5.0);
   EXPECT_EQ(lattice.varianceAround(9, 6), 5.0); // beyond the last lattice post: its cell
@@ -240,4 +249,16 @@ TEST(PostLattice, ReadsBetweenItsPostsAndTellsTheLargestSpreadAround)
   EXPECT_GT(read[0], 10.0);
   EXPECT_LT(read[0], 30.0);
   EXPECT_FALSE(lattice.reflectedAt(8.0, 4.0, read));
+
+  // Per terrain seen: (4, 0) found 10 / 0.1 = 100, (8, 0) (20 - 1) / 0.1 = 190, (4, 4)
+  // 30 / 0.2 = 150: the spread around is 100 to 190.
+  const PostLattice::Around around = lattice.around(5, 1);
+  EXPECT_DOUBLE_EQ(around.largestPerTerrainSeen, 190.0);
+  EXPECT_DOUBLE_EQ(around.leastPerTerrainSeen, 100.0);
+  PostLattice::PerTerrainSeen per;
+  ASSERT_TRUE(lattice.perTerrainSeenAt(6.0, 0.0, per));
+  EXPECT_DOUBLE_EQ(per.reflected[0], 0.5 * (100.0 + 200.0));
+  EXPECT_DOUBLE_EQ(per.skyCorrection[0], 0.5 * (0.0 - 10.0));
+  EXPECT_DOUBLE_EQ(per.skyViewCorrection, 0.5 * (0.0 - 0.1));
+  EXPECT_FALSE(lattice.perTerrainSeenAt(8.0, 4.0, per));
 }
