@@ -95,9 +95,12 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return azimuths[a] < azimuths[b]; });
   this->Elevations.assign(static_cast<std::size_t>(terrain.postsX()) * terrain.postsY() * azimuthCount, 0);
+  const double det = this->Ux * this->Vy - this->Vx * this->Uy;
   for (std::size_t slot = 0; slot < order.size(); ++slot)
   {
-    this->Azimuths.push_back(azimuths[order[slot]]);
+    const double a = azimuths[order[slot]], x = std::cos(a), y = std::sin(a);
+    this->Azimuths.push_back(a);
+    this->AzimuthSteps.push_back({ (this->Vy * x - this->Vx * y) / det, (this->Ux * y - this->Uy * x) / det });
     this->sweep(steps[order[slot]][0], steps[order[slot]][1], static_cast<int>(slot));
   }
 }
@@ -289,12 +292,9 @@ double HorizonMap::edgeDistance(int i, int j, int edge) const
   }
 }
 
-double HorizonMap::exitDistance(int i, int j, double azimuth) const
+double HorizonMap::exitDistance(int i, int j, int k) const
 {
-  // The direction in grid parameters (the mean map inverted) of a metre along azimuth.
-  const double det = this->Ux * this->Vy - this->Vx * this->Uy;
-  const double x = std::cos(azimuth), y = std::sin(azimuth);
-  const double du = (this->Vy * x - this->Vx * y) / det, dv = (this->Ux * y - this->Uy * x) / det;
+  const double du = this->AzimuthSteps[k][0], dv = this->AzimuthSteps[k][1];
   const TerrainGrid& t = this->Terrain;
   double r = std::numeric_limits<double>::infinity();
   if (du > 0.0)
@@ -335,7 +335,7 @@ double HorizonMap::farBound(const Post& post, int k) const
   const double a0 = this->Azimuths[k], a1 = this->Azimuths[(k + 1) % azimuthCount];
   // The distance to a convex edge along an azimuth is least at the bracket's ends or
   // where it meets an edge square on.
-  double r = std::min(this->exitDistance(i, j, a0), this->exitDistance(i, j, a1));
+  double r = std::min(this->exitDistance(i, j, k), this->exitDistance(i, j, (k + 1) % azimuthCount));
   for (int edge = 0; edge < 4; ++edge)
   {
     const double a = this->EdgeAzimuths[edge];

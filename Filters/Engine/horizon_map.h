@@ -94,10 +94,13 @@ private:
   // Toward the edges u = 0, u = max, v = 0, v = max: the azimuth of the shortest way.
   std::array<double, 4> EdgeAzimuths{};
   double edgeDistance(int i, int j, int edge) const;
-  double exitDistance(int i, int j, double azimuth) const;
+  /// Distance from post (i, j) to the grid's edge along map azimuth k.
+  double exitDistance(int i, int j, int k) const;
   double farBoundAt(int i, int j, double distance) const;
   void measureRelief();
   std::vector<double> Azimuths;
+  /// A metre along each azimuth in grid parameters (the mean map inverted).
+  std::vector<std::array<double, 2>> AzimuthSteps;
   /// Azimuth by azimuth, each azimuth's posts in order; elevation / (pi / 2) x 65535.
   std::vector<std::uint16_t> Elevations;
 };

@@ -223,6 +223,10 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
   farBounds.fill(-1.0);
   return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours, [&](std::size_t s) {
     const SunBearing& at = this->SunBearings[s];
+    // The near bound alone first: where it does not prove the sun open, the far one
+    // need not be found.
+    if (!this->SunHorizons->clearlyAbove(post, at.bearing, at.elevation, 0.0))
+      return false;
     double& farBound = farBounds[at.bearing.k];
     if (farBound < 0.0)
       farBound = this->SunHorizons->farBound(post, at.bearing.k);
