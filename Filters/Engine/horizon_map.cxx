@@ -352,11 +352,26 @@ bool HorizonMap::clearlyAbove(const Post& post, const Bearing& bearing, double e
     return false;
   // Quantisation (2.4e-5 rad), and lines placed by the mean map: their azimuths off by
   // a small fraction of a degree, their horizons by S times that.
-  const double margin = 1e-3 + 2e-3 * this->SteepestSlope;
   const int next = (bearing.k + 1) % azimuthCount;
   const double near = std::min(this->elevation(post, bearing.k) + this->SteepestSlope * bearing.fromBelow,
     this->elevation(post, next) + this->SteepestSlope * bearing.toAbove);
-  return elevation > std::max(near, farBound) + margin;
+  return elevation > std::max(near, farBound) + this->proofMargin();
+}
+
+bool HorizonMap::clearlyBelow(const Post& post, const Bearing& bearing, double elevation, double farBound) const
+{
+  if (!this->Complete)
+    return false;
+  const double margin = this->proofMargin();
+  double lowest = -std::numeric_limits<double>::infinity();
+  for (const auto& [k, turn] : { std::pair<int, double>{ bearing.k, bearing.fromBelow },
+         std::pair<int, double>{ (bearing.k + 1) % azimuthCount, bearing.toAbove } })
+  {
+    const double horizon = this->elevation(post, k);
+    if (horizon > farBound + margin && horizon < 0.5 * pi)
+      lowest = std::max(lowest, std::atan(std::tan(horizon) - 2.0 * this->SteepestSlope * std::sin(0.5 * turn)));
+  }
+  return elevation < lowest - margin;
 }
 
 HorizonMap::Post HorizonMap::find(const Vec3& point) const

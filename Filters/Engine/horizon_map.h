@@ -77,7 +77,15 @@ public:
   /// a margin for the map's quantisation and mean directions; false where only a ray
   /// can tell. Only for grids without missing cells (holes have no such bound).
   bool clearlyAbove(const Post& post, const Bearing& bearing, double elevation, double farBound) const;
-  /// Whether every cell of the grid is valid (clearlyAbove needs it).
+  /// Whether they hide that direction, proven from a mapped neighbour's horizon: the
+  /// terrain point P that makes horizon H_k at azimuth k lies at some distance d, and
+  /// the point Q at the same distance along the bearing is at most the chord
+  /// d 2 sin(da / 2) from it, so no lower than S times that below it: Q rises above the
+  /// post at least atan(tan H_k - 2 S sin(da / 2)), and a ray below Q's elevation meets
+  /// the terrain before Q. Only where H_k is above farBound (so d < R and the arc from
+  /// P to Q stays on the grid), with the same margin.
+  bool clearlyBelow(const Post& post, const Bearing& bearing, double elevation, double farBound) const;
+  /// Whether every cell of the grid is valid (clearlyAbove and clearlyBelow need it).
   bool complete() const { return this->Complete; }
   /// The steepest slope (tan) of the grid's triangles: S above.
   double steepestSlope() const { return this->SteepestSlope; }
@@ -98,6 +106,8 @@ private:
   double exitDistance(int i, int j, int k) const;
   double farBoundAt(int i, int j, double distance) const;
   void measureRelief();
+  /// What clearlyAbove and clearlyBelow allow for the map's quantisation and mean directions.
+  double proofMargin() const { return 1e-3 + 2e-3 * this->SteepestSlope; }
   std::vector<double> Azimuths;
   /// A metre along each azimuth in grid parameters (the mean map inverted).
   std::vector<std::array<double, 2>> AzimuthSteps;

@@ -229,7 +229,7 @@ double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
   const Visibility& visibility, double* sunlitHours)
 {
-  return directSunlight(point, normal, suns, visibility, sunlitHours, [](std::size_t) { return false; });
+  return directSunlight(point, normal, suns, visibility, sunlitHours, [](std::size_t) { return SunProof::Unknown; });
 }
 
 int lightCategoryOf(const HElement& sender)

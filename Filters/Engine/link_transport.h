@@ -46,12 +46,19 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
 /// `sunlitHours`, also the durations of the suns that reach the point (sunshine).
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
   const Visibility& visibility, double* sunlitHours = nullptr);
-/// The same, where `provenOpen(s)` says that sun s, in front of the surface, reaches the
-/// point without a ray (the caller proved it, e.g. HorizonMap::clearlyAbove): the same
-/// value, without that ray.
-template <typename ProvenOpen>
+/// What a caller proved of a sun: open or shadowed need no ray.
+enum class SunProof
+{
+  Unknown,
+  Open,
+  Shadowed
+};
+/// The same, where `prove(s)` says what the caller proved of sun s in front of the
+/// surface (e.g. HorizonMap::clearlyAbove, clearlyBelow): the same value, without that
+/// ray.
+template <typename Prove>
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
-  const Visibility& visibility, double* sunlitHours, ProvenOpen&& provenOpen)
+  const Visibility& visibility, double* sunlitHours, Prove&& prove)
 {
   Spectrum result{};
   for (std::size_t s = 0; s < suns.size(); ++s)
@@ -64,9 +71,13 @@ Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector
     double transport = 0.0;
     if (!source.parallel())
       transport = transportToPoint(point, normal, sun, visibility, 1, 0);
-    else if (const double kernel = source.kernel(normal);
-             kernel > 0.0 && (provenOpen(s) || !visibility.occludedToward(point, normal, source.direction())))
-      transport = kernel;
+    else if (const double kernel = source.kernel(normal); kernel > 0.0)
+    {
+      const SunProof proof = prove(s);
+      if (proof == SunProof::Open ||
+        (proof == SunProof::Unknown && !visibility.occludedToward(point, normal, source.direction())))
+        transport = kernel;
+    }
     const Spectrum flux = sun.emittance();
     for (int band = 0; band < maxBands; ++band)
       result[band] += transport * flux[band];
