@@ -91,6 +91,9 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const Horizon
         this->sumPiece(mapPiece);
         table.pieces.push_back(std::move(mapPiece));
       }
+      MapPiece sector{ from, to, sinCos(from), sinCos(to), sinCos(0.5 * (from + to)) };
+      this->sumPiece(sector);
+      table.sectors.push_back(std::move(sector));
     }
   }
 }
@@ -383,6 +386,12 @@ HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal)
     const int b = (a + 1) % count;
     if (!rises[a] && !rises[b])
       continue;
+    if (std::max(elevations[a], elevations[b]) <= lowSector)
+    {
+      const MapPiece& sector = table.sectors[a];
+      this->hidePiece(sector, lowerBound(normal, sector.middle), 0.5 * (elevations[a] + elevations[b]), normal, result);
+      continue;
+    }
     for (int j = 0; j < piecesPerSector; ++j)
     {
       const MapPiece& piece = table.pieces[a * piecesPerSector + j];

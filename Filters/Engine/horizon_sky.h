@@ -45,6 +45,12 @@ public:
   /// Pieces between two sampled azimuths, over which the horizon is interpolated.
   static constexpr int piecesPerSector = 2;
   static constexpr double bandTolerance = 0.002;
+  /// At a map's post, a sector whose horizons both stay this low (radians, 11.5 deg) is
+  /// taken as one piece: its hidden band is thin and nearly linear in the horizon. On
+  /// the 1025^2 fractal's day the posts' skies took 0.4 s less; the accuracy report's
+  /// steep fractal moved from 0.488 to 0.492 % RMS of global (its reference at 32,768
+  /// directions), at 0.35 rad 0.496 %, every sector whole 0.497 %.
+  static constexpr double lowSector = 0.2;
   static constexpr int maximumBisections = 10;
 
   /// `map`, where given, holds the horizons of the terrain's posts (may be null).
@@ -139,6 +145,7 @@ private:
   {
     std::vector<SinCos> directions;
     std::vector<MapPiece> pieces; // piecesPerSector after each azimuth
+    std::vector<MapPiece> sectors; // each azimuth to the next, whole
   };
   MapAzimuths MapTable; // of the map's azimuths, where there is a map
 };
