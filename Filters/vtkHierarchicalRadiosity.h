@@ -133,7 +133,10 @@ public:
    * the solution found open take 64 of each and no pilot). At the posts of a scene of
    * one terrain with horizons, rays are drawn below each post's horizon only, at most a
    * quarter of this; a lattice of every 4th post takes a pilot of 16, the other posts
-   * at least 9 rays, their count from the lattice's spread. A point's rays start two
+   * at least 9 rays, their count from the lattice's spread, or none where the lattice
+   * posts around them agree within GatherError on what surfaces send per terrain seen
+   * and that is at most 1 % of what the post receives (read between them). A point's
+   * rays start two
    * ray offsets toward the centre of the cells around it (the limit from inside its
    * surface), or, where that sees the back of a surface, from the most open point two
    * offsets away diagonally. 0 re-evaluates the hierarchy's links at each point

@@ -108,6 +108,19 @@ namespace
 {
 // (d) A house and two trees on a small hill (the paper's Figs. 5-8): a terrain grid, a
 // box house and trees as closed triangle meshes (trunk box, crown sphere).
+// An n x n fractal DEM at 30 m (roughness 0.55) under a sun `altitude` deg up (800
+// W/m^2) toward compass `azimuth` and the matching CIE clear sky (100 W/m^2).
+void fractalTerrain(AccuracyScene& scene, int n, std::uint32_t seed, double reliefM, double altitude,
+  double azimuth, double reflectance)
+{
+  const std::vector<float> heights = fractalHeights(n, seed, 0.55, reliefM);
+  scene.geometry = heightField(n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(j) * n + i]; });
+  scene.lights = { sunAt(altitude, azimuth, 800.0),
+    skyMap(vtkSkySource::CIE_GENERAL, 12, 90.0 - altitude, azimuth, 100.0) };
+  scene.reflectance = reflectance;
+  scene.terrain = true;
+}
+
 void houseAndTrees(AccuracyScene& scene, bool withSun)
 {
   auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
@@ -202,12 +215,7 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
   else if (name == "fractal")
   {
     // (b) Steep fractal relief, winter sun 10.7 deg up: long shadows, strong interreflection.
-    const int n = 129;
-    const std::vector<float> heights = fractalHeights(n, 3, 0.55, 800.0);
-    scene.geometry = heightField(n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(j) * n + i]; });
-    scene.lights = { sunAt(10.7, 160.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 79.3, 160.0, 100.0) };
-    scene.reflectance = 0.5;
-    scene.terrain = true;
+    fractalTerrain(scene, 129, 3, 800.0, 10.7, 160.0, 0.5);
     scene.description = "fractal DEM 129 x 129 at 30 m, 800 m relief, sun 10.7 deg up (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.5";
   }
   else if (name == "hills")
@@ -215,12 +223,7 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
     // (b') The scale benchmarks' terrain (make_fractal_dem: roughness 0.55, its finest
     // scales as on the 1025^2 DEM), a morning sun 25 deg up: mostly open slopes, where
     // light from surfaces is small and smooth.
-    const int n = 257;
-    const std::vector<float> heights = fractalHeights(n, 1, 0.55, 450.0);
-    scene.geometry = heightField(n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(j) * n + i]; });
-    scene.lights = { sunAt(25.0, 120.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 65.0, 120.0, 100.0) };
-    scene.reflectance = 0.2;
-    scene.terrain = true;
+    fractalTerrain(scene, 257, 1, 450.0, 25.0, 120.0, 0.2);
     scene.description = "fractal hills 257 x 257 at 30 m, 450 m relief, sun 25 deg up (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.2";
   }
   else if (name == "crater")
