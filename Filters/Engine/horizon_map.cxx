@@ -175,74 +175,74 @@ void HorizonMap::sweep(int q, int p, int slot)
     // 52.3 s line by line, 46.2 s 32 lines in step, 43.6 s 128).
     std::array<std::vector<Point>, 128> hulls; // per line: the upper hull of what lies ahead; the nearest last
     std::array<int, 128> onLine{};
+    // Drops the hull's nearest points that (x, z) and the next one hide: they are below
+    // the segment between them, so no point nearer sees them as its horizon.
+    auto pop = [](std::vector<Point>& hull, double x, double z) {
+      while (hull.size() >= 2)
+      {
+        const Point& a = hull[hull.size() - 1];
+        const Point& b = hull[hull.size() - 2];
+        if ((a.z - z) * (b.x - x) <= (b.z - z) * (a.x - x))
+          hull.pop_back();
+        else
+          break;
+      }
+    };
     for (std::size_t first = r.begin(); first < r.end(); first += hulls.size())
     {
-    const std::size_t lines = std::min<std::size_t>(r.end() - first, hulls.size());
-    int longest = 0;
-    for (std::size_t l = 0; l < lines; ++l)
-    {
-      const int i0 = starts[first + l][0], j0 = starts[first + l][1];
-      hulls[l].clear();
-      onLine[l] = 1;
-      while (inGrid(i0 + onLine[l] * q, j0 + onLine[l] * p))
-        ++onLine[l];
-      longest = std::max(longest, onLine[l]);
-    }
-    for (int k = longest - 1; k >= 0; --k)
+      const std::size_t lines = std::min<std::size_t>(r.end() - first, hulls.size());
+      int longest = 0;
       for (std::size_t l = 0; l < lines; ++l)
       {
-        if (k >= onLine[l])
-          continue;
-        std::vector<Point>& hull = hulls[l];
-        // Drops the hull's nearest points that (x, z) and the next one hide: they are
-        // below the segment between them, so no point nearer sees them as its horizon.
-        auto pop = [&hull](double x, double z) {
-          while (hull.size() >= 2)
-          {
-            const Point& a = hull[hull.size() - 1];
-            const Point& b = hull[hull.size() - 2];
-            if ((a.z - z) * (b.x - x) <= (b.z - z) * (a.x - x))
-              hull.pop_back();
-            else
-              break;
-          }
-        };
-        const int i = starts[first + l][0] + k * q, j = starts[first + l][1] + k * p;
-        // Where the step ahead lies inside a grid without missing cells, every crossing
-        // is on terrain and needs no check (most of a DEM).
-        const bool checked = !complete || !inGrid(i + q, j + p);
-        // The crossings ahead of this post, farthest first (past the last post, those
-        // still inside the grid).
-        for (auto c = crossings.rbegin(); c != crossings.rend(); ++c)
+        const int i0 = starts[first + l][0], j0 = starts[first + l][1];
+        hulls[l].clear();
+        onLine[l] = 1;
+        while (inGrid(i0 + onLine[l] * q, j0 + onLine[l] * p))
+          ++onLine[l];
+        longest = std::max(longest, onLine[l]);
+      }
+      for (int k = longest - 1; k >= 0; --k)
+        for (std::size_t l = 0; l < lines; ++l)
         {
-          if (checked &&
-            (!inGrid(i + c->a0, j + c->b0) || !inGrid(i + c->a1, j + c->b1) ||
-              !(cellValid(i + c->ci, j + c->cj) || cellValid(i + c->di, j + c->dj))))
+          if (k >= onLine[l])
             continue;
-          const float* a = position(i + c->a0, j + c->b0);
-          const float* b = position(i + c->a1, j + c->b1);
-          const double x = (a[0] + c->f * (b[0] - a[0])) * dx + (a[1] + c->f * (b[1] - a[1])) * dy;
-          const double z = a[2] + c->f * (b[2] - a[2]);
-          pop(x, z);
+          std::vector<Point>& hull = hulls[l];
+          const int i = starts[first + l][0] + k * q, j = starts[first + l][1] + k * p;
+          // Where the step ahead lies inside a grid without missing cells, every
+          // crossing is on terrain and needs no check (most of a DEM).
+          const bool checked = !complete || !inGrid(i + q, j + p);
+          // The crossings ahead of this post, farthest first (past the last post, those
+          // still inside the grid).
+          for (auto c = crossings.rbegin(); c != crossings.rend(); ++c)
+          {
+            if (checked &&
+              (!inGrid(i + c->a0, j + c->b0) || !inGrid(i + c->a1, j + c->b1) ||
+                !(cellValid(i + c->ci, j + c->cj) || cellValid(i + c->di, j + c->dj))))
+              continue;
+            const float* a = position(i + c->a0, j + c->b0);
+            const float* b = position(i + c->a1, j + c->b1);
+            const double x = (a[0] + c->f * (b[0] - a[0])) * dx + (a[1] + c->f * (b[1] - a[1])) * dy;
+            const double z = a[2] + c->f * (b[2] - a[2]);
+            pop(hull, x, z);
+            hull.push_back({ x, z });
+          }
+          if (!complete && !t.postUsed(i, j))
+            continue;
+          const float* o = position(i, j);
+          const double x = o[0] * dx + o[1] * dy, z = o[2];
+          pop(hull, x, z);
+          if (!hull.empty() && hull.back().x > x)
+          {
+            const double tangent = (hull.back().z - z) / (hull.back().x - x);
+            if (tangent > 0.0)
+            {
+              const double quantised = std::round(std::atan(tangent) / (0.5 * pi) * 65535.0);
+              this->Elevations[slot * gridPosts + static_cast<std::size_t>(j) * nx + i] =
+                static_cast<std::uint16_t>(std::min(65535.0, quantised));
+            }
+          }
           hull.push_back({ x, z });
         }
-        if (!complete && !t.postUsed(i, j))
-          continue;
-        const float* o = position(i, j);
-        const double x = o[0] * dx + o[1] * dy, z = o[2];
-        pop(x, z);
-        if (!hull.empty() && hull.back().x > x)
-        {
-          const double tangent = (hull.back().z - z) / (hull.back().x - x);
-          if (tangent > 0.0)
-          {
-            const double quantised = std::round(std::atan(tangent) / (0.5 * pi) * 65535.0);
-            this->Elevations[slot * gridPosts + static_cast<std::size_t>(j) * nx + i] =
-              static_cast<std::uint16_t>(std::min(65535.0, quantised));
-          }
-        }
-        hull.push_back({ x, z });
-      }
     }
   });
 }

@@ -16,8 +16,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cstdio>
 
 // Point evaluation: irradiance at the points users read (terrain posts, polygon
 // vertices), from the solved hierarchy but with what varies sharply taken at the point.
@@ -124,15 +122,13 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     {
       const int nx = this->HeightFieldGrid->postsX(), i = static_cast<int>(post.index % nx);
       const int j = static_cast<int>(post.index / nx);
-      Spectrum expected;
       const PostLattice::Around around = this->Lattice->around(i, j);
-      budget.knownVariance = around.variance;
-      if (budget.knownVariance >= 0.0 && this->readFromLattice(post, normal, i, j, around, result))
+      if (around.variance >= 0.0 && this->readFromLattice(post, normal, i, j, around, result))
         return result;
-      if (budget.knownVariance >= 0.0 && this->Lattice->reflectedAt(i, j, expected))
-        budget.pilot = 0, budget.minimum = std::min(budget.maximum, 9), budget.knownSurfaces = largestBand(expected);
-      else
-        budget.knownVariance = -1.0;
+      Spectrum expected;
+      if (around.variance >= 0.0 && this->Lattice->reflectedAt(i, j, expected))
+        budget.knownVariance = around.variance, budget.pilot = 0, budget.minimum = std::min(budget.maximum, 9),
+        budget.knownSurfaces = largestBand(expected);
     }
     // Over a height field, a leaf the solution found open (nearly all the sky its plane
     // could see, next to no light from surfaces) needs no pilot: its points take the

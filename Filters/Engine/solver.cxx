@@ -167,8 +167,7 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
   if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
     this->PointSuns.push_back(this->Sources->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
   // The suns' bearings on the horizon map are those of the suns before this one.
-  this->SunHorizons = nullptr;
-  this->SunBearings.clear();
+  this->forgetSunBearings();
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
@@ -185,8 +184,7 @@ void HierarchicalRadiosity::resetHorizons()
 {
   // Until findPostHorizons, the horizons of the rays alone.
   this->PostHorizons = nullptr;
-  this->SunHorizons = nullptr;
-  this->SunBearings.clear();
+  this->forgetSunBearings();
   this->Gather->setHorizons(nullptr);
   this->Horizons = this->SkyAtPoints && this->HeightField
     ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, nullptr)
@@ -251,10 +249,15 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   this->Stats.secondsHorizons = secondsSince(start);
 }
 
-void HierarchicalRadiosity::findSunHorizons()
+void HierarchicalRadiosity::forgetSunBearings()
 {
   this->SunHorizons = nullptr;
   this->SunBearings.clear();
+}
+
+void HierarchicalRadiosity::findSunHorizons()
+{
+  this->forgetSunBearings();
   const TerrainGrid* grid = this->HeightFieldGrid;
   if (!grid || this->PointSuns.empty())
     return;

@@ -264,6 +264,8 @@ private:
   /// The sky's horizons before findPostHorizons: those the rays find (none without a
   /// sky or outside a height field).
   void resetHorizons();
+  /// Drops the suns' bearings on the horizons' map (directSunAt casts every ray again).
+  void forgetSunBearings();
 
   RadiosityOptions Options;
   /// The surfaces and clusters; its first InitialElements are the hierarchy as built.
