@@ -94,7 +94,8 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
   std::vector<int> order(steps.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return azimuths[a] < azimuths[b]; });
-  this->Elevations.assign(static_cast<std::size_t>(terrain.postsX()) * terrain.postsY() * azimuthCount, 0);
+  this->PostCount = static_cast<std::size_t>(terrain.postsX()) * terrain.postsY();
+  this->Elevations.assign(this->PostCount * azimuthCount, 0);
   const double det = this->Ux * this->Vy - this->Vx * this->Uy;
   for (std::size_t slot = 0; slot < order.size(); ++slot)
   {
@@ -333,60 +334,129 @@ double HorizonMap::farBoundAt(int i, int j, double distance) const
   return r > 0.0 ? std::atan(rise / r) : 0.5 * pi;
 }
 
-double HorizonMap::farBound(const Post& post) const
+bool HorizonMap::cornerWithin(int i, int j, int k) const
 {
-  const int nx = this->Terrain.postsX();
-  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
-  double r = std::numeric_limits<double>::infinity();
-  for (int edge = 0; edge < 4; ++edge)
-    r = std::min(r, this->edgeDistance(i, j, edge));
-  return this->farBoundAt(i, j, r);
+  const TerrainGrid& t = this->Terrain;
+  const double a0 = this->Azimuths[k], a1 = this->Azimuths[(k + 1) % azimuthCount];
+  const double x0 = std::cos(a0), y0 = std::sin(a0), x1 = std::cos(a1), y1 = std::sin(a1);
+  for (const int ci : { 0, t.postsX() - 1 })
+    for (const int cj : { 0, t.postsY() - 1 })
+    {
+      const int du = ci - i, dv = cj - j;
+      const double x = this->Ux * du + this->Vx * dv, y = this->Uy * du + this->Vy * dv;
+      // Strictly: a corner on a bracket's end (rounding aside) is that end's distance.
+      const double tolerance = 1e-9 * std::hypot(x, y);
+      if (x0 * y - y0 * x > tolerance && x * y1 - y * x1 > tolerance)
+        return true;
+    }
+  return false;
 }
 
-double HorizonMap::farBound(const Post& post, int k) const
+HorizonMap::Sight HorizonMap::sight(double azimuth, double elevation) const
 {
-  const int nx = this->Terrain.postsX();
-  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
-  const double a0 = this->Azimuths[k], a1 = this->Azimuths[(k + 1) % azimuthCount];
+  Sight s;
+  s.bearing = this->bearing(azimuth);
+  s.elevation = elevation;
+  const double S = this->SteepestSlope;
+  s.riseBelow = S * s.bearing.fromBelow;
+  s.riseAbove = S * s.bearing.toAbove;
+  s.dropBelow = 2.0 * S * std::sin(0.5 * s.bearing.fromBelow);
+  s.dropAbove = 2.0 * S * std::sin(0.5 * s.bearing.toAbove);
+  const double raised = elevation + this->proofMargin();
+  s.tanWithMargin = raised < 0.5 * pi ? std::tan(raised) : std::numeric_limits<double>::infinity();
+  return s;
+}
+
+HorizonMap::View::View(const HorizonMap& map, const Post& post)
+  : Map(map)
+  , At(post)
+{
+}
+
+double HorizonMap::View::tangent(int k)
+{
+  if (!(this->Tangent >> k & 1u))
+  {
+    this->Tangents[k] = static_cast<float>(std::tan(this->elevation(k)));
+    this->Tangent |= std::uint64_t{ 1 } << k;
+  }
+  return this->Tangents[k];
+}
+
+HorizonMap::View::Reach& HorizonMap::View::reach(int k)
+{
+  Reach& reach = this->Reaches[k];
+  if (this->Reached >> k & 1u)
+    return reach;
+  this->Reached |= std::uint64_t{ 1 } << k;
+  const HorizonMap& map = this->Map;
+  const int nx = map.Terrain.postsX();
+  const int i = static_cast<int>(this->At.index % nx), j = static_cast<int>(this->At.index / nx);
+  const double r0 = map.exitDistance(i, j, k), r1 = map.exitDistance(i, j, (k + 1) % azimuthCount);
+  reach = Reach{};
+  reach.longer = r1 > r0 ? 1 : 0;
+  reach.pastShorter = map.farBoundAt(i, j, std::min(r0, r1));
+  reach.pastLonger = map.cornerWithin(i, j, k) ? map.farBoundAt(i, j, std::max(r0, r1)) : 0.0;
+  return reach;
+}
+
+double HorizonMap::View::pastLeast(int k)
+{
+  Reach& reach = this->reach(k);
+  if (reach.pastLeast >= 0.0)
+    return reach.pastLeast;
+  const HorizonMap& map = this->Map;
+  const int nx = map.Terrain.postsX();
+  const int i = static_cast<int>(this->At.index % nx), j = static_cast<int>(this->At.index / nx);
+  const double a0 = map.Azimuths[k], a1 = map.Azimuths[(k + 1) % azimuthCount];
   // The distance to a convex edge along an azimuth is least at the bracket's ends or
   // where it meets an edge square on.
-  double r = std::min(this->exitDistance(i, j, k), this->exitDistance(i, j, (k + 1) % azimuthCount));
+  double least = std::min(map.exitDistance(i, j, k), map.exitDistance(i, j, (k + 1) % azimuthCount));
   for (int edge = 0; edge < 4; ++edge)
   {
-    const double a = this->EdgeAzimuths[edge];
+    const double a = map.EdgeAzimuths[edge];
     const bool inside = a0 <= a1 ? (a >= a0 && a <= a1) : (a >= a0 || a <= a1);
     if (inside)
-      r = std::min(r, this->edgeDistance(i, j, edge));
+      least = std::min(least, map.edgeDistance(i, j, edge));
   }
-  return this->farBoundAt(i, j, r);
+  return reach.pastLeast = map.farBoundAt(i, j, least);
 }
 
-bool HorizonMap::clearlyAbove(const Post& post, const Bearing& bearing, double elevation, double farBound) const
+bool HorizonMap::View::clearlyAbove(const Sight& sight)
 {
-  if (!this->Complete)
+  if (!this->Map.Complete)
     return false;
-  // Quantisation (2.4e-5 rad), and lines placed by the mean map: their azimuths off by
-  // a small fraction of a degree, their horizons by S times that.
-  const int next = (bearing.k + 1) % azimuthCount;
-  const double near = std::min(this->elevation(post, bearing.k) + this->SteepestSlope * bearing.fromBelow,
-    this->elevation(post, next) + this->SteepestSlope * bearing.toAbove);
-  return elevation > std::max(near, farBound) + this->proofMargin();
+  // The margin: quantisation (2.4e-5 rad), and lines placed by the mean map (their
+  // azimuths off by a small fraction of a degree, their horizons by S times that).
+  const double margin = this->Map.proofMargin();
+  const int k = sight.bearing.k, next = (k + 1) % azimuthCount;
+  const double fromBelow = this->elevation(k) + sight.riseBelow;
+  const double fromAbove = this->elevation(next) + sight.riseAbove;
+  // The mapped horizons alone first: where they do not prove the sight open, the
+  // distances need not be found.
+  if (!(sight.elevation > std::min(fromBelow, fromAbove) + margin))
+    return false;
+  const Reach& reach = this->reach(k);
+  const double pastShorter = std::min(reach.longer ? fromAbove : fromBelow, reach.pastShorter);
+  return sight.elevation > std::max(pastShorter, reach.pastLonger) + margin;
 }
 
-bool HorizonMap::clearlyBelow(const Post& post, const Bearing& bearing, double elevation, double farBound) const
+bool HorizonMap::View::clearlyBelow(const Sight& sight)
 {
-  if (!this->Complete)
+  if (!this->Map.Complete)
     return false;
-  const double margin = this->proofMargin();
-  double lowest = -std::numeric_limits<double>::infinity();
-  for (const auto& [k, turn] : { std::pair<int, double>{ bearing.k, bearing.fromBelow },
-         std::pair<int, double>{ (bearing.k + 1) % azimuthCount, bearing.toAbove } })
+  const double margin = this->Map.proofMargin();
+  const int k = sight.bearing.k, next = (k + 1) % azimuthCount;
+  // In tangents: tan(elevation + margin) < tan H_k - drop, the same as elevation below
+  // atan(tan H_k - drop) - margin.
+  for (const auto& [side, drop] : { std::pair<int, double>{ k, sight.dropBelow }, { next, sight.dropAbove } })
   {
-    const double horizon = this->elevation(post, k);
-    if (horizon > farBound + margin && horizon < 0.5 * pi)
-      lowest = std::max(lowest, std::atan(std::tan(horizon) - 2.0 * this->SteepestSlope * std::sin(0.5 * turn)));
+    const double horizon = this->elevation(side);
+    if (horizon > margin && horizon < 0.5 * pi && sight.tanWithMargin < this->tangent(side) - drop &&
+      horizon > this->pastLeast(k) + margin)
+      return true;
   }
-  return elevation < lowest - margin;
+  return false;
 }
 
 HorizonMap::Post HorizonMap::find(const Vec3& point) const
@@ -409,9 +479,4 @@ HorizonMap::Post HorizonMap::find(const Vec3& point) const
   return {};
 }
 
-double HorizonMap::elevation(const Post& post, int a) const
-{
-  const std::size_t posts = static_cast<std::size_t>(this->Terrain.postsX()) * this->Terrain.postsY();
-  return this->Elevations[a * posts + post.index] * (0.5 * pi / 65535.0);
-}
 } // namespace terralux

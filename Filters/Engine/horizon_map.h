@@ -14,6 +14,7 @@
 // a grid bent by the Earth's curvature its azimuth is the mean one, to a small fraction
 // of a degree.
 
+#include "angles.h"
 #include "radiosity_types.h"
 
 #include <array>
@@ -50,7 +51,10 @@ public:
   const std::vector<double>& azimuths() const { return this->Azimuths; }
   /// The horizon's elevation at a post toward azimuth a (radians, 0 where nothing
   /// rises above the horizontal), to 2.4e-5 rad.
-  double elevation(const Post& post, int a) const;
+  double elevation(const Post& post, int a) const
+  {
+    return this->Elevations[a * this->PostCount + post.index] * (0.5 * pi / 65535.0);
+  }
 
   /// A direction between two of the map's azimuths: the one below it (k) and how far
   /// it lies from it and from the next (radians).
@@ -60,31 +64,75 @@ public:
     double fromBelow = 0.0, toAbove = 0.0;
   };
   Bearing bearing(double azimuth) const;
-  /// What the horizon between the map's azimuths can be proven not to reach, by two
-  /// bounds (Lipschitz, as horizon sectors are bounded; Stewart 1998):
-  /// - terrain within the post's distance to the grid's edge, R: a point's elevation
-  ///   seen from the post turns with the azimuth at most as fast as the steepest
-  ///   triangle's slope S (d/da atan((z(r, a) - z0) / r) <= |grad z|), so the horizon
-  ///   of those points at a lies below min(H_k + S da_k, H_k+1 + S da_k+1);
-  /// - terrain farther: below atan((highest height - z0) / R).
-  /// farBound is the second. R is the least distance from the post to the grid's edge
-  /// between the azimuths k and k + 1 (the arcs of points nearer stay on the grid);
-  /// without k, in any direction.
-  double farBound(const Post& post, int k) const;
-  double farBound(const Post& post) const;
-  /// Whether the terrain's own triangles (what rays meet) leave the direction of
-  /// `bearing` at `elevation` (radians) open from the post, proven by those bounds with
-  /// a margin for the map's quantisation and mean directions; false where only a ray
-  /// can tell. Only for grids without missing cells (holes have no such bound).
-  bool clearlyAbove(const Post& post, const Bearing& bearing, double elevation, double farBound) const;
-  /// Whether they hide that direction, proven from a mapped neighbour's horizon: the
-  /// terrain point P that makes horizon H_k at azimuth k lies at some distance d, and
-  /// the point Q at the same distance along the bearing is at most the chord
-  /// d 2 sin(da / 2) from it, so no lower than S times that below it: Q rises above the
-  /// post at least atan(tan H_k - 2 S sin(da / 2)), and a ray below Q's elevation meets
-  /// the terrain before Q. Only where H_k is above farBound (so d < R and the arc from
-  /// P to Q stays on the grid), with the same margin.
-  bool clearlyBelow(const Post& post, const Bearing& bearing, double elevation, double farBound) const;
+  /// A direction to test at many posts (a sun over a day or a year), with what the
+  /// proofs below take from it found once.
+  struct Sight
+  {
+    Bearing bearing;
+    double elevation = 0.0;        ///< radians
+    double riseBelow = 0.0, riseAbove = 0.0; ///< S x the turns to the mapped azimuths
+    double dropBelow = 0.0, dropAbove = 0.0; ///< 2 S sin(turn / 2)
+    double tanWithMargin = 0.0;    ///< tan(elevation + margin); +inf at or past the zenith
+  };
+  Sight sight(double azimuth, double elevation) const;
+
+  /// One post's horizons, read from the map as the proofs need them, for many sights.
+  /// Proofs hold only for grids without missing cells (complete(); holes have no such
+  /// bound); elsewhere they prove nothing. Not shared between threads.
+  class View
+  {
+  public:
+    View(const HorizonMap& map, const Post& post);
+    /// Whether the terrain's own triangles (what rays meet) leave the sight open from
+    /// the post, proven with a margin for the map's quantisation and mean directions;
+    /// false where only a ray can tell. The bounds (Lipschitz, as horizon sectors are
+    /// bounded; Stewart 1998): a point Q at distance r along the sight lies within the
+    /// chord r 2 sin(da/2) of the point at the same distance along a mapped azimuth, so
+    /// no higher than S times that above it (S the steepest triangle's slope; the grid
+    /// is convex, so the chord is on it) wherever that azimuth's line still runs on the
+    /// grid (r <= its exit distance). The two mapped horizons bound Q up to the shorter
+    /// exit distance; beyond it the longer side's, or the highest point of the terrain
+    /// seen from there (atan((highest height - z0) / distance)); beyond the longer
+    /// (only where a corner of the grid lies within the bracket) that alone.
+    bool clearlyAbove(const Sight& sight);
+    /// Whether they hide the sight, proven from a mapped neighbour's horizon: the
+    /// terrain point P that makes horizon H_k lies at some distance d, and the point Q
+    /// at the same distance along the sight is at most the chord d 2 sin(da / 2) from
+    /// it, so no lower than S times that below it: Q rises above the post at least
+    /// atan(tan H_k - 2 S sin(da / 2)), and a ray below Q's elevation meets the terrain
+    /// before Q. Only where H_k is above the highest point seen from the least exit
+    /// distance R over the bracket (so d < R and Q is on the grid), with the same
+    /// margin.
+    bool clearlyBelow(const Sight& sight);
+
+  private:
+    /// Distances of a bracket k (azimuths k, k + 1), as angles of the highest point seen
+    /// from them: atan(rise / R).
+    struct Reach
+    {
+      double pastShorter = 0.0; // R: the shorter exit distance of the two azimuths
+      double pastLonger = 0.0;  // the longer, where a corner lies within; else 0
+      double pastLeast = -1.0;  // the least over the bracket (found when first asked)
+      int longer = 0;           // 0: azimuth k, 1: k + 1
+    };
+    double elevation(int k)
+    {
+      if (!(this->Read >> k & 1u))
+      {
+        this->Elevations[k] = static_cast<float>(this->Map.elevation(this->At, k));
+        this->Read |= std::uint64_t{ 1 } << k;
+      }
+      return this->Elevations[k];
+    }
+    double tangent(int k);
+    Reach& reach(int k);
+    double pastLeast(int k);
+    const HorizonMap& Map;
+    Post At;
+    std::array<float, azimuthCount> Elevations, Tangents;
+    std::array<Reach, azimuthCount> Reaches;
+    std::uint64_t Read = 0, Tangent = 0, Reached = 0; // bit k: found
+  };
   /// Whether every cell of the grid is valid (clearlyAbove and clearlyBelow need it).
   bool complete() const { return this->Complete; }
   /// The steepest slope (tan) of the grid's triangles: S above.
@@ -105,6 +153,10 @@ private:
   /// Distance from post (i, j) to the grid's edge along map azimuth k.
   double exitDistance(int i, int j, int k) const;
   double farBoundAt(int i, int j, double distance) const;
+  /// Whether one of the grid's corners seen from post (i, j) lies strictly between
+  /// azimuths k and k + 1 (where the exit distance can exceed both ends'): brackets
+  /// are narrower than pi, so by the signs of two cross products.
+  bool cornerWithin(int i, int j, int k) const;
   void measureRelief();
   /// What clearlyAbove and clearlyBelow allow for the map's quantisation and mean directions.
   double proofMargin() const { return 1e-3 + 2e-3 * this->SteepestSlope; }
@@ -113,5 +165,6 @@ private:
   std::vector<std::array<double, 2>> AzimuthSteps;
   /// Azimuth by azimuth, each azimuth's posts in order; elevation / (pi / 2) x 65535.
   std::vector<std::uint16_t> Elevations;
+  std::size_t PostCount = 0;
 };
 } // namespace terralux

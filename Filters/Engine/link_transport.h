@@ -54,7 +54,7 @@ enum class SunProof
   Shadowed
 };
 /// The same, where `prove(s)` says what the caller proved of sun s in front of the
-/// surface (e.g. HorizonMap::clearlyAbove, clearlyBelow): the same value, without that
+/// surface (e.g. HorizonMap::View::clearlyAbove, clearlyBelow): the same value, without that
 /// ray.
 template <typename Prove>
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,

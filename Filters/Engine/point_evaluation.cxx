@@ -213,20 +213,13 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
   const HorizonMap::Post post = this->SunHorizons ? this->SunHorizons->find(point) : HorizonMap::Post{};
   if (!post)
     return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
-  // A sun the post's horizons prove open or hidden takes no ray. The far bound of each
-  // azimuth bracket, found when a sun first needs it.
-  std::array<double, HorizonMap::azimuthCount> farBounds;
-  farBounds.fill(-1.0);
+  // A sun the post's horizons prove open or hidden takes no ray.
+  HorizonMap::View horizons(*this->SunHorizons, post);
   return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours, [&](std::size_t s) {
-    const SunBearing& at = this->SunBearings[s];
-    const HorizonMap& map = *this->SunHorizons;
-    double& farBound = farBounds[at.bearing.k];
-    auto far = [&]() { return farBound < 0.0 ? (farBound = map.farBound(post, at.bearing.k)) : farBound; };
-    // The near bound alone first: where it does not prove the sun open, the far one
-    // need not be found for that.
-    if (map.clearlyAbove(post, at.bearing, at.elevation, 0.0))
-      return map.clearlyAbove(post, at.bearing, at.elevation, far()) ? SunProof::Open : SunProof::Unknown;
-    return map.clearlyBelow(post, at.bearing, at.elevation, far()) ? SunProof::Shadowed : SunProof::Unknown;
+    const HorizonMap::Sight& sight = this->SunSights[s];
+    if (horizons.clearlyAbove(sight))
+      return SunProof::Open;
+    return horizons.clearlyBelow(sight) ? SunProof::Shadowed : SunProof::Unknown;
   });
 }
 

@@ -167,7 +167,7 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
   if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
     this->PointSuns.push_back(this->Sources->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
   // The suns' bearings on the horizon map are those of the suns before this one.
-  this->forgetSunBearings();
+  this->forgetSunSights();
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
@@ -184,7 +184,7 @@ void HierarchicalRadiosity::resetHorizons()
 {
   // Until findPostHorizons, the horizons of the rays alone.
   this->PostHorizons = nullptr;
-  this->forgetSunBearings();
+  this->forgetSunSights();
   this->Gather->setHorizons(nullptr);
   this->Horizons = this->SkyAtPoints && this->HeightField
     ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, nullptr)
@@ -249,15 +249,15 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   this->Stats.secondsHorizons = secondsSince(start);
 }
 
-void HierarchicalRadiosity::forgetSunBearings()
+void HierarchicalRadiosity::forgetSunSights()
 {
   this->SunHorizons = nullptr;
-  this->SunBearings.clear();
+  this->SunSights.clear();
 }
 
 void HierarchicalRadiosity::findSunHorizons()
 {
-  this->forgetSunBearings();
+  this->forgetSunSights();
   const TerrainGrid* grid = this->HeightFieldGrid;
   if (!grid || this->PointSuns.empty())
     return;
@@ -273,8 +273,7 @@ void HierarchicalRadiosity::findSunHorizons()
   for (const HElement* sun : this->PointSuns)
   {
     const Vec3& d = sun->asExternal()->direction();
-    this->SunBearings.push_back(
-      { map->bearing(std::atan2(d.y, d.x)), std::asin(std::max(-1.0, std::min(1.0, d.z))) });
+    this->SunSights.push_back(map->sight(std::atan2(d.y, d.x), std::asin(std::max(-1.0, std::min(1.0, d.z)))));
   }
   this->SunHorizons = map;
 }

@@ -144,7 +144,7 @@ public:
   void findPostHorizons(bool hornNormals = false);
   /// Before posts are evaluated in a scene of one height-field terrain without missing
   /// cells: direct sun at a post casts its ray only where the post's horizons
-  /// (HorizonMap::clearlyAbove) do not prove the sun open, which over a day or a year of
+  /// (HorizonMap::View) prove the sun neither open nor hidden, which over a day or a year of
   /// suns is most of them. Uses findPostHorizons' map, or builds it where there is none
   /// and at least sunsForHorizonMap suns (it costs about 20 rays a post). Exact: the
   /// bounds hold for any terrain, and a ray decides the rest.
@@ -265,7 +265,7 @@ private:
   /// sky or outside a height field).
   void resetHorizons();
   /// Drops the suns' bearings on the horizons' map (directSunAt casts every ray again).
-  void forgetSunBearings();
+  void forgetSunSights();
 
   RadiosityOptions Options;
   /// The surfaces and clusters; its first InitialElements are the hierarchy as built.
@@ -287,12 +287,7 @@ private:
   const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
   const HorizonMap* PostHorizons = nullptr;      // its posts' horizons (findPostHorizons), the geometry's
   const HorizonMap* SunHorizons = nullptr;       // the same map, for direct sun (findSunHorizons)
-  struct SunBearing
-  {
-    HorizonMap::Bearing bearing;
-    double elevation;
-  };
-  std::vector<SunBearing> SunBearings; // each of PointSuns on that map
+  std::vector<HorizonMap::Sight> SunSights; // each of PointSuns on that map
   std::unique_ptr<PostSky> PostSkies;            // and the sky each of them receives
   std::unique_ptr<PostLattice> Lattice;          // its posts gathered first (gatherPostLattice)
   std::unique_ptr<LeafLight> Leaves;             // what leaves receive, gathered (gatherLeaves)

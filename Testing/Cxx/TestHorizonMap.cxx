@@ -175,16 +175,14 @@ Proven checkProvenOpen(const std::function<double(double, double)>& height, doub
     {
       const HorizonMap::Post post = map.find(grid->post(i, j));
       EXPECT_TRUE(post);
-      // A bracket's far bound is never above the bound of all directions.
-      for (int k = 0; k < HorizonMap::azimuthCount; ++k)
-        EXPECT_LE(map.farBound(post, k), map.farBound(post)) << i << " " << j << " " << k;
       for (int k = 0; k < 40; ++k)
       {
         const double azimuth = twoPi * uniform(), elevation = 0.5 * pi * uniform() * uniform();
         const bool seen = !rays.occludedToward(grid->post(i, j), Vec3(0, 0, 1), directionOf(azimuth, elevation));
-        const HorizonMap::Bearing bearing = map.bearing(azimuth);
-        const bool clear = map.clearlyAbove(post, bearing, elevation, map.farBound(post, bearing.k));
-        const bool hidden = map.clearlyBelow(post, bearing, elevation, map.farBound(post, bearing.k));
+        HorizonMap::View view(map, post);
+        const HorizonMap::Sight sight = map.sight(azimuth, elevation);
+        const bool clear = view.clearlyAbove(sight);
+        const bool hidden = view.clearlyBelow(sight);
         EXPECT_TRUE(seen || !clear) << "post " << i << " " << j << " azimuth " << azimuth / degree
                                     << " elevation " << elevation / degree;
         // Hidden: below the highest direction of that azimuth a ray finds blocked. (Not
@@ -245,6 +243,40 @@ TEST(HorizonMap, BearingsWrapAround)
   EXPECT_NEAR(negative.fromBelow, 0.02, 1e-9);
   // A flat plane: every direction above the horizontal is open, and proven so.
   const HorizonMap::Post post = map.find(grid->post(4, 4));
-  EXPECT_TRUE(map.clearlyAbove(post, map.bearing(1.0), 0.01, map.farBound(post)));
-  EXPECT_FALSE(map.clearlyAbove(post, map.bearing(1.0), 0.0, map.farBound(post)));
+  HorizonMap::View view(map, post);
+  EXPECT_TRUE(view.clearlyAbove(map.sight(1.0, 0.01)));
+  EXPECT_FALSE(view.clearlyAbove(map.sight(1.0, 0.0)));
+}
+
+TEST(HorizonMap, PostsNearAnEdgeSeeOutOfTheGridWithoutRays)
+{
+  // A 100 m hill in the middle of flat ground; a post 2 cells from the west edge. Out
+  // of the grid (west) both mapped azimuths' lines end within 20 m, and so does every
+  // bearing between them (no corner lies within): the terrain beyond them is no
+  // terrain, so low suns that way are proven open, although the hill rises 79 deg above
+  // 20 m away. Toward the hill (east) the same elevation is not.
+  const auto grid = makeGrid(129, 129, 10.0, [](double x, double y) {
+    return 100.0 * std::exp(-(std::pow(x - 640.0, 2) + std::pow(y - 640.0, 2)) / (2.0 * 150.0 * 150.0));
+  });
+  const HorizonMap map(*grid);
+  const Visibility rays(sceneOf({ grid.get() }));
+  const Vec3 point = grid->post(2, 64);
+  const HorizonMap::Post post = map.find(point);
+  ASSERT_TRUE(post);
+  HorizonMap::View view(map, post);
+  int proven = 0, tried = 0;
+  for (double azimuth = 135.0 * degree; azimuth <= 225.0 * degree; azimuth += 2.5 * degree)
+  {
+    const HorizonMap::Sight sight = map.sight(azimuth, 5.0 * degree);
+    ++tried;
+    if (view.clearlyAbove(sight))
+    {
+      ++proven;
+      EXPECT_FALSE(rays.occludedToward(point, Vec3(0, 0, 1), directionOf(azimuth, 5.0 * degree)));
+    }
+  }
+  EXPECT_EQ(proven, tried);
+  // Toward the hill: its top rises about 8 deg.
+  EXPECT_FALSE(view.clearlyAbove(map.sight(0.0, 5.0 * degree)));
+  EXPECT_TRUE(rays.occludedToward(point, Vec3(0, 0, 1), directionOf(0.0, 5.0 * degree)));
 }
