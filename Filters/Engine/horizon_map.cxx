@@ -61,11 +61,15 @@ std::vector<Crossing> crossingsOf(int q, int p)
   return crossings;
 }
 
-/// The 32 steps: slopes 0, 1/5, 2/5, 2/3 and 1 in each octant.
-std::vector<std::array<int, 2>> stepsOfAllAzimuths()
+/// The 32 steps: slopes 0, 1/5, 2/5, 2/3 and 1 in each octant; dense, 64: also 1/9,
+/// 1/3, 1/2 and 3/4, between them and short (few crossings a step).
+std::vector<std::array<int, 2>> stepsOfAllAzimuths(bool dense)
 {
+  std::vector<std::array<int, 2>> slopes{ { 1, 0 }, { 5, 1 }, { 5, 2 }, { 3, 2 }, { 1, 1 } };
+  if (dense)
+    slopes.insert(slopes.end(), { { 9, 1 }, { 3, 1 }, { 2, 1 }, { 4, 3 } });
   std::vector<std::array<int, 2>> steps;
-  for (const std::array<int, 2>& s : { std::array<int, 2>{ 1, 0 }, { 5, 1 }, { 5, 2 }, { 3, 2 }, { 1, 1 } })
+  for (const std::array<int, 2>& s : slopes)
     for (int mirror = 0; mirror < 8; ++mirror)
     {
       int q = mirror & 1 ? s[1] : s[0], p = mirror & 1 ? s[0] : s[1];
@@ -78,13 +82,13 @@ std::vector<std::array<int, 2>> stepsOfAllAzimuths()
 }
 } // namespace
 
-HorizonMap::HorizonMap(const TerrainGrid& terrain)
+HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense)
   : Terrain(terrain)
 {
   this->fitMeanMap();
   this->measureRelief();
   // Azimuths in increasing order, each step's slot its rank.
-  const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths();
+  const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths(dense);
   std::vector<double> azimuths;
   for (const auto& g : steps)
   {
@@ -95,7 +99,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return azimuths[a] < azimuths[b]; });
   this->PostCount = static_cast<std::size_t>(terrain.postsX()) * terrain.postsY();
-  this->Elevations.assign(this->PostCount * azimuthCount, 0);
+  this->Elevations.assign(this->PostCount * steps.size(), 0);
   const double det = this->Ux * this->Vy - this->Vx * this->Uy;
   for (std::size_t slot = 0; slot < order.size(); ++slot)
   {
@@ -106,9 +110,9 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain)
   }
 }
 
-bool HorizonMap::fits(const TerrainGrid& terrain)
+bool HorizonMap::fits(const TerrainGrid& terrain, bool dense)
 {
-  const double bytes = 2.0 * azimuthCount * terrain.postsX() * terrain.postsY();
+  const double bytes = 2.0 * (dense ? 64 : 32) * terrain.postsX() * terrain.postsY();
   return bytes <= 2147483648.0;
 }
 
@@ -337,7 +341,7 @@ double HorizonMap::farBoundAt(int i, int j, double distance) const
 bool HorizonMap::cornerWithin(int i, int j, int k) const
 {
   const TerrainGrid& t = this->Terrain;
-  const double a0 = this->Azimuths[k], a1 = this->Azimuths[(k + 1) % azimuthCount];
+  const double a0 = this->Azimuths[k], a1 = this->Azimuths[(k + 1) % this->azimuthCount()];
   const double x0 = std::cos(a0), y0 = std::sin(a0), x1 = std::cos(a1), y1 = std::sin(a1);
   for (const int ci : { 0, t.postsX() - 1 })
     for (const int cj : { 0, t.postsY() - 1 })
@@ -392,7 +396,7 @@ HorizonMap::View::Reach& HorizonMap::View::reach(int k)
   const HorizonMap& map = this->Map;
   const int nx = map.Terrain.postsX();
   const int i = static_cast<int>(this->At.index % nx), j = static_cast<int>(this->At.index / nx);
-  const double r0 = map.exitDistance(i, j, k), r1 = map.exitDistance(i, j, (k + 1) % azimuthCount);
+  const double r0 = map.exitDistance(i, j, k), r1 = map.exitDistance(i, j, (k + 1) % map.azimuthCount());
   reach = Reach{};
   reach.longer = r1 > r0 ? 1 : 0;
   reach.pastShorter = map.farBoundAt(i, j, std::min(r0, r1));
@@ -408,10 +412,10 @@ double HorizonMap::View::pastLeast(int k)
   const HorizonMap& map = this->Map;
   const int nx = map.Terrain.postsX();
   const int i = static_cast<int>(this->At.index % nx), j = static_cast<int>(this->At.index / nx);
-  const double a0 = map.Azimuths[k], a1 = map.Azimuths[(k + 1) % azimuthCount];
+  const double a0 = map.Azimuths[k], a1 = map.Azimuths[(k + 1) % map.azimuthCount()];
   // The distance to a convex edge along an azimuth is least at the bracket's ends or
   // where it meets an edge square on.
-  double least = std::min(map.exitDistance(i, j, k), map.exitDistance(i, j, (k + 1) % azimuthCount));
+  double least = std::min(map.exitDistance(i, j, k), map.exitDistance(i, j, (k + 1) % map.azimuthCount()));
   for (int edge = 0; edge < 4; ++edge)
   {
     const double a = map.EdgeAzimuths[edge];
@@ -429,7 +433,7 @@ bool HorizonMap::View::clearlyAbove(const Sight& sight)
   // The margin: quantisation (2.4e-5 rad), and lines placed by the mean map (their
   // azimuths off by a small fraction of a degree, their horizons by S times that).
   const double margin = this->Map.proofMargin();
-  const int k = sight.bearing.k, next = (k + 1) % azimuthCount;
+  const int k = sight.bearing.k, next = (k + 1) % this->Map.azimuthCount();
   const double fromBelow = this->elevation(k) + sight.riseBelow;
   const double fromAbove = this->elevation(next) + sight.riseAbove;
   // The mapped horizons alone first: where they do not prove the sight open, the
@@ -446,7 +450,7 @@ bool HorizonMap::View::clearlyBelow(const Sight& sight)
   if (!this->Map.Complete)
     return false;
   const double margin = this->Map.proofMargin();
-  const int k = sight.bearing.k, next = (k + 1) % azimuthCount;
+  const int k = sight.bearing.k, next = (k + 1) % this->Map.azimuthCount();
   // In tangents: tan(elevation + margin) < tan H_k - drop, the same as elevation below
   // atan(tan H_k - drop) - margin.
   for (const auto& [side, drop] : { std::pair<int, double>{ k, sight.dropBelow }, { next, sight.dropAbove } })

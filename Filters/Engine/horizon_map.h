@@ -1,9 +1,10 @@
 #pragma once
-// The horizon of every post of a height-field terrain grid toward 32 azimuths, found
-// for all posts at once (a scene of one terrain: several grids would hide each other).
-// Toward an azimuth whose step in the grid is a whole number of posts, g = (q, p)
+// The horizon of every post of a height-field terrain grid toward 32 azimuths (or 64),
+// found for all posts at once (a scene of one terrain: several grids would hide each
+// other). Toward an azimuth whose step in the grid is a whole number of posts, g = (q, p)
 // (slopes 0, 1/5, 2/5, 2/3, 1 and their mirrors: azimuths 10.5 to 11.9 deg apart on
-// square cells), the posts lie on lines that repeat g, and the
+// square cells; dense, also 1/9, 1/3, 1/2, 3/4: 3.2 to 8.1 deg apart), the posts lie on
+// lines that repeat g, and the
 // terrain along a line is linear between its crossings of cell edges and diagonals,
 // whose pattern is the same on every step. Swept from its far end, a line keeps the
 // upper convex hull of the crossings ahead; the horizon of each post is its tangent to
@@ -30,12 +31,17 @@ class HorizonMap
 {
 public:
   /// A grid whose cells all face up (TerrainGrid::facesUp), alone in its scene; it
-  /// must outlive this.
-  explicit HorizonMap(const TerrainGrid& terrain);
-  static constexpr int azimuthCount = 32;
-  /// Whether the map of `terrain` fits the 2 GiB it may take (64 bytes a post: grids up
-  /// to about 5,800^2 posts); beyond, posts keep the rays' horizons.
-  static bool fits(const TerrainGrid& terrain);
+  /// must outlive this. `dense`: 64 azimuths instead of 32, for many suns (a year of
+  /// hours): half as far from a sun's bearing to the nearest mapped azimuth, so about
+  /// half the suns near a post's horizon need a ray, for 2.4 times the sweep's work.
+  explicit HorizonMap(const TerrainGrid& terrain, bool dense = false);
+  static constexpr int maximumAzimuths = 64;
+  int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
+  bool dense() const { return this->azimuthCount() > 32; }
+  /// Whether the map of `terrain` fits the 2 GiB it may take (64 bytes a post, 128
+  /// dense: grids up to about 5,800^2 posts, 4,100^2 dense); beyond, posts keep the
+  /// rays' horizons.
+  static bool fits(const TerrainGrid& terrain, bool dense = false);
 
   /// A post of the grid.
   struct Post
@@ -129,8 +135,8 @@ public:
     double pastLeast(int k);
     const HorizonMap& Map;
     Post At;
-    std::array<float, azimuthCount> Elevations, Tangents;
-    std::array<Reach, azimuthCount> Reaches;
+    std::array<float, maximumAzimuths> Elevations, Tangents;
+    std::array<Reach, maximumAzimuths> Reaches;
     std::uint64_t Read = 0, Tangent = 0, Reached = 0; // bit k: found
   };
   /// Whether every cell of the grid is valid (clearlyAbove and clearlyBelow need it).

@@ -359,7 +359,7 @@ HorizonSky::RadianceTerms HorizonSky::columnSumAt(int iv, double u, const Elevat
 }
 
 void HorizonSky::mapHorizons(const HorizonMap::Post& post, const Vec3& normal, MapElevations& elevations,
-  std::array<bool, HorizonMap::azimuthCount>& rises) const
+  std::array<bool, HorizonMap::maximumAzimuths>& rises) const
 {
   const std::vector<SinCos>& directions = this->MapTable.directions;
   for (std::size_t a = 0; a < directions.size(); ++a)
@@ -379,7 +379,7 @@ HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal)
   const MapAzimuths& table = this->MapTable;
   const int count = static_cast<int>(table.directions.size());
   MapElevations elevations;
-  std::array<bool, HorizonMap::azimuthCount> rises;
+  std::array<bool, HorizonMap::maximumAzimuths> rises;
   this->mapHorizons(post, normal, elevations, rises);
   for (int a = 0; a < count; ++a)
   {

@@ -89,12 +89,12 @@ public:
   };
   /// The map's pieces, azimuth by azimuth (empty without a map).
   const std::vector<MapPiece>& mapPieces() const { return this->MapTable.pieces; }
-  using MapElevations = std::array<double, HorizonMap::azimuthCount>;
+  using MapElevations = std::array<double, HorizonMap::maximumAzimuths>;
   /// A post's horizon at each of the map's azimuths as the hidden sky takes it: never
   /// below the lowest elevation whose sky can be hidden (the plane's own horizon or the
   /// world's); `rises`: whether terrain stands above that bound there.
   void mapHorizons(const HorizonMap::Post& post, const Vec3& normal, MapElevations& elevations,
-    std::array<bool, HorizonMap::azimuthCount>& rises) const;
+    std::array<bool, HorizonMap::maximumAzimuths>& rises) const;
 
 private:
   struct ElevationTerms

@@ -12,14 +12,21 @@ SceneGeometry::SceneGeometry(const RadiosityScene& scene)
   , Terrains(scene.terrains)
   , Rays(std::make_unique<Visibility>(scene))
   , Horizons(scene.terrains.size())
+  , DenseHorizons(scene.terrains.size())
 {
 }
 
 SceneGeometry::~SceneGeometry() = default;
 
-const HorizonMap& SceneGeometry::horizons(std::size_t index)
+const HorizonMap& SceneGeometry::horizons(std::size_t index, bool dense)
 {
   const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
+  if (dense || this->DenseHorizons[index])
+  {
+    if (!this->DenseHorizons[index])
+      this->DenseHorizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index], true);
+    return *this->DenseHorizons[index];
+  }
   if (!this->Horizons[index])
     this->Horizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index]);
   return *this->Horizons[index];

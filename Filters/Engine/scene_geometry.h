@@ -30,8 +30,10 @@ public:
   const Visibility& rays() const { return *this->Rays; }
 
   /// The horizons of the posts of terrain `index` (a height field alone in its scene),
-  /// built on the first call (64 bytes a post) and kept.
-  const HorizonMap& horizons(std::size_t index);
+  /// built on the first call (64 bytes a post) and kept; `dense`: toward 64 azimuths
+  /// (128 bytes a post). A dense map, once built, also serves where 32 azimuths are
+  /// asked for (it proves more).
+  const HorizonMap& horizons(std::size_t index, bool dense = false);
 
   /// Whether `scene` has this one's shape: the same polygons over the same points and
   /// terrains with the same posts and valid cells (materials may differ).
@@ -42,7 +44,7 @@ private:
   std::vector<ScenePolygon> Polygons;       // (their vertex indices count)
   std::vector<const TerrainGrid*> Terrains; // the grids rays and horizons are built on
   std::unique_ptr<Visibility> Rays;
-  std::vector<std::unique_ptr<HorizonMap>> Horizons; // per terrain, built on demand
+  std::vector<std::unique_ptr<HorizonMap>> Horizons, DenseHorizons; // per terrain, built on demand
   std::mutex HorizonsMutex;
 };
 } // namespace terralux

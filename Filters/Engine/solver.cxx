@@ -240,13 +240,18 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   const auto start = std::chrono::steady_clock::now();
   // The one terrain's horizons: built by the first solve over this geometry, reused by
   // the next ones.
-  this->PostHorizons = &this->Geometry->horizons(0);
+  this->PostHorizons = &this->Geometry->horizons(0, this->wantsDenseHorizons());
   this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons);
   this->Gather->setHorizons(this->Horizons.get());
   this->PostSkies =
     std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals);
   this->Gather->setPostSkies(this->PostSkies.get());
   this->Stats.secondsHorizons = secondsSince(start);
+}
+
+bool HierarchicalRadiosity::wantsDenseHorizons() const
+{
+  return this->PointSuns.size() >= sunsForDenseHorizons && HorizonMap::fits(*this->HeightFieldGrid, true);
 }
 
 void HierarchicalRadiosity::forgetSunSights()
@@ -265,7 +270,7 @@ void HierarchicalRadiosity::findSunHorizons()
   if (!map && this->PointSuns.size() >= sunsForHorizonMap && HorizonMap::fits(*grid))
   {
     const auto start = std::chrono::steady_clock::now();
-    map = &this->Geometry->horizons(0);
+    map = &this->Geometry->horizons(0, this->wantsDenseHorizons());
     this->Stats.secondsHorizons += secondsSince(start);
   }
   if (!map || !map->complete())

@@ -150,6 +150,10 @@ public:
   /// bounds hold for any terrain, and a ray decides the rest.
   void findSunHorizons();
   static constexpr std::size_t sunsForHorizonMap = 48;
+  /// From this many suns on (a few months of hours), the map is dense (64 azimuths):
+  /// its sweep and the posts' skies cost about XXX s more at 1025^2, and the
+  /// suns near a post's horizon need about half the rays.
+  static constexpr std::size_t sunsForDenseHorizons = 1000;
 
   /// Whether this solver's hierarchy is the one `scene` and `options` would build: the
   /// same shape (SceneGeometry::sameShape), materials and options. After clearSources it
@@ -266,6 +270,7 @@ private:
   void resetHorizons();
   /// Drops the suns' bearings on the horizons' map (directSunAt casts every ray again).
   void forgetSunSights();
+  bool wantsDenseHorizons() const; // for the suns; HeightFieldGrid must be set
 
   RadiosityOptions Options;
   /// The surfaces and clusters; its first InitialElements are the hierarchy as built.

@@ -36,7 +36,7 @@ TerrainDirections::TerrainDirections(const HorizonSky& horizons, const HorizonMa
   // The horizon as the hidden sky takes it, over the same pieces, so that the two
   // partition the hemisphere.
   HorizonSky::MapElevations elevations;
-  std::array<bool, HorizonMap::azimuthCount> rises;
+  std::array<bool, HorizonMap::maximumAzimuths> rises;
   horizons.mapHorizons(post, normal, elevations, rises);
   const std::vector<HorizonSky::MapPiece>& pieces = horizons.mapPieces();
   const int count = static_cast<int>(pieces.size()) / HorizonSky::piecesPerSector;

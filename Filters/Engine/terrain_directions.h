@@ -59,7 +59,7 @@ private:
   };
   void addBox(double phi0, double width, double sinLow, double sinHigh, double cosine, double sinHorizon,
     double sinSkyLow);
-  std::array<Box, 2 * HorizonMap::azimuthCount * HorizonSky::piecesPerSector> Boxes;
+  std::array<Box, 2 * HorizonMap::maximumAzimuths * HorizonSky::piecesPerSector> Boxes;
   int Count = 0;
   double Total = 0.0;
   Vec3 Normal;

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -65,7 +66,7 @@ TEST(HorizonMap, AzimuthsAreEvenlySpreadAndWallsSeenAtTheirTangent)
   const auto grid = makeGrid(101, 101, 10.0, [](double x, double) { return x >= 699.0 ? 50.0 : 0.0; });
   const HorizonMap map(*grid);
   const std::vector<double>& azimuths = map.azimuths();
-  ASSERT_EQ(azimuths.size(), static_cast<std::size_t>(HorizonMap::azimuthCount));
+  ASSERT_EQ(azimuths.size(), static_cast<std::size_t>(map.azimuthCount()));
   for (std::size_t a = 0; a < azimuths.size(); ++a)
   {
     const double next = a + 1 < azimuths.size() ? azimuths[a + 1] : azimuths[0] + 2.0 * pi;
@@ -77,7 +78,7 @@ TEST(HorizonMap, AzimuthsAreEvenlySpreadAndWallsSeenAtTheirTangent)
   // first, and away from the wall nothing rises.
   const HorizonMap::Post post = map.find(grid->post(20, 50));
   ASSERT_TRUE(post);
-  for (int a = 0; a < HorizonMap::azimuthCount; ++a)
+  for (int a = 0; a < map.azimuthCount(); ++a)
   {
     const double c = std::cos(azimuths[a]);
     const double expected = c >= std::sqrt(0.5) - 1e-9 ? std::atan(0.1 * c) : 0.0;
@@ -89,11 +90,16 @@ TEST(HorizonMap, AzimuthsAreEvenlySpreadAndWallsSeenAtTheirTangent)
   EXPECT_FALSE(map.find(Vec3(-500.0, 0.0, 0.0)));
 }
 
-TEST(HorizonMap, AgreesWithRaysOnRoughTerrain)
+class HorizonMapDensity : public ::testing::TestWithParam<bool>
+{
+};
+
+TEST_P(HorizonMapDensity, AgreesWithRaysOnRoughTerrain)
 {
   const auto grid = makeGrid(129, 129, 10.0, rough);
   ASSERT_TRUE(grid->facesUp());
-  const HorizonMap map(*grid);
+  const HorizonMap map(*grid, GetParam());
+  EXPECT_EQ(map.azimuthCount(), GetParam() ? 64 : 32);
   const Visibility rays(sceneOf({ grid.get() }));
   // The rays start lifted by the visibility's offset (1.8 cm here): 0.1 deg seen from
   // the next post 10 m away, more from a diagonal's crossing nearer.
@@ -103,13 +109,13 @@ TEST(HorizonMap, AgreesWithRaysOnRoughTerrain)
     for (int i = 2; i < 128; i += 9)
     {
       blocked += checkAgainstRays(map, rays, *grid, i, j, margin);
-      checked += HorizonMap::azimuthCount;
+      checked += map.azimuthCount();
     }
   // Most directions of this terrain are blocked somewhere: the check is not vacuous.
   EXPECT_GT(blocked, checked / 2);
 }
 
-TEST(HorizonMap, OblongRotatedCellsAndNoDataAgreeWithRays)
+TEST_P(HorizonMapDensity, OblongRotatedCellsAndNoDataAgreeWithRays)
 {
   // Cells 10 m x 14 m, the grid turned by 30 deg, with a hole whose posts hold garbage
   // (as the scene sets non-finite posts).
@@ -127,7 +133,7 @@ TEST(HorizonMap, OblongRotatedCellsAndNoDataAgreeWithRays)
     for (int i = 0; i < 64; ++i)
       grid.setCellValid(i, j, !inHole(i, j));
   ASSERT_TRUE(grid.facesUp());
-  const HorizonMap map(grid);
+  const HorizonMap map(grid, GetParam());
   const Visibility rays(sceneOf({ &grid }));
   int blocked = 0;
   for (int k = 0; k < 16; ++k)
@@ -136,7 +142,7 @@ TEST(HorizonMap, OblongRotatedCellsAndNoDataAgreeWithRays)
     if (grid.postUsed(60 - 3 * k, 6 + 2 * k)) // (21, 32) is inside the hole
       blocked += checkAgainstRays(map, rays, grid, 60 - 3 * k, 6 + 2 * k, 0.3 * degree);
   }
-  EXPECT_GT(blocked, 31 * HorizonMap::azimuthCount / 2);
+  EXPECT_GT(blocked, 31 * map.azimuthCount() / 2);
   // A post only the hole's cells use has no horizon to give.
   EXPECT_FALSE(map.find(place(25, 35)));
 }
@@ -158,11 +164,11 @@ struct Proven
   double open, shadowed; // shares of the open and of the shadowed directions proven so
 };
 
-Proven checkProvenOpen(const std::function<double(double, double)>& height, double spacing)
+Proven checkProvenOpen(const std::function<double(double, double)>& height, double spacing, bool dense)
 {
   const auto grid = makeGrid(129, 129, spacing, height);
   EXPECT_TRUE(grid->facesUp());
-  const HorizonMap map(*grid);
+  const HorizonMap map(*grid, dense);
   const Visibility rays(sceneOf({ grid.get() }));
   std::uint64_t state = 12345;
   auto uniform = [&state]() {
@@ -206,7 +212,7 @@ Proven checkProvenOpen(const std::function<double(double, double)>& height, doub
   return { static_cast<double>(proven) / std::max(open, 1), static_cast<double>(provenShadowed) / std::max(shadowed, 1) };
 }
 
-TEST(HorizonMap, WhatItProvesOpenOrHiddenRaysFindSo)
+TEST_P(HorizonMapDensity, WhatItProvesOpenOrHiddenRaysFindSo)
 {
   // Rough hills with a ridge along one edge (the far bound's case: terrain beyond the
   // post's distance to the edge) and a single spike (a peak between two mapped
@@ -217,16 +223,34 @@ TEST(HorizonMap, WhatItProvesOpenOrHiddenRaysFindSo)
       const double spike = std::hypot(x - 700.0, y - 600.0) < 15.0 ? 120.0 : 0.0;
       return rough(x, y) + ridge + spike;
     },
-    10.0);
-  checkProvenOpen(rough, 10.0);
+    10.0, GetParam());
+  checkProvenOpen(rough, 10.0, GetParam());
   // Hills as real DEMs have them (slopes up to about 25 deg), on a grid small enough
   // that many posts lie near its edge, directions skewed toward the horizon: 69 % of the
   // open ones need no ray (a day's suns over the 1025^2 fractal DEM: 87 %).
   const Proven share = checkProvenOpen(
     [](double x, double y) { return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0); },
-    30.0);
+    30.0, GetParam());
   EXPECT_GT(share.open, 0.5) << "share " << share.open;
   EXPECT_GT(share.shadowed, 0.3) << "share " << share.shadowed;
+}
+
+INSTANTIATE_TEST_SUITE_P(StandardAndDense, HorizonMapDensity, ::testing::Values(false, true));
+
+TEST(HorizonMap, DenseAzimuthsLieBetweenTheStandardOnes)
+{
+  const auto grid = makeGrid(9, 9, 10.0, [](double, double) { return 0.0; });
+  const HorizonMap standard(*grid), dense(*grid, true);
+  ASSERT_EQ(dense.azimuthCount(), 64);
+  const std::vector<double>& a = dense.azimuths();
+  for (std::size_t k = 0; k < a.size(); ++k)
+  {
+    const double next = k + 1 < a.size() ? a[k + 1] : a[0] + 2.0 * pi;
+    EXPECT_GT(next - a[k], 3.0 * degree);
+    EXPECT_LT(next - a[k], 8.2 * degree);
+  }
+  for (const double azimuth : standard.azimuths())
+    EXPECT_NE(std::find_if(a.begin(), a.end(), [&](double b) { return std::abs(b - azimuth) < 1e-12; }), a.end());
 }
 
 TEST(HorizonMap, BearingsWrapAround)
@@ -235,7 +259,7 @@ TEST(HorizonMap, BearingsWrapAround)
   const HorizonMap map(*grid);
   const std::vector<double>& a = map.azimuths();
   const HorizonMap::Bearing last = map.bearing(a.back() + 0.01);
-  EXPECT_EQ(last.k, HorizonMap::azimuthCount - 1);
+  EXPECT_EQ(last.k, map.azimuthCount() - 1);
   EXPECT_NEAR(last.fromBelow, 0.01, 1e-12);
   EXPECT_NEAR(last.toAbove, a.front() + twoPi - a.back() - 0.01, 1e-12);
   const HorizonMap::Bearing negative = map.bearing(a[3] + 0.02 - twoPi);
