@@ -374,6 +374,8 @@ HorizonMap::Sight HorizonMap::sight(double azimuth, double elevation) const
 HorizonMap::View::View(const HorizonMap& map, const Post& post)
   : Map(map)
   , At(post)
+  , Count(map.azimuthCount())
+  , Margin(map.complete() ? map.proofMargin() : std::numeric_limits<double>::infinity())
 {
 }
 
@@ -426,31 +428,21 @@ double HorizonMap::View::pastLeast(int k)
   return reach.pastLeast = map.farBoundAt(i, j, least);
 }
 
-bool HorizonMap::View::clearlyAbove(const Sight& sight)
+bool HorizonMap::View::clearPastNeighbours(const Sight& sight, double fromBelow, double fromAbove)
 {
-  if (!this->Map.Complete)
-    return false;
   // The margin: quantisation (2.4e-5 rad), and lines placed by the mean map (their
   // azimuths off by a small fraction of a degree, their horizons by S times that).
-  const double margin = this->Map.proofMargin();
-  const int k = sight.bearing.k, next = (k + 1) % this->Map.azimuthCount();
-  const double fromBelow = this->elevation(k) + sight.riseBelow;
-  const double fromAbove = this->elevation(next) + sight.riseAbove;
-  // The mapped horizons alone first: where they do not prove the sight open, the
-  // distances need not be found.
-  if (!(sight.elevation > std::min(fromBelow, fromAbove) + margin))
-    return false;
-  const Reach& reach = this->reach(k);
+  const Reach& reach = this->reach(sight.bearing.k);
   const double pastShorter = std::min(reach.longer ? fromAbove : fromBelow, reach.pastShorter);
-  return sight.elevation > std::max(pastShorter, reach.pastLonger) + margin;
+  return sight.elevation > std::max(pastShorter, reach.pastLonger) + this->Margin;
 }
 
 bool HorizonMap::View::clearlyBelow(const Sight& sight)
 {
-  if (!this->Map.Complete)
-    return false;
-  const double margin = this->Map.proofMargin();
-  const int k = sight.bearing.k, next = (k + 1) % this->Map.azimuthCount();
+  const double margin = this->Margin;
+  if (std::isinf(margin))
+    return false; // the map proves nothing
+  const int k = sight.bearing.k, next = k + 1 == this->Count ? 0 : k + 1;
   // In tangents: tan(elevation + margin) < tan H_k - drop, the same as elevation below
   // atan(tan H_k - drop) - margin.
   for (const auto& [side, drop] : { std::pair<int, double>{ k, sight.dropBelow }, { next, sight.dropAbove } })

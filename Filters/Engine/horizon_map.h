@@ -18,6 +18,7 @@
 #include "angles.h"
 #include "radiosity_types.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -100,7 +101,16 @@ public:
     /// exit distance; beyond it the longer side's, or the highest point of the terrain
     /// seen from there (atan((highest height - z0) / distance)); beyond the longer
     /// (only where a corner of the grid lies within the bracket) that alone.
-    bool clearlyAbove(const Sight& sight);
+    bool clearlyAbove(const Sight& sight)
+    {
+      // The mapped horizons alone first (most suns over a day or a year end here):
+      // where they do not prove the sight open, the distances need not be found.
+      const int k = sight.bearing.k, next = k + 1 == this->Count ? 0 : k + 1;
+      const double fromBelow = this->elevation(k) + sight.riseBelow;
+      const double fromAbove = this->elevation(next) + sight.riseAbove;
+      return sight.elevation > std::min(fromBelow, fromAbove) + this->Margin &&
+        this->clearPastNeighbours(sight, fromBelow, fromAbove);
+    }
     /// Whether they hide the sight, proven from a mapped neighbour's horizon: the
     /// terrain point P that makes horizon H_k lies at some distance d, and the point Q
     /// at the same distance along the sight is at most the chord d 2 sin(da / 2) from
@@ -131,10 +141,13 @@ public:
       return this->Elevations[k];
     }
     double tangent(int k);
+    bool clearPastNeighbours(const Sight& sight, double fromBelow, double fromAbove);
     Reach& reach(int k);
     double pastLeast(int k);
     const HorizonMap& Map;
     Post At;
+    int Count;
+    double Margin; // proofMargin(), or +inf where the map proves nothing
     std::array<float, maximumAzimuths> Elevations, Tangents;
     std::array<Reach, maximumAzimuths> Reaches;
     std::uint64_t Read = 0, Tangent = 0, Reached = 0; // bit k: found

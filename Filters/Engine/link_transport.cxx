@@ -229,7 +229,29 @@ double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
   const Visibility& visibility, double* sunlitHours)
 {
-  return directSunlight(point, normal, suns, visibility, sunlitHours, [](std::size_t) { return SunProof::Unknown; });
+  Spectrum result{};
+  for (std::size_t s = 0; s < suns.size(); ++s)
+  {
+    HElement& sun = *suns[s];
+    const ExternalSource& source = *sun.asExternal();
+    // A parallel sun in front of the surface is its kernel x 1 where its one ray finds
+    // it open, else 0: transportToPoint's value, without its sampling machinery on this
+    // hot path.
+    double transport = 0.0;
+    if (!source.parallel())
+      transport = transportToPoint(point, normal, sun, visibility, 1, 0);
+    else if (const double kernel = source.kernel(normal); kernel > 0.0)
+    {
+      if (!visibility.occludedToward(point, normal, source.direction()))
+        transport = kernel;
+    }
+    const Spectrum flux = sun.emittance();
+    for (int band = 0; band < maxBands; ++band)
+      result[band] += transport * flux[band];
+    if (sunlitHours && transport > 0.0)
+      *sunlitHours += source.duration();
+  }
+  return result;
 }
 
 int lightCategoryOf(const HElement& sender)

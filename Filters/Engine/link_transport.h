@@ -46,46 +46,6 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
 /// `sunlitHours`, also the durations of the suns that reach the point (sunshine).
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
   const Visibility& visibility, double* sunlitHours = nullptr);
-/// What a caller proved of a sun: open or shadowed need no ray.
-enum class SunProof
-{
-  Unknown,
-  Open,
-  Shadowed
-};
-/// The same, where `prove(s)` says what the caller proved of sun s in front of the
-/// surface (e.g. HorizonMap::View::clearlyAbove, clearlyBelow): the same value, without that
-/// ray.
-template <typename Prove>
-Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
-  const Visibility& visibility, double* sunlitHours, Prove&& prove)
-{
-  Spectrum result{};
-  for (std::size_t s = 0; s < suns.size(); ++s)
-  {
-    HElement& sun = *suns[s];
-    const ExternalSource& source = *sun.asExternal();
-    // A parallel sun in front of the surface is its kernel x 1 where its one ray (or the
-    // caller's proof) finds it open, else 0: transportToPoint's value, without its
-    // sampling machinery on this hot path.
-    double transport = 0.0;
-    if (!source.parallel())
-      transport = transportToPoint(point, normal, sun, visibility, 1, 0);
-    else if (const double kernel = source.kernel(normal); kernel > 0.0)
-    {
-      const SunProof proof = prove(s);
-      if (proof == SunProof::Open ||
-        (proof == SunProof::Unknown && !visibility.occludedToward(point, normal, source.direction())))
-        transport = kernel;
-    }
-    const Spectrum flux = sun.emittance();
-    for (int band = 0; band < maxBands; ++band)
-      result[band] += transport * flux[band];
-    if (sunlitHours && transport > 0.0)
-      *sunlitHours += source.duration();
-  }
-  return result;
-}
 
 /// Kernel, visibility and direction of the link receiver <- sender.
 Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples);

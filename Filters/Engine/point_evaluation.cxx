@@ -213,14 +213,26 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
   const HorizonMap::Post post = this->SunHorizons ? this->SunHorizons->find(point) : HorizonMap::Post{};
   if (!post)
     return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
-  // A sun the post's horizons prove open or hidden takes no ray.
+  // A sun the post's horizons prove open or hidden takes no ray. Every point sun is a
+  // parallel SunElement: its kernel and flux, kept beside its sight, need no virtual
+  // call on this path (a year of hours tests 5 G suns at the posts of a 1025^2 DEM).
   HorizonMap::View horizons(*this->SunHorizons, post);
-  return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours, [&](std::size_t s) {
-    const HorizonMap::Sight& sight = this->SunSights[s];
-    if (horizons.clearlyAbove(sight))
-      return SunProof::Open;
-    return horizons.clearlyBelow(sight) ? SunProof::Shadowed : SunProof::Unknown;
-  });
+  Spectrum result{};
+  for (const MappedSun& sun : this->MappedSuns)
+  {
+    const double kernel = glm::dot(normal, sun.direction);
+    if (!(kernel > 0.0))
+      continue;
+    const bool open = horizons.clearlyAbove(sun.sight) ||
+      (!horizons.clearlyBelow(sun.sight) && !this->Rays->occludedToward(point, normal, sun.direction));
+    if (!open)
+      continue;
+    for (int band = 0; band < maxBands; ++band)
+      result[band] += kernel * sun.flux[band];
+    if (sunlitHours)
+      *sunlitHours += sun.duration;
+  }
+  return result;
 }
 
 bool HierarchicalRadiosity::gathersAtPoints() const

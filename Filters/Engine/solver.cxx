@@ -167,7 +167,7 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
   if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
     this->PointSuns.push_back(this->Sources->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
   // The suns' bearings on the horizon map are those of the suns before this one.
-  this->forgetSunSights();
+  this->forgetMappedSuns();
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
@@ -184,7 +184,7 @@ void HierarchicalRadiosity::resetHorizons()
 {
   // Until findPostHorizons, the horizons of the rays alone.
   this->PostHorizons = nullptr;
-  this->forgetSunSights();
+  this->forgetMappedSuns();
   this->Gather->setHorizons(nullptr);
   this->Horizons = this->SkyAtPoints && this->HeightField
     ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, nullptr)
@@ -254,15 +254,15 @@ bool HierarchicalRadiosity::wantsDenseHorizons() const
   return this->PointSuns.size() >= sunsForDenseHorizons && HorizonMap::fits(*this->HeightFieldGrid, true);
 }
 
-void HierarchicalRadiosity::forgetSunSights()
+void HierarchicalRadiosity::forgetMappedSuns()
 {
   this->SunHorizons = nullptr;
-  this->SunSights.clear();
+  this->MappedSuns.clear();
 }
 
 void HierarchicalRadiosity::findSunHorizons()
 {
-  this->forgetSunSights();
+  this->forgetMappedSuns();
   const TerrainGrid* grid = this->HeightFieldGrid;
   if (!grid || this->PointSuns.empty())
     return;
@@ -275,10 +275,12 @@ void HierarchicalRadiosity::findSunHorizons()
   }
   if (!map || !map->complete())
     return;
-  for (const HElement* sun : this->PointSuns)
+  for (HElement* sun : this->PointSuns)
   {
-    const Vec3& d = sun->asExternal()->direction();
-    this->SunSights.push_back(map->sight(std::atan2(d.y, d.x), std::asin(std::max(-1.0, std::min(1.0, d.z)))));
+    const ExternalSource& source = *sun->asExternal();
+    const Vec3& d = source.direction();
+    this->MappedSuns.push_back({ map->sight(std::atan2(d.y, d.x), std::asin(std::max(-1.0, std::min(1.0, d.z)))), d,
+      sun->emittance(), source.duration() });
   }
   this->SunHorizons = map;
 }

@@ -269,7 +269,7 @@ private:
   /// sky or outside a height field).
   void resetHorizons();
   /// Drops the suns' bearings on the horizons' map (directSunAt casts every ray again).
-  void forgetSunSights();
+  void forgetMappedSuns();
   bool wantsDenseHorizons() const; // for the suns; HeightFieldGrid must be set
 
   RadiosityOptions Options;
@@ -292,7 +292,14 @@ private:
   const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
   const HorizonMap* PostHorizons = nullptr;      // its posts' horizons (findPostHorizons), the geometry's
   const HorizonMap* SunHorizons = nullptr;       // the same map, for direct sun (findSunHorizons)
-  std::vector<HorizonMap::Sight> SunSights; // each of PointSuns on that map
+  struct MappedSun // each of PointSuns on that map
+  {
+    HorizonMap::Sight sight;
+    Vec3 direction;
+    Spectrum flux;
+    double duration;
+  };
+  std::vector<MappedSun> MappedSuns;
   std::unique_ptr<PostSky> PostSkies;            // and the sky each of them receives
   std::unique_ptr<PostLattice> Lattice;          // its posts gathered first (gatherPostLattice)
   std::unique_ptr<LeafLight> Leaves;             // what leaves receive, gathered (gatherLeaves)
