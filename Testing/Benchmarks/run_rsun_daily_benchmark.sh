@@ -4,7 +4,9 @@
 # r.sun (day=173, step=0.5 h, Linke 3.0, albedo 0.2, shadows, slope and aspect from
 # r.slope.aspect, 2 threads) and of `python3 -m terralux.irradiation` for the same day at
 # 30-minute steps (Horn normals as r.slope.aspect; --points and --fast), and how their
-# beam and global sums compare post by post (scripts: compare_rasters.py).
+# beam and global sums compare post by post (scripts: compare_rasters.py). With
+# TERRALUX_BENCH_YEAR=1, also a year of hourly steps at every post (2024), against the
+# same run's r.sun day (the time-integration issue's figure: at most 10 x).
 # Usage: Testing/Benchmarks/run_rsun_daily_benchmark.sh [BUILD_DIR] [DEM ...]
 #   default DEMs: Olinda and the 1025^2 fractal (made by make_fractal_dem).
 set -euo pipefail
@@ -42,4 +44,12 @@ GRASS
     echo "    beam:   $(/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/compare_rasters.py" "${work}/${name}.${mode}.tif" BeamIrradiation "${work}/${name}.rsun.beam.tif")"
     echo "    global: $(/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/compare_rasters.py" "${work}/${name}.${mode}.tif" GlobalIrradiation "${work}/${name}.rsun.glob.tif")"
   done
+  if [ "${TERRALUX_BENCH_YEAR:-0}" = 1 ]; then
+    /usr/bin/time -f "elapsed %e peak %M" -o "${work}/${name}.year.time" /usr/bin/python3 -m terralux.irradiation \
+      "${dem}" -o "${work}/${name}.year.tif" --start 2024-01-01 --end 2025-01-01 --step 60 --linke 3.0 \
+      --reflectance 0.2 --quiet >/dev/null
+    t="$(seconds "${work}/${name}.year.time")"
+    echo "  terralux.irradiation, a year hourly: $(printf '%6.1f' "${t}") s, $(peak_mib "${work}/${name}.year.time") MiB," \
+      "$(awk -v a="${t}" -v b="${rsun}" 'BEGIN { printf "%.2f", a / b }') x r.sun's day"
+  fi
 done
