@@ -106,6 +106,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense)
     const double a = azimuths[order[slot]], x = std::cos(a), y = std::sin(a);
     this->Azimuths.push_back(a);
     this->AzimuthSteps.push_back({ (this->Vy * x - this->Vx * y) / det, (this->Ux * y - this->Uy * x) / det });
+    this->AzimuthDirections.push_back({ x, y });
     this->sweep(steps[order[slot]][0], steps[order[slot]][1], static_cast<int>(slot));
   }
 }
@@ -328,29 +329,29 @@ double HorizonMap::exitDistance(int i, int j, int k) const
   return r;
 }
 
-double HorizonMap::farBoundAt(int i, int j, double distance) const
+double HorizonMap::riseOver(int i, int j, double distance) const
 {
   const double rise = this->HighestZ - this->Terrain.post(i, j).z;
   if (rise <= 0.0)
     return 0.0;
   // A little nearer for the grid's departures from its mean map.
   const double r = 0.999 * distance;
-  return r > 0.0 ? std::atan(rise / r) : 0.5 * pi;
+  return r > 0.0 ? rise / r : std::numeric_limits<double>::infinity();
 }
 
 bool HorizonMap::cornerWithin(int i, int j, int k) const
 {
   const TerrainGrid& t = this->Terrain;
-  const double a0 = this->Azimuths[k], a1 = this->Azimuths[(k + 1) % this->azimuthCount()];
-  const double x0 = std::cos(a0), y0 = std::sin(a0), x1 = std::cos(a1), y1 = std::sin(a1);
+  const auto [x0, y0] = this->AzimuthDirections[k];
+  const auto [x1, y1] = this->AzimuthDirections[(k + 1) % this->azimuthCount()];
   for (const int ci : { 0, t.postsX() - 1 })
     for (const int cj : { 0, t.postsY() - 1 })
     {
       const int du = ci - i, dv = cj - j;
       const double x = this->Ux * du + this->Vx * dv, y = this->Uy * du + this->Vy * dv;
       // Strictly: a corner on a bracket's end (rounding aside) is that end's distance.
-      const double tolerance = 1e-9 * std::hypot(x, y);
-      if (x0 * y - y0 * x > tolerance && x * y1 - y * x1 > tolerance)
+      const double below = x0 * y - y0 * x, above = x * y1 - y * x1, tolerance = 1e-18 * (x * x + y * y);
+      if (below > 0.0 && above > 0.0 && below * below > tolerance && above * above > tolerance)
         return true;
     }
   return false;
@@ -368,6 +369,8 @@ HorizonMap::Sight HorizonMap::sight(double azimuth, double elevation) const
   s.dropAbove = 2.0 * S * std::sin(0.5 * s.bearing.toAbove);
   const double raised = elevation + this->proofMargin();
   s.tanWithMargin = raised < 0.5 * pi ? std::tan(raised) : std::numeric_limits<double>::infinity();
+  const double lowered = elevation - this->proofMargin();
+  s.tanLessMargin = lowered > -0.5 * pi ? std::tan(lowered) : -std::numeric_limits<double>::infinity();
   return s;
 }
 
@@ -401,8 +404,8 @@ HorizonMap::View::Reach& HorizonMap::View::reach(int k)
   const double r0 = map.exitDistance(i, j, k), r1 = map.exitDistance(i, j, (k + 1) % map.azimuthCount());
   reach = Reach{};
   reach.longer = r1 > r0 ? 1 : 0;
-  reach.pastShorter = map.farBoundAt(i, j, std::min(r0, r1));
-  reach.pastLonger = map.cornerWithin(i, j, k) ? map.farBoundAt(i, j, std::max(r0, r1)) : 0.0;
+  reach.pastShorter = map.riseOver(i, j, std::min(r0, r1));
+  reach.pastLonger = map.cornerWithin(i, j, k) ? map.riseOver(i, j, std::max(r0, r1)) : 0.0;
   return reach;
 }
 
@@ -425,16 +428,18 @@ double HorizonMap::View::pastLeast(int k)
     if (inside)
       least = std::min(least, map.edgeDistance(i, j, edge));
   }
-  return reach.pastLeast = map.farBoundAt(i, j, least);
+  return reach.pastLeast = map.riseOver(i, j, least);
 }
 
 bool HorizonMap::View::clearPastNeighbours(const Sight& sight, double fromBelow, double fromAbove)
 {
   // The margin: quantisation (2.4e-5 rad), and lines placed by the mean map (their
   // azimuths off by a small fraction of a degree, their horizons by S times that).
+  // In tangents: elevation > atan(t) + margin, the same as tan(elevation - margin) > t.
   const Reach& reach = this->reach(sight.bearing.k);
-  const double pastShorter = std::min(reach.longer ? fromAbove : fromBelow, reach.pastShorter);
-  return sight.elevation > std::max(pastShorter, reach.pastLonger) + this->Margin;
+  const double fromLonger = reach.longer ? fromAbove : fromBelow;
+  return (sight.elevation > fromLonger + this->Margin || sight.tanLessMargin > reach.pastShorter) &&
+    sight.tanLessMargin > reach.pastLonger;
 }
 
 bool HorizonMap::View::clearlyBelow(const Sight& sight)
@@ -449,7 +454,7 @@ bool HorizonMap::View::clearlyBelow(const Sight& sight)
   {
     const double horizon = this->elevation(side);
     if (horizon > margin && horizon < 0.5 * pi && sight.tanWithMargin < this->tangent(side) - drop &&
-      horizon > this->pastLeast(k) + margin)
+      std::tan(horizon - margin) > this->pastLeast(k))
       return true;
   }
   return false;

@@ -80,6 +80,7 @@ public:
     double riseBelow = 0.0, riseAbove = 0.0; ///< S x the turns to the mapped azimuths
     double dropBelow = 0.0, dropAbove = 0.0; ///< 2 S sin(turn / 2)
     double tanWithMargin = 0.0;    ///< tan(elevation + margin); +inf at or past the zenith
+    double tanLessMargin = 0.0;    ///< tan(elevation - margin); -inf at or below the nadir
   };
   Sight sight(double azimuth, double elevation) const;
 
@@ -122,8 +123,9 @@ public:
     bool clearlyBelow(const Sight& sight);
 
   private:
-    /// Distances of a bracket k (azimuths k, k + 1), as angles of the highest point seen
-    /// from them: atan(rise / R).
+    /// Distances R of a bracket k (azimuths k, k + 1), as the tangent of the highest
+    /// point's elevation seen from them, rise / R (no angle: compared with a sight's
+    /// tangents).
     struct Reach
     {
       double pastShorter = 0.0; // R: the shorter exit distance of the two azimuths
@@ -171,7 +173,9 @@ private:
   double edgeDistance(int i, int j, int edge) const;
   /// Distance from post (i, j) to the grid's edge along map azimuth k.
   double exitDistance(int i, int j, int k) const;
-  double farBoundAt(int i, int j, double distance) const;
+  /// tan of the elevation of the grid's highest point seen from post (i, j) at a
+  /// distance: 0 where nothing rises above the post, +inf at no distance.
+  double riseOver(int i, int j, double distance) const;
   /// Whether one of the grid's corners seen from post (i, j) lies strictly between
   /// azimuths k and k + 1 (where the exit distance can exceed both ends'): brackets
   /// are narrower than pi, so by the signs of two cross products.
@@ -182,6 +186,7 @@ private:
   std::vector<double> Azimuths;
   /// A metre along each azimuth in grid parameters (the mean map inverted).
   std::vector<std::array<double, 2>> AzimuthSteps;
+  std::vector<std::array<double, 2>> AzimuthDirections; // (cos, sin) of each
   /// Azimuth by azimuth, each azimuth's posts in order; elevation / (pi / 2) x 65535.
   std::vector<std::uint16_t> Elevations;
   std::size_t PostCount = 0;
