@@ -28,6 +28,7 @@ HorizonSky::ElevationTerms HorizonSky::elevationTerms(double u, double sinU, dou
 HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const HorizonMap* map)
   : Rays(rays)
   , Sky(sky)
+  , Bands(sky.bands())
   , Map(map)
   , Side(sky.cellsPerSide())
 {
@@ -218,7 +219,14 @@ HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint6
       hide(p, blocked, open, 0.5);
     }
   }
+  this->repeatLastBand(result);
   return result;
+}
+
+void HorizonSky::repeatLastBand(HiddenSky& result) const
+{
+  for (int band = this->Bands; band < maxBands; ++band)
+    result.irradiance[band] = result.irradiance[this->Bands - 1];
 }
 
 double HorizonSky::lowerBound(const Vec3& normal, const SinCos& a)
@@ -285,7 +293,7 @@ void HorizonSky::hidePiece(const MapPiece& piece, double u0, double u1, const Ve
       normal.z * (r.w[band] + r.rowW[band] * up);
   };
   result.projectedSolidAngle += weight;
-  for (int band = 0; band < maxBands; ++band)
+  for (int band = 0; band < this->Bands; ++band)
     result.irradiance[band] += std::max(0.0, sumAt(u1, high, band) - sumAt(u0, low, band));
 }
 
@@ -336,7 +344,7 @@ void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const S
     const RadianceTerms bottom = this->columnSumAt(column.iv, u0, low);
     const RadianceTerms top = this->columnSumAt(column.iv, u1, high);
     result.projectedSolidAngle += weight;
-    for (int band = 0; band < maxBands; ++band)
+    for (int band = 0; band < this->Bands; ++band)
       result.irradiance[band] += std::max(0.0, share *
         (across * (top.along[band] - bottom.along[band]) +
           normal.z * column.width * (top.up[band] - bottom.up[band])));
@@ -400,6 +408,7 @@ HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal)
         result);
     }
   }
+  this->repeatLastBand(result);
   return result;
 }
 } // namespace terralux

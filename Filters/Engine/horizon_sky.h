@@ -119,8 +119,11 @@ private:
   /// Entries of Terms; a multiple of every sky's cells per side (at most 2^10).
   static constexpr int fineTerms = 4096;
 
+  /// Bands past the sky's own repeat its last: found once, at the end.
+  void repeatLastBand(HiddenSky& result) const;
   const Visibility& Rays;
   const OpenSky& Sky;
+  int Bands; // the sky's
   const HorizonMap* Map;
   int Side;                 // the sky's finest cells per parameter
   double CellHeight = 0.0;  // radians of elevation per cell

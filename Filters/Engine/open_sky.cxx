@@ -14,6 +14,7 @@ OpenSky::OpenSky(const SkyHierarchy& sky)
   : Sky(sky)
   , Deepest(std::min(sky.finestLevel(), 4))
   , Side(SkyHierarchy::cellsPerSide(sky.finestLevel()))
+  , Bands(std::clamp(sky.bands(), 1, maxBands))
 {
   for (int level = 0; level <= this->Deepest; ++level)
   {

@@ -39,6 +39,8 @@ public:
   /// [0, pi / 2] and azimuth v (west from south) in [0, 2 pi), so that radiance() is
   /// constant over cells of (pi / 2) / cellsPerSide() by 2 pi / cellsPerSide().
   int cellsPerSide() const { return this->Side; }
+  /// The sky's own bands; the bands past them repeat its last (Spectrum has maxBands).
+  int bands() const { return this->Bands; }
   /// Radiance (W/m^2/sr) of finest cell (iu, iv), iu from the horizon, iv from the south.
   const Spectrum& cellRadiance(int iu, int iv) const
   {
@@ -55,6 +57,7 @@ private:
   std::vector<std::vector<std::unique_ptr<SkyPatchElement>>> Levels; // [level][iu * side + iv]
   std::vector<std::vector<double>> Radii; // the same: largest |d - centre| over each patch
   int Side = 0;                 // the finest level's cells per parameter
+  int Bands = 1;
   std::vector<Spectrum> Finest; // their radiance, row by row of altitude
   int TableSide = 0;
   std::vector<double> Table; // per vertex: the bands' irradiance, then the projected solid angle
