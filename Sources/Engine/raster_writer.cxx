@@ -31,8 +31,11 @@ void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std
   const QuietGdalErrors quiet;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   const bool tiled = grid.width >= 512 && grid.height >= 512;
-  // Compressed by every core: a 1025^2 DEM's six bands took 0.57 s on one.
-  const char* options[] = { "COMPRESS=DEFLATE", "NUM_THREADS=ALL_CPUS", tiled ? "TILED=YES" : nullptr, nullptr };
+  // Compressed by every core, quickly, after the floating-point predictor (TIFF's
+  // PREDICTOR=3, which GDAL and GIS read alike): a 1025^2 DEM's six bands took 0.57 s on
+  // one core, 0.29 s on two at deflate's default level (19.0 MiB), 0.15 s so (16.3 MiB).
+  const char* options[] = { "COMPRESS=DEFLATE", "PREDICTOR=3", "ZLEVEL=1", "NUM_THREADS=ALL_CPUS",
+    tiled ? "TILED=YES" : nullptr, nullptr };
   std::unique_ptr<GDALDataset> dataset(driver->Create(fileName.c_str(), grid.width, grid.height,
     static_cast<int>(bands.size()), GDT_Float32, const_cast<char**>(options)));
   if (!dataset)

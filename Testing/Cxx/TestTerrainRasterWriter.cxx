@@ -69,6 +69,13 @@ TEST(TerrainRasterWriter, RadiosityResultsLandOnTheDemGrid)
   EXPECT_EQ(written->GetRasterYSize(), 12); // posts 1, 3, ..., 23
   EXPECT_EQ(written->GetRasterCount(), 5);
   EXPECT_TRUE(written->GetSpatialRef()->IsSame(source->GetSpatialRef()));
+  // Compressed losslessly, after the floating-point predictor (the values are compared
+  // exactly below).
+  const char* compression = written->GetMetadataItem("COMPRESSION", "IMAGE_STRUCTURE");
+  const char* predictor = written->GetMetadataItem("PREDICTOR", "IMAGE_STRUCTURE");
+  ASSERT_TRUE(compression && predictor);
+  EXPECT_STREQ(compression, "DEFLATE");
+  EXPECT_STREQ(predictor, "3");
   // Pixel centres of the written raster sit on the DEM posts that were kept.
   double gtw[6], gts[6];
   written->GetGeoTransform(gtw);
