@@ -261,7 +261,8 @@ void HorizonMap::sweep(int q, int p, int slot)
             const double tangent = (hull.back().z - z) / (hull.back().x - x);
             if (tangent > 0.0)
             {
-              const double quantised = std::round(atanOfPositive(tangent) / (0.5 * pi) * 65535.0);
+              // Rounded to the nearest (a positive value: + 0.5, truncated).
+              const double quantised = atanOfPositive(tangent) / (0.5 * pi) * 65535.0 + 0.5;
               this->Elevations[slot * gridPosts + static_cast<std::size_t>(j) * nx + i] =
                 static_cast<std::uint16_t>(std::min(65535.0, quantised));
             }
