@@ -170,6 +170,10 @@ void HorizonMap::sweep(int q, int p, int slot)
   // neighbouring posts.
   const std::size_t gridPosts = static_cast<std::size_t>(nx) * ny;
   const std::vector<Crossing> crossings = crossingsOf(q, p);
+  // Each crossing's two posts as offsets in the grid's post order.
+  std::vector<std::array<std::ptrdiff_t, 2>> offsets;
+  for (const Crossing& c : crossings)
+    offsets.push_back({ static_cast<std::ptrdiff_t>(c.b0) * nx + c.a0, static_cast<std::ptrdiff_t>(c.b1) * nx + c.a1 });
   // Distance along the line: positions projected on the step's mean direction.
   double dx = this->Ux * q + this->Vx * p, dy = this->Uy * q + this->Vy * p;
   const double length = std::hypot(dx, dy);
@@ -238,14 +242,16 @@ void HorizonMap::sweep(int q, int p, int slot)
           const bool checked = !complete || !inGrid(i + q, j + p);
           // The crossings ahead of this post, farthest first (past the last post, those
           // still inside the grid).
-          for (auto c = crossings.rbegin(); c != crossings.rend(); ++c)
+          const float* here = position(i, j);
+          for (std::size_t n = crossings.size(); n-- > 0;)
           {
+            const Crossing* c = &crossings[n];
             if (checked &&
               (!inGrid(i + c->a0, j + c->b0) || !inGrid(i + c->a1, j + c->b1) ||
                 !(cellValid(i + c->ci, j + c->cj) || cellValid(i + c->di, j + c->dj))))
               continue;
-            const float* a = position(i + c->a0, j + c->b0);
-            const float* b = position(i + c->a1, j + c->b1);
+            const float* a = here + 3 * offsets[n][0];
+            const float* b = here + 3 * offsets[n][1];
             const double x = (a[0] + c->f * (b[0] - a[0])) * dx + (a[1] + c->f * (b[1] - a[1])) * dy;
             const double z = a[2] + c->f * (b[2] - a[2]);
             pop(hull, x, z);
@@ -253,8 +259,7 @@ void HorizonMap::sweep(int q, int p, int slot)
           }
           if (!complete && !t.postUsed(i, j))
             continue;
-          const float* o = position(i, j);
-          const double x = o[0] * dx + o[1] * dy, z = o[2];
+          const double x = here[0] * dx + here[1] * dy, z = here[2];
           pop(hull, x, z);
           if (!hull.empty() && hull.back().x > x)
           {
