@@ -151,8 +151,9 @@ public:
   void findSunHorizons();
   static constexpr std::size_t sunsForHorizonMap = 48;
   /// From this many suns on (a few months of hours), the map is dense (64 azimuths):
-  /// its sweep and the posts' skies cost about XXX s more at 1025^2, and the
-  /// suns near a post's horizon need about half the rays.
+  /// at 1025^2 its sweep and the posts' skies take 5.7 s instead of 2.9 s, and the suns
+  /// near a post's horizon 40 % fewer rays (June's hourly suns: 42.7 M instead of
+  /// 71.5 M, the month's whole solve no faster; a year's 679 M rays fell to 449 M).
   static constexpr std::size_t sunsForDenseHorizons = 1000;
 
   /// Whether this solver's hierarchy is the one `scene` and `options` would build: the
