@@ -23,6 +23,7 @@
 #include "finite_parameters.h"
 #include "scene_geometry.h"
 #include "solver.h"
+#include "work_split.h"
 
 #include <chrono>
 #include <string>
@@ -346,7 +347,7 @@ int vtkHierarchicalRadiosity::RequestData(
   }
   try
   {
-    PieceRequest request{ terrainPiece ? extent : nullptr, piece == 0 };
+    PieceRequest request{ terrainPiece ? extent : nullptr, piece == 0, piece, pieces };
     const int status = this->Solve(inputVector, request, output, leafMesh, links);
     if (status == 0)
       clearOutputs();
@@ -454,6 +455,16 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
     ~Release() { this->Filter->ReleaseSolution(); }
   } release{ this };
   terralux::HierarchicalRadiosity* solver = &this->PrepareSolver(ownScene);
+  // Ranks that each evaluate their piece of one terrain split what all of them need at
+  // every post (horizons, posts' skies, the lattice), each computing its share.
+  const std::unique_ptr<terralux::WorkSplit> split =
+    piece.extent ? vtkTerrainPieces::SplitAmongRanks(piece.piece, piece.pieces) : nullptr;
+  struct Unsplit
+  {
+    terralux::HierarchicalRadiosity* Solver;
+    ~Unsplit() { this->Solver->setWorkSplit(nullptr); }
+  } unsplit{ solver };
+  solver->setWorkSplit(split.get());
   if (solver->degeneratePolygons() > 0)
   {
     vtkWarningMacro("Skipped " << solver->degeneratePolygons()

@@ -372,6 +372,7 @@ protected:
   {
     const int* extent;
     bool withMeshAndLinks;
+    int piece, pieces; // of output 0 (one per MPI rank: the ranks split the shared work)
   };
   // The engine's scene of the geometry inputs and the lights; throws terralux::Error on
   // bad input.

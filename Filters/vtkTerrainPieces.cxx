@@ -16,6 +16,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "geo_transform.h"
+#include "work_split.h"
 
 #include <algorithm>
 #include <cstring>
@@ -200,4 +201,38 @@ void vtkTerrainPieces::CropToPiece(vtkStructuredGrid* terrain, const int extent[
   setGeoreference(terrain->GetFieldData(),
     wholeTransform.pieceOf(extent[0] - whole[0], extent[2] - whole[2], extent[3] - whole[2], whole[3] - whole[2] + 1),
     extent[1] - extent[0] + 1, extent[3] - extent[2] + 1);
+}
+
+namespace
+{
+class RankSplit : public terralux::WorkSplit
+{
+public:
+  explicit RankSplit(vtkMultiProcessController* controller)
+    : Controller(controller)
+  {
+  }
+  int part() const override { return this->Controller->GetLocalProcessId(); }
+  int parts() const override { return this->Controller->GetNumberOfProcesses(); }
+  void share(void* data, std::size_t size, int owner) const override
+  {
+    // MPI counts are ints: 1 GiB at a time.
+    constexpr std::size_t chunk = std::size_t{ 1 } << 30;
+    char* bytes = static_cast<char*>(data);
+    for (std::size_t offset = 0; offset < size; offset += chunk)
+      this->Controller->Broadcast(bytes + offset, static_cast<vtkIdType>(std::min(chunk, size - offset)), owner);
+  }
+
+private:
+  vtkMultiProcessController* Controller;
+};
+} // namespace
+
+std::unique_ptr<terralux::WorkSplit> vtkTerrainPieces::SplitAmongRanks(int piece, int pieces)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || pieces < 2 || controller->GetNumberOfProcesses() != pieces ||
+    controller->GetLocalProcessId() != piece)
+    return nullptr;
+  return std::make_unique<RankSplit>(controller);
 }

@@ -6,6 +6,12 @@
 
 #include "vtkSmartPointer.h"
 
+#include <memory>
+
+namespace terralux
+{
+class WorkSplit;
+}
 class vtkDataSet;
 class vtkImageData;
 class vtkMultiProcessController;
@@ -23,6 +29,10 @@ struct vtkTerrainPieces
   /// Crops a terrain to the piece `extent` (grid indices) and makes its georeference
   /// field data (GeoTransform, RasterSize) describe the piece.
   static void CropToPiece(vtkStructuredGrid* terrain, const int extent[6]);
+  /// The global controller's ranks as a terralux::WorkSplit (broadcasts from each
+  /// block's owner), where the `pieces` pieces asked for are one per rank and this rank
+  /// asks for its own, `piece`; null otherwise (one process, or pieces streamed by one).
+  static std::unique_ptr<terralux::WorkSplit> SplitAmongRanks(int piece, int pieces);
 };
 
 #endif

@@ -2,6 +2,7 @@
 
 #include "angles.h"
 #include "terrain_grid.h"
+#include "work_split.h"
 
 #include <tbb/parallel_for.h>
 
@@ -101,7 +102,7 @@ std::vector<std::array<int, 2>> stepsOfAllAzimuths(bool dense)
 }
 } // namespace
 
-HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense)
+HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* split)
   : Terrain(terrain)
 {
   this->fitMeanMap();
@@ -126,8 +127,13 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense)
     this->Azimuths.push_back(a);
     this->AzimuthSteps.push_back({ (this->Vy * x - this->Vx * y) / det, (this->Ux * y - this->Uy * x) / det });
     this->AzimuthDirections.push_back({ x, y });
-    this->sweep(steps[order[slot]][0], steps[order[slot]][1], static_cast<int>(slot));
+    if (!split || split->owns(slot))
+      this->sweep(steps[order[slot]][0], steps[order[slot]][1], static_cast<int>(slot));
   }
+  if (split)
+    for (std::size_t slot = 0; slot < order.size(); ++slot)
+      split->share(&this->Elevations[slot * this->PostCount], this->PostCount * sizeof(std::uint16_t),
+        split->ownerOf(slot));
 }
 
 bool HorizonMap::fits(const TerrainGrid& terrain, bool dense)

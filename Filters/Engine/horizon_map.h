@@ -27,6 +27,7 @@
 namespace terralux
 {
 class TerrainGrid;
+class WorkSplit;
 
 class HorizonMap
 {
@@ -35,7 +36,9 @@ public:
   /// must outlive this. `dense`: 64 azimuths instead of 32, for many suns (a year of
   /// hours): half as far from a sun's bearing to the nearest mapped azimuth, so about
   /// half the suns near a post's horizon need a ray, for 2.4 times the sweep's work.
-  explicit HorizonMap(const TerrainGrid& terrain, bool dense = false);
+  /// `split`: processes that each sweep their share of the azimuths and send it to the
+  /// others (all of them build the map together; null: this one alone).
+  explicit HorizonMap(const TerrainGrid& terrain, bool dense = false, const WorkSplit* split = nullptr);
   static constexpr int maximumAzimuths = 64;
   int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
   bool dense() const { return this->azimuthCount() > 32; }

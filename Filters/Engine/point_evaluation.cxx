@@ -251,6 +251,8 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
   this->Gather->setPostLattice(nullptr);
   const int step = lattice->step();
   tbb::parallel_for(0, (grid.postsY() - 1) / step + 1, [&](int lj) {
+    if (!lattice->gathersRow(lj, this->Split))
+      return;
     const int j = lj * step;
     for (int i = 0; i < grid.postsX(); i += step)
     {
@@ -273,6 +275,8 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
       lattice->set(i, j, gathered);
     }
   });
+  if (this->Split)
+    lattice->shareRows(*this->Split);
   this->Lattice = std::move(lattice);
   this->Gather->setPostLattice(this->Lattice.get());
 }

@@ -38,6 +38,19 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   this->PerTerrain[k] = scaled;
 }
 
+void PostLattice::shareRows(const WorkSplit& split)
+{
+  for (int lj0 = 0; lj0 < this->Ny; lj0 += rowsPerBlock)
+  {
+    const std::size_t first = this->index(0, lj0);
+    const std::size_t count = static_cast<std::size_t>(std::min(rowsPerBlock, this->Ny - lj0)) * this->Nx;
+    const int owner = split.ownerOf(static_cast<std::size_t>(lj0 / rowsPerBlock));
+    split.share(&this->Reflected[first], count * sizeof(this->Reflected[0]), owner);
+    split.share(&this->Variance[first], count * sizeof(this->Variance[0]), owner);
+    split.share(&this->PerTerrain[first], count * sizeof(this->PerTerrain[0]), owner);
+  }
+}
+
 PostLattice::Around PostLattice::around(int i, int j) const
 {
   const int li = std::min(i / this->Step, std::max(0, this->Nx - 2));

@@ -14,6 +14,7 @@
 //   stays unbiased.
 
 #include "radiosity_types.h"
+#include "work_split.h"
 
 #include <array>
 #include <vector>
@@ -39,6 +40,14 @@ public:
   };
   /// Records a lattice post's gather (from any thread, each post once).
   void set(int i, int j, const Gathered& gathered);
+  /// With `split`, which lattice rows this process gathers (blocks of rowsPerBlock),
+  /// and, once each has gathered its own, every block received from its owner.
+  static constexpr int rowsPerBlock = 4;
+  bool gathersRow(int latticeRow, const WorkSplit* split) const
+  {
+    return !split || split->owns(static_cast<std::size_t>(latticeRow / rowsPerBlock));
+  }
+  void shareRows(const WorkSplit& split);
 
   /// The largest variance at a corner of the lattice cell holding post (i, j); -1
   /// where none is known.

@@ -5,6 +5,7 @@
 #include "horizon_sky.h"
 #include "open_sky.h"
 #include "terrain_grid.h"
+#include "work_split.h"
 
 #include <tbb/parallel_for.h>
 
@@ -13,7 +14,8 @@
 
 namespace terralux
 {
-PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals)
+PostSky::PostSky(
+  const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals, const WorkSplit* split)
   : Terrain(terrain)
   , HornNormals(hornNormals)
 {
@@ -21,7 +23,10 @@ PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const O
   const std::size_t posts = static_cast<std::size_t>(nx) * ny;
   this->Values.assign(posts, {});
   this->Used.assign(posts, 0);
+  constexpr int rowsPerBlock = 16;
   tbb::parallel_for(0, ny, [&](int j) {
+    if (split && !split->owns(static_cast<std::size_t>(j / rowsPerBlock)))
+      return;
     for (int i = 0; i < nx; ++i)
     {
       if (!terrain.postUsed(i, j))
@@ -36,6 +41,15 @@ PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const O
       this->Used[post.index] = 1;
     }
   });
+  if (split)
+    for (int j0 = 0; j0 < ny; j0 += rowsPerBlock)
+    {
+      const std::size_t first = static_cast<std::size_t>(j0) * nx;
+      const std::size_t count = static_cast<std::size_t>(std::min(rowsPerBlock, ny - j0)) * nx;
+      const int owner = split->ownerOf(static_cast<std::size_t>(j0 / rowsPerBlock));
+      split->share(&this->Values[first], count * sizeof(this->Values[0]), owner);
+      split->share(&this->Used[first], count * sizeof(this->Used[0]), owner);
+    }
 }
 
 PostSky::Value PostSky::at(const HorizonMap::Post& post, const Vec3& normal, const HorizonSky& horizons, const OpenSky& sky)

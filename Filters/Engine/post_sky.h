@@ -18,13 +18,16 @@ namespace terralux
 class HorizonSky;
 class OpenSky;
 class TerrainGrid;
+class WorkSplit;
 
 class PostSky
 {
 public:
   /// Every used post of the map's terrain, on its normal (Horn's where `hornNormals`,
-  /// the area-weighted one otherwise: the outputs' choice), in parallel.
-  PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals = false);
+  /// the area-weighted one otherwise: the outputs' choice), in parallel; with `split`,
+  /// each process its share of the rows, then the others' received.
+  PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals = false,
+    const WorkSplit* split = nullptr);
 
   struct Value
   {

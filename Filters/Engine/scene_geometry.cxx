@@ -18,17 +18,17 @@ SceneGeometry::SceneGeometry(const RadiosityScene& scene)
 
 SceneGeometry::~SceneGeometry() = default;
 
-const HorizonMap& SceneGeometry::horizons(std::size_t index, bool dense)
+const HorizonMap& SceneGeometry::horizons(std::size_t index, bool dense, const WorkSplit* split)
 {
   const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
   if (dense || this->DenseHorizons[index])
   {
     if (!this->DenseHorizons[index])
-      this->DenseHorizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index], true);
+      this->DenseHorizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index], true, split);
     return *this->DenseHorizons[index];
   }
   if (!this->Horizons[index])
-    this->Horizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index]);
+    this->Horizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index], false, split);
   return *this->Horizons[index];
 }
 

@@ -14,6 +14,7 @@
 namespace terralux
 {
 class HorizonMap;
+class WorkSplit;
 class TerrainGrid;
 class Visibility;
 
@@ -33,7 +34,8 @@ public:
   /// built on the first call (64 bytes a post) and kept; `dense`: toward 64 azimuths
   /// (128 bytes a post). A dense map, once built, also serves where 32 azimuths are
   /// asked for (it proves more).
-  const HorizonMap& horizons(std::size_t index, bool dense = false);
+  /// `split`: the processes that build it together (HorizonMap), all calling this alike.
+  const HorizonMap& horizons(std::size_t index, bool dense = false, const WorkSplit* split = nullptr);
 
   /// Whether `scene` has this one's shape: the same polygons over the same points and
   /// terrains with the same posts and valid cells (materials may differ).

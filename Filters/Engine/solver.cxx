@@ -240,11 +240,11 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   const auto start = std::chrono::steady_clock::now();
   // The one terrain's horizons: built by the first solve over this geometry, reused by
   // the next ones.
-  this->PostHorizons = &this->Geometry->horizons(0, this->wantsDenseHorizons());
+  this->PostHorizons = &this->Geometry->horizons(0, this->wantsDenseHorizons(), this->Split);
   this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons);
   this->Gather->setHorizons(this->Horizons.get());
   this->PostSkies =
-    std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals);
+    std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals, this->Split);
   this->Gather->setPostSkies(this->PostSkies.get());
   this->Stats.secondsHorizons = secondsSince(start);
 }
@@ -270,7 +270,7 @@ void HierarchicalRadiosity::findSunHorizons()
   if (!map && this->PointSuns.size() >= sunsForHorizonMap && HorizonMap::fits(*grid))
   {
     const auto start = std::chrono::steady_clock::now();
-    map = &this->Geometry->horizons(0, this->wantsDenseHorizons());
+    map = &this->Geometry->horizons(0, this->wantsDenseHorizons(), this->Split);
     this->Stats.secondsHorizons += secondsSince(start);
   }
   if (!map || !map->complete())

@@ -17,6 +17,7 @@
 
 namespace terralux
 {
+class WorkSplit;
 class Cluster;
 class FinalGather;
 class HorizonSky;
@@ -149,6 +150,12 @@ public:
   /// and at least sunsForHorizonMap suns (it costs about 20 rays a post). Exact: the
   /// bounds hold for any terrain, and a ray decides the rest.
   void findSunHorizons();
+  /// Processes that solve this same scene (MPI ranks, each evaluating its own piece)
+  /// and split what every one of them needs at every post: the horizons' map, the
+  /// posts' skies (findPostHorizons, findSunHorizons) and the lattice
+  /// (gatherPostLattice), each computing its share and receiving the others'. Every
+  /// process must then make these calls alike. Null (the default): this one alone.
+  void setWorkSplit(const WorkSplit* split) { this->Split = split; }
   static constexpr std::size_t sunsForHorizonMap = 48;
   /// From this many suns on (a few months of hours), the map is dense (64 azimuths):
   /// at 1025^2 its sweep and the posts' skies take 5.7 s instead of 2.9 s, and the suns
@@ -293,6 +300,7 @@ private:
   const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
   const HorizonMap* PostHorizons = nullptr;      // its posts' horizons (findPostHorizons), the geometry's
   const HorizonMap* SunHorizons = nullptr;       // the same map, for direct sun (findSunHorizons)
+  const WorkSplit* Split = nullptr;              // the processes sharing the work (setWorkSplit)
   struct MappedSun // each of PointSuns on that map
   {
     HorizonMap::Sight sight;

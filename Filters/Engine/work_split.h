@@ -1,0 +1,28 @@
+#pragma once
+// How processes that solve the same scene (MPI ranks, each evaluating its own piece of
+// a terrain) split work whose results every one of them needs: the horizons of every
+// post, their skies and the lattice's gathers, which gather rays read wherever they
+// land. Each value is computed the same way whoever computes it, so each process takes
+// its share of blocks and then receives the others' (a broadcast from each block's
+// owner): the results equal one process's, bit for bit. The engine knows no MPI; the
+// VTK adapter passes its controller in.
+
+#include <cstddef>
+
+namespace terralux
+{
+class WorkSplit
+{
+public:
+  virtual ~WorkSplit() = default;
+  /// This process, of parts(): 0 <= part() < parts().
+  virtual int part() const = 0;
+  virtual int parts() const = 0;
+  /// Every process calls it alike: `owner`'s `size` bytes at `data` replace the others'.
+  virtual void share(void* data, std::size_t size, int owner) const = 0;
+
+  /// Blocks dealt in turn (neighbouring rows cost alike, so the shares balance).
+  int ownerOf(std::size_t block) const { return static_cast<int>(block % static_cast<std::size_t>(this->parts())); }
+  bool owns(std::size_t block) const { return this->ownerOf(block) == this->part(); }
+};
+} // namespace terralux
