@@ -1,0 +1,151 @@
+// Work split between processes (work_split.h), with threads standing in for MPI ranks:
+// each builds the horizons' map and the posts' skies from its share and the others'
+// broadcasts, and must hold what one process alone finds, bit for bit.
+
+#include "angles.h"
+#include "cie_sky.h"
+#include "horizon_map.h"
+#include "horizon_sky.h"
+#include "open_sky.h"
+#include "post_sky.h"
+#include "sky_hierarchy.h"
+#include "terrain_grids.h"
+#include "visibility.h"
+#include "work_split.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <condition_variable>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+using namespace terralux;
+using namespace terralux_test;
+
+namespace
+{
+// `parts` threads that meet at each share: the owner's bytes go through a common buffer
+// to the others, as MPI_Bcast sends them.
+class ThreadRanks
+{
+public:
+  explicit ThreadRanks(int parts)
+    : Parts(parts)
+  {
+  }
+  class Split : public WorkSplit
+  {
+  public:
+    Split(ThreadRanks& ranks, int part)
+      : Ranks(ranks)
+      , Part(part)
+    {
+    }
+    int part() const override { return this->Part; }
+    int parts() const override { return this->Ranks.Parts; }
+    void share(void* data, std::size_t size, int owner) const override
+    {
+      ++this->Shares;
+      if (this->Part == owner)
+        this->Ranks.Buffer.assign(static_cast<const char*>(data), static_cast<const char*>(data) + size);
+      this->Ranks.meet();
+      if (this->Part != owner)
+      {
+        EXPECT_EQ(this->Ranks.Buffer.size(), size);
+        std::memcpy(data, this->Ranks.Buffer.data(), std::min(size, this->Ranks.Buffer.size()));
+      }
+      this->Ranks.meet();
+    }
+    mutable int Shares = 0;
+
+  private:
+    ThreadRanks& Ranks;
+    int Part;
+  };
+  /// Runs work(split) on every part at once.
+  void run(const std::function<void(const Split&)>& work)
+  {
+    std::vector<std::thread> threads;
+    std::vector<std::unique_ptr<Split>> splits;
+    for (int part = 0; part < this->Parts; ++part)
+      splits.push_back(std::make_unique<Split>(*this, part));
+    for (int part = 0; part < this->Parts; ++part)
+      threads.emplace_back([&, part]() { work(*splits[part]); });
+    for (std::thread& thread : threads)
+      thread.join();
+  }
+
+private:
+  void meet()
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    const long generation = this->Generation;
+    if (++this->Arrived == this->Parts)
+    {
+      this->Arrived = 0;
+      ++this->Generation;
+      this->Met.notify_all();
+    }
+    else
+      this->Met.wait(lock, [&]() { return this->Generation != generation; });
+  }
+  int Parts;
+  std::vector<char> Buffer;
+  std::mutex Mutex;
+  std::condition_variable Met;
+  int Arrived = 0;
+  long Generation = 0;
+};
+
+double hills(double x, double y)
+{
+  return 60.0 * std::sin(x / 40.0) * std::cos(y / 55.0) + 25.0 * std::sin((x + 2.0 * y) / 23.0);
+}
+} // namespace
+
+TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
+{
+  const auto grid = makeGrid(97, 81, 10.0, hills);
+  const Visibility rays(sceneOf({ grid.get() }));
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(50.0 * degree, 2.0)), 100.0, 5);
+  const OpenSky open(sky);
+  for (const bool dense : { false, true })
+  {
+    const HorizonMap alone(*grid, dense);
+    const HorizonSky aloneSky(rays, open, &alone);
+    const PostSky aloneSkies(*grid, aloneSky, open, true);
+    for (const int parts : { 2, 3 })
+    {
+      ThreadRanks ranks(parts);
+      ranks.run([&](const ThreadRanks::Split& split) {
+        const HorizonMap map(*grid, dense, &split);
+        const int sweeps = split.Shares;
+        // Every azimuth sent once, from its owner.
+        EXPECT_EQ(sweeps, map.azimuthCount());
+        const HorizonSky mapped(rays, open, &map);
+        const PostSky skies(*grid, mapped, open, true, &split);
+        EXPECT_GT(split.Shares, sweeps); // the skies' rows too
+        int differences = 0;
+        for (int j = 0; j < grid->postsY(); ++j)
+          for (int i = 0; i < grid->postsX(); ++i)
+          {
+            const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * grid->postsX() + i };
+            for (int a = 0; a < map.azimuthCount(); ++a)
+              differences += map.elevation(post, a) != alone.elevation(post, a);
+            PostSky::Value value, expected;
+            const Vec3 normal = grid->normalAt(i, j, true);
+            ASSERT_TRUE(skies.found(post, normal, value));
+            ASSERT_TRUE(aloneSkies.found(post, normal, expected));
+            differences += value.irradiance[0] != expected.irradiance[0];
+            differences += value.skyViewFactor != expected.skyViewFactor;
+          }
+        EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts << (dense ? ", dense" : "");
+      });
+    }
+  }
+}
