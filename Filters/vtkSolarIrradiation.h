@@ -21,9 +21,10 @@
  * 2004). The hierarchy, its visibility and the final gather at each point are built
  * once for the whole range; each step costs one shadow ray per point at most: at the
  * posts of a DEM without missing cells, none where the post's horizons prove the sun
- * open or hidden (HorizonMap::clearlyAbove, clearlyBelow; the values are those of the
- * rays, but at the foot of walls steeper than about 75 deg, where a ray a few degrees
- * up passes under the wall within its starting offset and the proof is right).
+ * open or hidden (HorizonMap::View::clearlyAbove, clearlyBelow; the values are those
+ * of the rays, but where a ray, starting a little above the post, passes over a crest a
+ * cell away or under the foot of a wall steeper than about 75 deg that the proof, at
+ * the post itself, rightly finds in the way).
  *
  * Input port 0: the scene, as vtkHierarchicalRadiosity's (terrains, objects,
  * composites; reflectance and emission arrays). The place is the first input's

@@ -138,7 +138,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
 
 bool HorizonMap::fits(const TerrainGrid& terrain, bool dense)
 {
-  const double bytes = 2.0 * (dense ? 64 : 32) * terrain.postsX() * terrain.postsY();
+  const double bytes = 2.0 * (dense ? maximumAzimuths : standardAzimuths) * terrain.postsX() * terrain.postsY();
   return bytes <= 2147483648.0;
 }
 
@@ -174,7 +174,6 @@ void HorizonMap::sweep(int q, int p, int slot)
   const int nx = t.postsX(), ny = t.postsY();
   // Azimuth by azimuth: neighbouring lines, swept one after another, write
   // neighbouring posts.
-  const std::size_t gridPosts = static_cast<std::size_t>(nx) * ny;
   const std::vector<Crossing> crossings = crossingsOf(q, p);
   // Each crossing's two posts as offsets in the grid's post order.
   std::vector<std::array<std::ptrdiff_t, 2>> offsets;
@@ -274,7 +273,7 @@ void HorizonMap::sweep(int q, int p, int slot)
             {
               // Rounded to the nearest (a positive value: + 0.5, truncated).
               const double quantised = atanOfPositive(tangent) / (0.5 * pi) * 65535.0 + 0.5;
-              this->Elevations[slot * gridPosts + static_cast<std::size_t>(j) * nx + i] =
+              this->Elevations[slot * this->PostCount + static_cast<std::size_t>(j) * nx + i] =
                 static_cast<std::uint16_t>(std::min(65535.0, quantised));
             }
           }
@@ -408,6 +407,8 @@ HorizonMap::Sight HorizonMap::sight(double azimuth, double elevation) const
 HorizonMap::View::View(const HorizonMap& map, const Post& post)
   : Map(map)
   , At(post)
+  , I(static_cast<int>(post.index % static_cast<std::size_t>(map.Terrain.postsX())))
+  , J(static_cast<int>(post.index / static_cast<std::size_t>(map.Terrain.postsX())))
   , Count(map.azimuthCount())
   , Margin(map.complete() ? map.proofMargin() : std::numeric_limits<double>::infinity())
 {
@@ -430,13 +431,12 @@ HorizonMap::View::Reach& HorizonMap::View::reach(int k)
     return reach;
   this->Reached |= std::uint64_t{ 1 } << k;
   const HorizonMap& map = this->Map;
-  const int nx = map.Terrain.postsX();
-  const int i = static_cast<int>(this->At.index % nx), j = static_cast<int>(this->At.index / nx);
-  const double r0 = map.exitDistance(i, j, k), r1 = map.exitDistance(i, j, (k + 1) % map.azimuthCount());
+  const double r0 = map.exitDistance(this->I, this->J, k), r1 = map.exitDistance(this->I, this->J, this->next(k));
   reach = Reach{};
   reach.longer = r1 > r0 ? 1 : 0;
-  reach.pastShorter = map.riseOver(i, j, std::min(r0, r1));
-  reach.pastLonger = map.cornerWithin(i, j, k) ? map.riseOver(i, j, std::max(r0, r1)) : 0.0;
+  reach.shorter = std::min(r0, r1);
+  reach.pastShorter = map.riseOver(this->I, this->J, reach.shorter);
+  reach.pastLonger = map.cornerWithin(this->I, this->J, k) ? map.riseOver(this->I, this->J, std::max(r0, r1)) : 0.0;
   return reach;
 }
 
@@ -446,20 +446,18 @@ double HorizonMap::View::pastLeast(int k)
   if (reach.pastLeast >= 0.0)
     return reach.pastLeast;
   const HorizonMap& map = this->Map;
-  const int nx = map.Terrain.postsX();
-  const int i = static_cast<int>(this->At.index % nx), j = static_cast<int>(this->At.index / nx);
-  const double a0 = map.Azimuths[k], a1 = map.Azimuths[(k + 1) % map.azimuthCount()];
+  const double a0 = map.Azimuths[k], a1 = map.Azimuths[this->next(k)];
   // The distance to a convex edge along an azimuth is least at the bracket's ends or
   // where it meets an edge square on.
-  double least = std::min(map.exitDistance(i, j, k), map.exitDistance(i, j, (k + 1) % map.azimuthCount()));
+  double least = reach.shorter;
   for (int edge = 0; edge < 4; ++edge)
   {
     const double a = map.EdgeAzimuths[edge];
     const bool inside = a0 <= a1 ? (a >= a0 && a <= a1) : (a >= a0 || a <= a1);
     if (inside)
-      least = std::min(least, map.edgeDistance(i, j, edge));
+      least = std::min(least, map.edgeDistance(this->I, this->J, edge));
   }
-  return reach.pastLeast = map.riseOver(i, j, least);
+  return reach.pastLeast = map.riseOver(this->I, this->J, least);
 }
 
 bool HorizonMap::View::clearPastNeighbours(const Sight& sight, double fromBelow, double fromAbove)
@@ -478,10 +476,10 @@ bool HorizonMap::View::clearlyBelow(const Sight& sight)
   const double margin = this->Margin;
   if (std::isinf(margin))
     return false; // the map proves nothing
-  const int k = sight.bearing.k, next = k + 1 == this->Count ? 0 : k + 1;
+  const int k = sight.bearing.k;
   // In tangents: tan(elevation + margin) < tan H_k - drop, the same as elevation below
   // atan(tan H_k - drop) - margin.
-  for (const auto& [side, drop] : { std::pair<int, double>{ k, sight.dropBelow }, { next, sight.dropAbove } })
+  for (const auto& [side, drop] : { std::pair<int, double>{ k, sight.dropBelow }, { this->next(k), sight.dropAbove } })
   {
     const double horizon = this->elevation(side);
     if (horizon > margin && horizon < 0.5 * pi && sight.tanWithMargin < this->tangent(side) - drop &&

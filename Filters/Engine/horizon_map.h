@@ -40,7 +40,7 @@ public:
   /// `split`: processes that each sweep their share of the azimuths and send it to the
   /// others (all of them build the map together; null: this one alone).
   explicit HorizonMap(const TerrainGrid& terrain, bool dense = false, const WorkSplit* split = nullptr);
-  static constexpr int maximumAzimuths = 64;
+  static constexpr int standardAzimuths = 32, maximumAzimuths = 64; // dense: the maximum
   int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
   /// Whether the map of `terrain` fits the 2 GiB it may take (64 bytes a post, 128
   /// dense: grids up to about 5,800^2 posts, 4,100^2 dense); beyond, posts keep the
@@ -109,9 +109,9 @@ public:
     {
       // The mapped horizons alone first (most suns over a day or a year end here):
       // where they do not prove the sight open, the distances need not be found.
-      const int k = sight.bearing.k, next = k + 1 == this->Count ? 0 : k + 1;
+      const int k = sight.bearing.k;
       const double fromBelow = this->elevation(k) + sight.riseBelow;
-      const double fromAbove = this->elevation(next) + sight.riseAbove;
+      const double fromAbove = this->elevation(this->next(k)) + sight.riseAbove;
       return sight.elevation > std::min(fromBelow, fromAbove) + this->Margin &&
         this->clearPastNeighbours(sight, fromBelow, fromAbove);
     }
@@ -131,11 +131,13 @@ public:
     /// tangents).
     struct Reach
     {
-      double pastShorter = 0.0; // R: the shorter exit distance of the two azimuths
+      double shorter = 0.0;     // the shorter exit distance of the two azimuths (m)
+      double pastShorter = 0.0; // R: that one
       double pastLonger = 0.0;  // the longer, where a corner lies within; else 0
       double pastLeast = -1.0;  // the least over the bracket (found when first asked)
       int longer = 0;           // 0: azimuth k, 1: k + 1
     };
+    int next(int k) const { return k + 1 == this->Count ? 0 : k + 1; }
     double elevation(int k)
     {
       if (!(this->Read >> k & 1u))
@@ -151,6 +153,7 @@ public:
     double pastLeast(int k);
     const HorizonMap& Map;
     Post At;
+    int I, J; // the post's grid indices
     int Count;
     double Margin; // proofMargin(), or +inf where the map proves nothing
     std::array<float, maximumAzimuths> Elevations, Tangents;

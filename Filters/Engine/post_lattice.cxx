@@ -40,15 +40,12 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
 
 void PostLattice::shareRows(const WorkSplit& split)
 {
-  for (int lj0 = 0; lj0 < this->Ny; lj0 += rowsPerBlock)
-  {
-    const std::size_t first = this->index(0, lj0);
-    const std::size_t count = static_cast<std::size_t>(std::min(rowsPerBlock, this->Ny - lj0)) * this->Nx;
-    const int owner = split.ownerOf(static_cast<std::size_t>(lj0 / rowsPerBlock));
+  split.shareRows(this->Ny, rowsPerBlock, [&](int lj0, int rows, int owner) {
+    const std::size_t first = this->index(0, lj0), count = static_cast<std::size_t>(rows) * this->Nx;
     split.share(&this->Reflected[first], count * sizeof(this->Reflected[0]), owner);
     split.share(&this->Variance[first], count * sizeof(this->Variance[0]), owner);
     split.share(&this->PerTerrain[first], count * sizeof(this->PerTerrain[0]), owner);
-  }
+  });
 }
 
 PostLattice::Around PostLattice::around(int i, int j) const

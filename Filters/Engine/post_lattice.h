@@ -45,7 +45,7 @@ public:
   static constexpr int rowsPerBlock = 4;
   bool gathersRow(int latticeRow, const WorkSplit* split) const
   {
-    return !split || split->owns(static_cast<std::size_t>(latticeRow / rowsPerBlock));
+    return !split || split->ownsRow(latticeRow, rowsPerBlock);
   }
   void shareRows(const WorkSplit& split);
 

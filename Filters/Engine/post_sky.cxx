@@ -25,7 +25,7 @@ PostSky::PostSky(
   this->Used.assign(posts, 0);
   constexpr int rowsPerBlock = 16;
   tbb::parallel_for(0, ny, [&](int j) {
-    if (split && !split->owns(static_cast<std::size_t>(j / rowsPerBlock)))
+    if (split && !split->ownsRow(j, rowsPerBlock))
       return;
     for (int i = 0; i < nx; ++i)
     {
@@ -42,14 +42,11 @@ PostSky::PostSky(
     }
   });
   if (split)
-    for (int j0 = 0; j0 < ny; j0 += rowsPerBlock)
-    {
-      const std::size_t first = static_cast<std::size_t>(j0) * nx;
-      const std::size_t count = static_cast<std::size_t>(std::min(rowsPerBlock, ny - j0)) * nx;
-      const int owner = split->ownerOf(static_cast<std::size_t>(j0 / rowsPerBlock));
+    split->shareRows(ny, rowsPerBlock, [&](int j0, int rows, int owner) {
+      const std::size_t first = static_cast<std::size_t>(j0) * nx, count = static_cast<std::size_t>(rows) * nx;
       split->share(&this->Values[first], count * sizeof(this->Values[0]), owner);
       split->share(&this->Used[first], count * sizeof(this->Used[0]), owner);
-    }
+    });
 }
 
 PostSky::Value PostSky::at(const HorizonMap::Post& post, const Vec3& normal, const HorizonSky& horizons, const OpenSky& sky)

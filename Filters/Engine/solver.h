@@ -147,8 +147,10 @@ public:
   /// cells: direct sun at a post casts its ray only where the post's horizons
   /// (HorizonMap::View) prove the sun neither open nor hidden, which over a day or a year of
   /// suns is most of them. Uses findPostHorizons' map, or builds it where there is none
-  /// and at least sunsForHorizonMap suns (it costs about 20 rays a post). Exact: the
-  /// bounds hold for any terrain, and a ray decides the rest.
+  /// and at least sunsForHorizonMap suns (it costs about 20 rays a post). The bounds
+  /// hold for any terrain at the post itself, and a ray decides the rest; a ray starts a
+  /// little above the post (Visibility::offset) and may pass over a crest a cell away
+  /// that the proof, rightly, finds in the way.
   void findSunHorizons();
   /// Processes that solve this same scene (MPI ranks, each evaluating its own piece)
   /// and split what every one of them needs at every post: the horizons' map, the

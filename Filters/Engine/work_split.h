@@ -7,6 +7,7 @@
 // owner): the results equal one process's, bit for bit. The engine knows no MPI; the
 // VTK adapter passes its controller in.
 
+#include <algorithm>
 #include <cstddef>
 
 namespace terralux
@@ -24,5 +25,15 @@ public:
   /// Blocks dealt in turn (neighbouring rows cost alike, so the shares balance).
   int ownerOf(std::size_t block) const { return static_cast<int>(block % static_cast<std::size_t>(this->parts())); }
   bool owns(std::size_t block) const { return this->ownerOf(block) == this->part(); }
+  /// Rows dealt in blocks of `rowsPerBlock`: whether this process computes `row`.
+  bool ownsRow(int row, int rowsPerBlock) const { return this->owns(static_cast<std::size_t>(row / rowsPerBlock)); }
+  /// Once each process has computed its rows: send(firstRow, rowCount, owner) for every
+  /// block of the `rows`, in the same order everywhere (send calls share).
+  template <typename Send>
+  void shareRows(int rows, int rowsPerBlock, Send&& send) const
+  {
+    for (int first = 0; first < rows; first += rowsPerBlock)
+      send(first, std::min(rowsPerBlock, rows - first), this->ownerOf(static_cast<std::size_t>(first / rowsPerBlock)));
+  }
 };
 } // namespace terralux
