@@ -116,6 +116,8 @@ double potentialEmittance(const HElement& sender, const OracleSettings& settings
     const auto& cluster = static_cast<const Cluster&>(sender);
     return std::max(emittance, cluster.largestEmission() + cluster.largestReflectance() * settings.meanIrradiance);
   }
+  if (!sender.isSurface())
+    return emittance; // a source outside the scene (sun, sky patch) reflects nothing
   const auto& surface = static_cast<const PolygonElement&>(sender);
   for (int band = 0; band < maxBands; ++band)
     emittance = std::max(emittance, surface.emission()[band] + surface.reflectance()[band] * settings.meanIrradiance);
