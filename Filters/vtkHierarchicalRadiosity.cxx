@@ -26,6 +26,7 @@
 #include "work_split.h"
 
 #include <chrono>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -438,50 +439,77 @@ void vtkHierarchicalRadiosity::ReleaseSolution()
 }
 
 //------------------------------------------------------------------------------
+bool vtkHierarchicalRadiosity::SolveHierarchy(vtkInformationVector** inputVector, Hierarchy& hierarchy)
+{
+  hierarchy.OwnScene = this->BuildScene(inputVector);
+  hierarchy.Scene = hierarchy.OwnScene.get();
+  if (this->GetAbortExecute()) // asked while the lights were made (vtkSolarIrradiation's steps)
+    return false;
+  terralux::HierarchicalRadiosity& solver = *(hierarchy.Solver = &this->PrepareSolver(hierarchy.OwnScene));
+  if (solver.degeneratePolygons() > 0)
+  {
+    vtkWarningMacro("Skipped " << solver.degeneratePolygons() << " degenerate polygon(s) with zero area.");
+  }
+  for (const vtkRadiosityScene::SunLight& sun : hierarchy.Scene->Suns)
+  {
+    solver.addSun(sun.direction, sun.irradiance, sun.hours);
+  }
+  solver.setSky(hierarchy.Scene->Sky.get());
+  this->UpdateProgress(0.1);
+  FilterProgress progress(this);
+  return solver.solve(&progress);
+}
+
+//------------------------------------------------------------------------------
 int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const PieceRequest& piece,
   vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links)
 {
-  std::unique_ptr<vtkRadiosityScene> ownScene = this->BuildScene(inputVector);
-  vtkRadiosityScene& scene = *ownScene;
-  if (this->GetAbortExecute()) // asked while the lights were made (vtkSolarIrradiation's steps)
-  {
-    vtkWarningMacro("Aborted.");
-    return 1;
-  }
+  Hierarchy hierarchy; // its scene outlives the kept solver's hold on its lights
   // However the update ends, the kept solver lets go of its lights and solution.
   struct Release
   {
     vtkHierarchicalRadiosity* Filter;
     ~Release() { this->Filter->ReleaseSolution(); }
   } release{ this };
-  terralux::HierarchicalRadiosity* solver = &this->PrepareSolver(ownScene);
   // Ranks that each evaluate their piece of one terrain split what all of them need at
   // every post (horizons, posts' skies, the lattice), each computing its share.
   const std::unique_ptr<terralux::WorkSplit> split =
     piece.extent ? vtkTerrainPieces::SplitAmongRanks(piece.piece, piece.pieces) : nullptr;
+  bool solved = false;
+  std::exception_ptr failure;
+  try
+  {
+    solved = this->SolveHierarchy(inputVector, hierarchy);
+  }
+  catch (...)
+  {
+    failure = std::current_exception();
+  }
+  // Until here each rank worked alone. One that stopped (an error, an abort, out of
+  // memory) must not leave the others waiting in the shared steps' broadcasts: all
+  // learn it and stop alike.
+  const bool everyRankSolved = !split || split->allSucceeded(solved && !failure);
+  if (failure)
+    std::rethrow_exception(failure);
+  if (!solved)
+  {
+    vtkWarningMacro("Aborted.");
+    return 1;
+  }
+  if (!everyRankSolved)
+  {
+    vtkErrorMacro("Another MPI rank stopped before the ranks' shared steps (its error or warning says why): "
+                  "this rank stops too, with empty outputs.");
+    return 0;
+  }
+  vtkRadiosityScene& scene = *hierarchy.Scene;
+  terralux::HierarchicalRadiosity* solver = hierarchy.Solver;
   struct Unsplit
   {
     terralux::HierarchicalRadiosity* Solver;
     ~Unsplit() { this->Solver->setWorkSplit(nullptr); }
   } unsplit{ solver };
   solver->setWorkSplit(split.get());
-  if (solver->degeneratePolygons() > 0)
-  {
-    vtkWarningMacro("Skipped " << solver->degeneratePolygons()
-                               << " degenerate polygon(s) with zero area.");
-  }
-  for (const vtkRadiosityScene::SunLight& sun : scene.Suns)
-  {
-    solver->addSun(sun.direction, sun.irradiance, sun.hours);
-  }
-  solver->setSky(scene.Sky.get());
-  this->UpdateProgress(0.1);
-  FilterProgress progress(this);
-  if (!solver->solve(&progress))
-  {
-    vtkWarningMacro("Aborted.");
-    return 1;
-  }
   const terralux::RadiosityStatistics& stats = solver->statistics();
   if (stats.elementBudgetReached)
   {

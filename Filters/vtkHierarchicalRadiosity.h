@@ -385,6 +385,16 @@ protected:
   // After an update: the kept solver drops its lights and solution (without
   // ReuseGeometry, the solver itself).
   void ReleaseSolution();
+  // The scene, its solver and the hierarchy's solution, which every rank computes alike
+  // and alone.
+  struct Hierarchy
+  {
+    std::unique_ptr<vtkRadiosityScene> OwnScene; // where the kept solver did not take it
+    vtkRadiosityScene* Scene = nullptr;
+    terralux::HierarchicalRadiosity* Solver = nullptr;
+  };
+  // False where aborted. Throws terralux::Error on bad input.
+  bool SolveHierarchy(vtkInformationVector** inputVector, Hierarchy& hierarchy);
   // RequestData's work; throws terralux::Error on bad input.
   int Solve(vtkInformationVector** inputVector, const PieceRequest& piece, vtkDataObject* output,
     vtkPolyData* leafMesh, vtkPolyData* links);

@@ -1,5 +1,6 @@
 #include "vtkTerrainPieces.h"
 
+#include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
@@ -221,6 +222,12 @@ public:
     char* bytes = static_cast<char*>(data);
     for (std::size_t offset = 0; offset < size; offset += chunk)
       this->Controller->Broadcast(bytes + offset, static_cast<vtkIdType>(std::min(chunk, size - offset)), owner);
+  }
+  bool allSucceeded(bool succeeded) const override
+  {
+    int mine = succeeded ? 1 : 0, all = 0;
+    this->Controller->AllReduce(&mine, &all, 1, vtkCommunicator::MIN_OP);
+    return all == 1;
   }
 
 private:

@@ -119,7 +119,6 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return azimuths[a] < azimuths[b]; });
   this->PostCount = static_cast<std::size_t>(terrain.postsX()) * terrain.postsY();
-  this->Elevations.assign(this->PostCount * steps.size(), 0);
   const double det = this->Ux * this->Vy - this->Vx * this->Uy;
   for (std::size_t slot = 0; slot < order.size(); ++slot)
   {
@@ -127,13 +126,20 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
     this->Azimuths.push_back(a);
     this->AzimuthSteps.push_back({ (this->Vy * x - this->Vx * y) / det, (this->Ux * y - this->Uy * x) / det });
     this->AzimuthDirections.push_back({ x, y });
-    if (!split || split->owns(slot))
-      this->sweep(steps[order[slot]][0], steps[order[slot]][1], static_cast<int>(slot));
   }
-  if (split)
-    for (std::size_t slot = 0; slot < order.size(); ++slot)
-      split->share(&this->Elevations[slot * this->PostCount], this->PostCount * sizeof(std::uint16_t),
-        split->ownerOf(slot));
+  WorkSplit::partThenShare(
+    split,
+    [&]() {
+      this->Elevations.assign(this->PostCount * steps.size(), 0);
+      for (std::size_t slot = 0; slot < order.size(); ++slot)
+        if (!split || split->owns(slot))
+          this->sweep(steps[order[slot]][0], steps[order[slot]][1], static_cast<int>(slot));
+    },
+    [&]() {
+      for (std::size_t slot = 0; slot < order.size(); ++slot)
+        split->share(&this->Elevations[slot * this->PostCount], this->PostCount * sizeof(std::uint16_t),
+          split->ownerOf(slot));
+    });
 }
 
 bool HorizonMap::fits(const TerrainGrid& terrain, bool dense)

@@ -12,6 +12,7 @@
 #include "terrain_patch.h"
 #include "sampling.h"
 #include "visibility.h"
+#include "work_split.h"
 
 #include <tbb/parallel_for.h>
 
@@ -245,10 +246,20 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
 {
   if (!this->gathersAtPoints() || !this->PostHorizons || &root.grid() != this->HeightFieldGrid)
     return;
-  const TerrainGrid& grid = root.grid();
-  auto lattice = std::make_unique<PostLattice>(grid.postsX(), grid.postsY());
   this->Lattice.reset(); // its own posts gather from the leaves, with pilots
   this->Gather->setPostLattice(nullptr);
+  std::unique_ptr<PostLattice> lattice;
+  WorkSplit::partThenShare(
+    this->Split, [&]() { lattice = this->gatherLatticePosts(root, hornNormals); },
+    [&]() { lattice->shareRows(*this->Split); });
+  this->Lattice = std::move(lattice);
+  this->Gather->setPostLattice(this->Lattice.get());
+}
+
+std::unique_ptr<PostLattice> HierarchicalRadiosity::gatherLatticePosts(const TerrainPatch& root, bool hornNormals) const
+{
+  const TerrainGrid& grid = root.grid();
+  auto lattice = std::make_unique<PostLattice>(grid.postsX(), grid.postsY());
   const int step = lattice->step();
   tbb::parallel_for(0, (grid.postsY() - 1) / step + 1, [&](int lj) {
     if (!lattice->gathersRow(lj, this->Split))
@@ -275,10 +286,7 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
       lattice->set(i, j, gathered);
     }
   });
-  if (this->Split)
-    lattice->shareRows(*this->Split);
-  this->Lattice = std::move(lattice);
-  this->Gather->setPostLattice(this->Lattice.get());
+  return lattice;
 }
 
 void HierarchicalRadiosity::gatherLeaves(bool terrains)

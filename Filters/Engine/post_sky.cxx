@@ -21,31 +21,36 @@ PostSky::PostSky(
 {
   const int nx = terrain.postsX(), ny = terrain.postsY();
   const std::size_t posts = static_cast<std::size_t>(nx) * ny;
-  this->Values.assign(posts, {});
-  this->Used.assign(posts, 0);
   constexpr int rowsPerBlock = 16;
-  tbb::parallel_for(0, ny, [&](int j) {
-    if (split && !split->ownsRow(j, rowsPerBlock))
-      return;
-    for (int i = 0; i < nx; ++i)
-    {
-      if (!terrain.postUsed(i, j))
-        continue;
-      HorizonMap::Post post;
-      post.found = true;
-      post.index = static_cast<std::size_t>(j) * nx + i;
-      const Value value = at(post, terrain.normalAt(i, j, hornNormals), horizons, sky);
-      for (int band = 0; band < maxBands; ++band)
-        this->Values[post.index][band] = static_cast<float>(value.irradiance[band]);
-      this->Values[post.index][maxBands] = static_cast<float>(value.skyViewFactor);
-      this->Used[post.index] = 1;
-    }
-  });
-  if (split)
-    split->shareRows(ny, rowsPerBlock, [&](int j0, int rows, int owner) {
-      const std::size_t first = static_cast<std::size_t>(j0) * nx, count = static_cast<std::size_t>(rows) * nx;
-      split->share(&this->Values[first], count * sizeof(this->Values[0]), owner);
-      split->share(&this->Used[first], count * sizeof(this->Used[0]), owner);
+  WorkSplit::partThenShare(
+    split,
+    [&]() {
+      this->Values.assign(posts, {});
+      this->Used.assign(posts, 0);
+      tbb::parallel_for(0, ny, [&](int j) {
+        if (split && !split->ownsRow(j, rowsPerBlock))
+          return;
+        for (int i = 0; i < nx; ++i)
+        {
+          if (!terrain.postUsed(i, j))
+            continue;
+          HorizonMap::Post post;
+          post.found = true;
+          post.index = static_cast<std::size_t>(j) * nx + i;
+          const Value value = at(post, terrain.normalAt(i, j, hornNormals), horizons, sky);
+          for (int band = 0; band < maxBands; ++band)
+            this->Values[post.index][band] = static_cast<float>(value.irradiance[band]);
+          this->Values[post.index][maxBands] = static_cast<float>(value.skyViewFactor);
+          this->Used[post.index] = 1;
+        }
+      });
+    },
+    [&]() {
+      split->shareRows(ny, rowsPerBlock, [&](int j0, int rows, int owner) {
+        const std::size_t first = static_cast<std::size_t>(j0) * nx, count = static_cast<std::size_t>(rows) * nx;
+        split->share(&this->Values[first], count * sizeof(this->Values[0]), owner);
+        split->share(&this->Used[first], count * sizeof(this->Used[0]), owner);
+      });
     });
 }
 

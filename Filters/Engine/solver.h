@@ -156,7 +156,9 @@ public:
   /// and split what every one of them needs at every post: the horizons' map, the
   /// posts' skies (findPostHorizons, findSunHorizons) and the lattice
   /// (gatherPostLattice), each computing its share and receiving the others'. Every
-  /// process must then make these calls alike. Null (the default): this one alone.
+  /// process must then make these calls alike. A process whose share throws makes all
+  /// of them throw (WorkSplit::partThenShare), none is left waiting. Null (the
+  /// default): this one alone.
   void setWorkSplit(const WorkSplit* split) { this->Split = split; }
   static constexpr std::size_t sunsForHorizonMap = 48;
   /// From this many suns on (a few months of hours), the map is dense (64 azimuths):
@@ -245,6 +247,8 @@ private:
   /// rule, Testing/Reference): a post on the line of a house's wall is judged from
   /// outside the house, not from its dark inside.
   Vec3 openSideOf(const Vec3& point, const Vec3& inside, const Vec3& normal, std::uint64_t seed) const;
+  // The lattice's posts this process gathers (its share where the work is split).
+  std::unique_ptr<PostLattice> gatherLatticePosts(const TerrainPatch& root, bool hornNormals) const;
   /// Post (i, j), between gathered lattice posts that agree on the radiosity of the
   /// terrain they see, takes its light from surfaces from them and its sky from its
   /// horizons, without a gather: true, with `result` (its sun already in it) filled.

@@ -7,8 +7,11 @@
 // owner): the results equal one process's, bit for bit. The engine knows no MPI; the
 // VTK adapter passes its controller in.
 
+#include "error.h"
+
 #include <algorithm>
 #include <cstddef>
+#include <exception>
 
 namespace terralux
 {
@@ -21,6 +24,36 @@ public:
   virtual int parts() const = 0;
   /// Every process calls it alike: `owner`'s `size` bytes at `data` replace the others'.
   virtual void share(void* data, std::size_t size, int owner) const = 0;
+  /// Every process calls it alike: whether every process says `succeeded`.
+  virtual bool allSucceeded(bool succeeded) const = 0;
+
+  /// A step whose results every process needs: this process's part, then `share`. A
+  /// process whose part throws (out of memory, say, on one node) must not leave the
+  /// others waiting in a broadcast: every process learns it, and all of them throw.
+  template <typename Part, typename Share>
+  static void partThenShare(const WorkSplit* split, Part&& part, Share&& share)
+  {
+    if (!split)
+    {
+      part();
+      return;
+    }
+    std::exception_ptr failure;
+    try
+    {
+      part();
+    }
+    catch (...)
+    {
+      failure = std::current_exception();
+    }
+    const bool everyPart = split->allSucceeded(!failure);
+    if (failure)
+      std::rethrow_exception(failure);
+    if (!everyPart)
+      throw Error("another process failed in a step the processes share (see its error); this one stops too");
+    share();
+  }
 
   /// Blocks dealt in turn (neighbouring rows cost alike, so the shares balance).
   int ownerOf(std::size_t block) const { return static_cast<int>(block % static_cast<std::size_t>(this->parts())); }

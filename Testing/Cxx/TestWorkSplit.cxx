@@ -13,9 +13,13 @@
 #include "visibility.h"
 #include "work_split.h"
 
+#include "error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <array>
+#include <atomic>
 #include <condition_variable>
 #include <cstring>
 #include <functional>
@@ -61,6 +65,18 @@ public:
       }
       this->Ranks.meet();
     }
+    bool allSucceeded(bool succeeded) const override
+    {
+      if (!succeeded)
+        ++this->Ranks.Failures;
+      this->Ranks.meet();
+      const bool all = this->Ranks.Failures == 0;
+      this->Ranks.meet();
+      if (this->Part == 0)
+        this->Ranks.Failures = 0;
+      this->Ranks.meet();
+      return all;
+    }
     mutable int Shares = 0;
 
   private:
@@ -96,6 +112,7 @@ private:
   }
   int Parts;
   std::vector<char> Buffer;
+  std::atomic<int> Failures{ 0 };
   std::mutex Mutex;
   std::condition_variable Met;
   int Arrived = 0;
@@ -147,5 +164,40 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
         EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts << (dense ? ", dense" : "");
       });
     }
+  }
+}
+
+TEST(WorkSplit, OneFailedPartStopsEveryPartBeforeItShares)
+{
+  for (const int failing : { -1, 0, 2 })
+  {
+    ThreadRanks ranks(3);
+    std::array<std::string, 3> outcome;
+    ranks.run([&](const ThreadRanks::Split& split) {
+      std::vector<int> values(8, split.part() == 1 ? 7 : 0);
+      try
+      {
+        WorkSplit::partThenShare(
+          &split,
+          [&]() {
+            if (split.part() == failing)
+              throw std::bad_alloc();
+          },
+          [&]() { split.share(values.data(), values.size() * sizeof(int), 1); });
+        outcome[split.part()] = values == std::vector<int>(8, 7) ? "shared" : "wrong values";
+      }
+      catch (const std::bad_alloc&)
+      {
+        outcome[split.part()] = "own failure";
+      }
+      catch (const Error& error)
+      {
+        outcome[split.part()] = std::string(error.what()).find("another process") == 0 ? "other's failure" : error.what();
+      }
+      EXPECT_EQ(split.Shares, failing < 0 ? 1 : 0) << "part " << split.part();
+    });
+    for (int part = 0; part < 3; ++part)
+      EXPECT_EQ(outcome[part], failing < 0 ? "shared" : part == failing ? "own failure" : "other's failure")
+        << "part " << part << ", failing " << failing;
   }
 }

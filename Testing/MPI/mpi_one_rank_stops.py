@@ -1,0 +1,77 @@
+"""One rank stops, the others must not wait for it (run under mpirun, 2 or more ranks):
+
+  mpirun -np N /usr/bin/python3 mpi_one_rank_stops.py DEM
+
+Each rank updates its piece of vtkTerrainSource -> vtkHierarchicalRadiosity (sun and
+CIE clear sky). In the first update the last rank aborts its solve (a progress
+observer sets AbortExecute, as a GUI's cancel button would), so it never reaches the
+broadcasts of the horizons the ranks share: every rank must come back with an empty
+output (the others with an error naming the stopped rank), not hang. A second update,
+with no abort, must then give every rank its piece: no collective was left unmatched.
+"""
+import sys
+
+import terralux
+from terralux.irradiation import start_mpi
+
+
+def main(dem):
+    from mpi4py import MPI
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    controller = start_mpi()
+    rank, size = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
+    terrain = terralux.vtkTerrainSource()
+    terrain.SetFileName(dem)
+    sun = terralux.vtkSunSource()
+    sun.SetInputConnection(terrain.GetOutputPort())
+    sun.SetDateTime("2024-08-15T08:30:00-03:00")
+    sky = terralux.vtkSkySource()
+    sky.SetSunConnection(sun.GetOutputPort())
+    solver = terralux.vtkHierarchicalRadiosity()
+    solver.SetInputConnection(terrain.GetOutputPort())
+    solver.AddLightConnection(sun.GetOutputPort())
+    solver.AddLightConnection(sky.GetOutputPort(0))
+
+    errors = []
+    solver.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+    solver.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+    stopping = {"on": rank == size - 1}
+
+    def cancel(caller, event):
+        if stopping["on"] and caller.GetProgress() >= 0.1:
+            caller.SetAbortExecute(1)
+
+    solver.AddObserver(vtkCommand.ProgressEvent, cancel)
+    problems = []
+
+    solver.UpdatePiece(rank, size, 0)
+    first = solver.GetOutputDataObject(0)
+    if first.GetNumberOfPoints() != 0 or first.GetPointData().GetNumberOfArrays() != 0:
+        problems.append("the aborted update left %d posts" % first.GetNumberOfPoints())
+    if rank != size - 1 and not errors:
+        problems.append("no error reported while the last rank stopped")
+
+    stopping["on"] = False
+    solver.SetAbortExecute(0)
+    solver.Modified()
+    solver.UpdatePiece(rank, size, 0)
+    second = solver.GetOutputDataObject(0)
+    if second.GetNumberOfPoints() == 0 or not second.GetPointData().GetArray("Irradiance"):
+        problems.append("the next update gave no piece (%d posts)" % second.GetNumberOfPoints())
+
+    results = MPI.COMM_WORLD.gather((rank, problems), root=0)
+    if rank == 0:
+        failed = [(r, p) for r, p in results if p]
+        for r, p in failed:
+            print("rank %d: %s" % (r, "; ".join(p)))
+        print("%d ranks: the stopped rank's update ended on every rank, the next one solved" % size)
+        controller.Finalize(1)
+        sys.exit(1 if failed else 0)
+    controller.Finalize(1)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    main(sys.argv[1])
