@@ -119,10 +119,16 @@ void addPointArrays(vtkInformationVector* geometry, const terralux::Hierarchical
   {
     auto* dataSet = vtkDataSet::SafeDownCast(output);
     dataSet->ShallowCopy(scene.Inputs[0].data);
+    // Only the piece's posts; a terrain's piece cropped first, so that its arrays take
+    // the piece's memory (each rank's share of the whole grid's).
+    const bool cropFirst = pieceExtent && scene.Inputs[0].terrain >= 0;
     if (pieceExtent)
-      std::copy(pieceExtent, pieceExtent + 4, pointOptions.posts); // only the piece's posts
+      std::copy(pieceExtent, pieceExtent + 4, pointOptions.posts);
+    if (cropFirst)
+      vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), pieceExtent);
+    pointOptions.croppedToPosts = cropFirst;
     vtkRadiosityOutputs::AddPointArrays(solver, scene, 0, pointOptions, dataSet);
-    if (pieceExtent)
+    if (pieceExtent && !cropFirst)
       vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), pieceExtent);
   }
 }

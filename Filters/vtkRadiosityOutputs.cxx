@@ -119,9 +119,18 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   {
     if (const terralux::TerrainPatch* root = solver.terrainRoots()[input.terrain])
     {
-      const int all[4] = { 0, root->grid().postsX() - 1, 0, root->grid().postsY() - 1 };
-      terralux::terrainPostValues(solver, *root, options.allPosts() ? all : options.posts, how,
-        [&](std::size_t post, const terralux::PointValues& v) { arrays.set(static_cast<vtkIdType>(post), v); });
+      const int nx = root->grid().postsX();
+      const int all[4] = { 0, nx - 1, 0, root->grid().postsY() - 1 };
+      const int* posts = options.allPosts() ? all : options.posts;
+      const std::size_t pieceX = static_cast<std::size_t>(posts[1] - posts[0] + 1);
+      auto pointOf = [&](std::size_t post) {
+        if (!options.croppedToPosts)
+          return static_cast<vtkIdType>(post);
+        const std::size_t i = post % nx, j = post / nx;
+        return static_cast<vtkIdType>((j - posts[2]) * pieceX + (i - posts[0]));
+      };
+      terralux::terrainPostValues(solver, *root, posts, how,
+        [&](std::size_t post, const terralux::PointValues& v) { arrays.set(pointOf(post), v); });
     }
   }
   else

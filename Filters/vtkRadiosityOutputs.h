@@ -41,6 +41,9 @@ struct vtkRadiosityOutputs
     /// stay NaN. Default: all.
     int posts[4] = { 0, -1, 0, -1 };
     bool allPosts() const { return this->posts[1] < this->posts[0]; }
+    /// The output holds those posts only (a piece cropped first, so that its arrays
+    /// take the piece's memory, not the whole grid's), in grid order.
+    bool croppedToPosts = false;
   };
   /// Adds Irradiance, SunIrradiance, SkyIrradiance, ReflectedIrradiance and Radiosity
   /// (SkyViewFactor for a terrain lit by a sky, SunshineDuration if asked) to `output`, a shallow copy of
