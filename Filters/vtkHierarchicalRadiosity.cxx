@@ -480,7 +480,7 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   // Ranks that each evaluate their piece of one terrain split what all of them need at
   // every post (horizons, posts' skies, the lattice), each computing its share.
   const std::unique_ptr<terralux::WorkSplit> split =
-    piece.extent ? vtkTerrainPieces::SplitAmongRanks(piece.piece, piece.pieces) : nullptr;
+    piece.extent ? vtkTerrainPieces::SplitAmongRanks(piece.piece, piece.pieces, piece.extent) : nullptr;
   bool solved = false;
   std::exception_ptr failure;
   try

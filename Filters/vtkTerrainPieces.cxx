@@ -209,9 +209,15 @@ namespace
 class RankSplit : public terralux::WorkSplit
 {
 public:
-  explicit RankSplit(vtkMultiProcessController* controller)
+  // Collective: every rank gives its piece's extent.
+  RankSplit(vtkMultiProcessController* controller, const int extent[6])
     : Controller(controller)
   {
+    const int own[4] = { extent[0], extent[1], extent[2], extent[3] };
+    std::vector<int> all(4 * static_cast<std::size_t>(controller->GetNumberOfProcesses()));
+    controller->AllGather(own, all.data(), 4);
+    for (std::size_t k = 0; k < all.size(); k += 4)
+      this->Windows.push_back({ all[k], all[k + 1], all[k + 2], all[k + 3] });
   }
   int part() const override { return this->Controller->GetLocalProcessId(); }
   int parts() const override { return this->Controller->GetNumberOfProcesses(); }
@@ -223,6 +229,7 @@ public:
     for (std::size_t offset = 0; offset < size; offset += chunk)
       this->Controller->Broadcast(bytes + offset, static_cast<vtkIdType>(std::min(chunk, size - offset)), owner);
   }
+  Window window(int part) const override { return this->Windows[static_cast<std::size_t>(part)]; }
   bool allSucceeded(bool succeeded) const override
   {
     int mine = succeeded ? 1 : 0, all = 0;
@@ -232,14 +239,15 @@ public:
 
 private:
   vtkMultiProcessController* Controller;
+  std::vector<Window> Windows;
 };
 } // namespace
 
-std::unique_ptr<terralux::WorkSplit> vtkTerrainPieces::SplitAmongRanks(int piece, int pieces)
+std::unique_ptr<terralux::WorkSplit> vtkTerrainPieces::SplitAmongRanks(int piece, int pieces, const int extent[6])
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   if (!controller || pieces < 2 || controller->GetNumberOfProcesses() != pieces ||
     controller->GetLocalProcessId() != piece)
     return nullptr;
-  return std::make_unique<RankSplit>(controller);
+  return std::make_unique<RankSplit>(controller, extent);
 }

@@ -30,9 +30,10 @@ struct vtkTerrainPieces
   /// field data (GeoTransform, RasterSize) describe the piece.
   static void CropToPiece(vtkStructuredGrid* terrain, const int extent[6]);
   /// The global controller's ranks as a terralux::WorkSplit (broadcasts from each
-  /// block's owner), where the `pieces` pieces asked for are one per rank and this rank
-  /// asks for its own, `piece`; null otherwise (one process, or pieces streamed by one).
-  static std::unique_ptr<terralux::WorkSplit> SplitAmongRanks(int piece, int pieces);
+  /// share's rank; each rank's window its piece's posts, `extent`), where the `pieces`
+  /// pieces asked for are one per rank and this rank asks for its own, `piece`; null
+  /// otherwise (one process, or pieces streamed by one). Collective where it splits.
+  static std::unique_ptr<terralux::WorkSplit> SplitAmongRanks(int piece, int pieces, const int extent[6]);
 };
 
 #endif

@@ -127,19 +127,60 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
     this->AzimuthSteps.push_back({ (this->Vy * x - this->Vx * y) / det, (this->Ux * y - this->Uy * x) / det });
     this->AzimuthDirections.push_back({ x, y });
   }
-  WorkSplit::partThenShare(
-    split,
-    [&]() {
-      this->Elevations.assign(this->PostCount * steps.size(), 0);
-      for (std::size_t slot = 0; slot < order.size(); ++slot)
-        if (!split || split->owns(slot))
-          this->sweep(steps[order[slot]][0], steps[order[slot]][1], static_cast<int>(slot));
-    },
-    [&]() {
-      for (std::size_t slot = 0; slot < order.size(); ++slot)
-        split->share(&this->Elevations[slot * this->PostCount], this->PostCount * sizeof(std::uint16_t),
-          split->ownerOf(slot));
-    });
+  const int nx = terrain.postsX(), ny = terrain.postsY();
+  this->Held = { 0, nx - 1, 0, ny - 1 };
+  if (split)
+  {
+    const WorkSplit::Window own = split->window(split->part());
+    this->Held = { std::max(0, own.i0), std::min(nx - 1, own.i1), std::max(0, own.j0), std::min(ny - 1, own.j1) };
+    if (this->Held.i1 < this->Held.i0 || this->Held.j1 < this->Held.j0)
+      this->Held = { 0, -1, 0, -1 };
+  }
+  this->HeldX = static_cast<std::size_t>(this->Held.i1 - this->Held.i0 + 1);
+  this->HeldCount = this->HeldX * static_cast<std::size_t>(this->Held.j1 - this->Held.j0 + 1);
+  this->HoldsAll = this->HeldCount == this->PostCount;
+  const std::size_t slots = order.size();
+  if (!split)
+  {
+    this->Elevations.assign(this->HeldCount * slots, 0);
+    for (std::size_t slot = 0; slot < slots; ++slot)
+      this->sweep(steps[order[slot]][0], steps[order[slot]][1], &this->Elevations[slot * this->PostCount]);
+    return;
+  }
+  // Processes sweep an azimuth each at a time, at every post (the lines cross the
+  // whole grid), and each keeps its window of every azimuth it receives: the map per
+  // process is its window's, plus two azimuths of the whole grid in flight.
+  std::vector<std::uint16_t> swept, received;
+  const int parts = split->parts(), part = split->part();
+  for (std::size_t first = 0; first < slots; first += static_cast<std::size_t>(parts))
+    WorkSplit::partThenShare(
+      split,
+      [&]() {
+        if (this->Elevations.empty())
+          this->Elevations.assign(this->HeldCount * slots, 0), received.resize(this->PostCount);
+        const std::size_t slot = first + static_cast<std::size_t>(part);
+        if (slot < slots)
+        {
+          swept.assign(this->PostCount, 0);
+          this->sweep(steps[order[slot]][0], steps[order[slot]][1], swept.data());
+        }
+      },
+      [&]() {
+        for (int owner = 0; owner < parts && first + static_cast<std::size_t>(owner) < slots; ++owner)
+        {
+          const std::size_t slot = first + static_cast<std::size_t>(owner);
+          std::vector<std::uint16_t>& whole = owner == part ? swept : received;
+          split->share(whole.data(), this->PostCount * sizeof(std::uint16_t), owner);
+          for (int j = this->Held.j0; j <= this->Held.j1; ++j)
+            std::copy_n(&whole[static_cast<std::size_t>(j) * nx + this->Held.i0], this->HeldX,
+              &this->Elevations[slot * this->HeldCount + (j - this->Held.j0) * this->HeldX]);
+        }
+      });
+}
+
+std::size_t HorizonMap::postsX() const
+{
+  return static_cast<std::size_t>(this->Terrain.postsX());
 }
 
 bool HorizonMap::fits(const TerrainGrid& terrain, bool dense)
@@ -174,7 +215,7 @@ void HorizonMap::fitMeanMap()
   this->Y0 = (sy - this->Uy * si - this->Vy * sj) / n;
 }
 
-void HorizonMap::sweep(int q, int p, int slot)
+void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
 {
   const TerrainGrid& t = this->Terrain;
   const int nx = t.postsX(), ny = t.postsY();
@@ -279,8 +320,7 @@ void HorizonMap::sweep(int q, int p, int slot)
             {
               // Rounded to the nearest (a positive value: + 0.5, truncated).
               const double quantised = atanOfPositive(tangent) / (0.5 * pi) * 65535.0 + 0.5;
-              this->Elevations[slot * this->PostCount + static_cast<std::size_t>(j) * nx + i] =
-                static_cast<std::uint16_t>(std::min(65535.0, quantised));
+              out[static_cast<std::size_t>(j) * nx + i] = static_cast<std::uint16_t>(std::min(65535.0, quantised));
             }
           }
           hull.push_back({ x, z });
@@ -412,7 +452,7 @@ HorizonMap::Sight HorizonMap::sight(double azimuth, double elevation) const
 
 HorizonMap::View::View(const HorizonMap& map, const Post& post)
   : Map(map)
-  , At(post)
+  , Cell(map.cellOf(post))
   , I(static_cast<int>(post.index % static_cast<std::size_t>(map.Terrain.postsX())))
   , J(static_cast<int>(post.index / static_cast<std::size_t>(map.Terrain.postsX())))
   , Count(map.azimuthCount())
@@ -511,7 +551,7 @@ HorizonMap::Post HorizonMap::find(const Vec3& point) const
   for (int j = std::max(0, jc - 1); j <= std::min(t.postsY() - 1, jc + 1); ++j)
     for (int i = std::max(0, ic - 1); i <= std::min(t.postsX() - 1, ic + 1); ++i)
       if (glm::length(t.post(i, j) - point) <= tolerance && t.postUsed(i, j))
-        return { true, static_cast<std::size_t>(j) * t.postsX() + i };
+        return this->holds(i, j) ? Post{ true, static_cast<std::size_t>(j) * t.postsX() + i } : Post{};
   return {};
 }
 

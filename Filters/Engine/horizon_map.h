@@ -38,7 +38,8 @@ public:
   /// fewer suns near a post's horizon need a ray (a year's on the 1025^2 fractal: 449 M
   /// rays instead of 679 M), for 2.4 times the sweep's work.
   /// `split`: processes that each sweep their share of the azimuths and send it to the
-  /// others (all of them build the map together; null: this one alone).
+  /// others (all of them build the map together; null: this one alone); each keeps the
+  /// horizons of its own window of posts only (holds).
   explicit HorizonMap(const TerrainGrid& terrain, bool dense = false, const WorkSplit* split = nullptr);
   static constexpr int standardAzimuths = 32, maximumAzimuths = 64; // dense: the maximum
   int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
@@ -54,16 +55,32 @@ public:
     std::size_t index = 0; ///< j * postsX + i
     explicit operator bool() const { return this->found; }
   };
-  /// The post at `point` (within a hundredth of a cell), or none.
+  /// The post at `point` (within a hundredth of a cell) whose horizons the map holds,
+  /// or none.
   Post find(const Vec3& point) const;
+  /// Whether the map holds the horizons of post (i, j): every post, or with a split
+  /// this process's window.
+  bool holds(int i, int j) const
+  {
+    return i >= this->Held.i0 && i <= this->Held.i1 && j >= this->Held.j0 && j <= this->Held.j1;
+  }
 
   /// The azimuths: radians counter-clockwise from +x, increasing, in [0, 2 pi).
   const std::vector<double>& azimuths() const { return this->Azimuths; }
   /// The horizon's elevation at a post toward azimuth a (radians, 0 where nothing
   /// rises above the horizontal), to 2.4e-5 rad.
-  double elevation(const Post& post, int a) const
+  double elevation(const Post& post, int a) const { return this->elevationAt(this->cellOf(post), a); }
+  /// Where a post's horizons lie in the map (its window's order), for elevationAt.
+  std::size_t cellOf(const Post& post) const
   {
-    return this->Elevations[a * this->PostCount + post.index] * (0.5 * pi / 65535.0);
+    if (this->HoldsAll)
+      return post.index;
+    const std::size_t nx = this->postsX(), i = post.index % nx, j = post.index / nx;
+    return (j - this->Held.j0) * this->HeldX + (i - this->Held.i0);
+  }
+  double elevationAt(std::size_t cell, int a) const
+  {
+    return this->Elevations[a * this->HeldCount + cell] * (0.5 * pi / 65535.0);
   }
 
   /// A direction between two of the map's azimuths: the one below it (k) and how far
@@ -142,7 +159,7 @@ public:
     {
       if (!(this->Read >> k & 1u))
       {
-        this->Elevations[k] = static_cast<float>(this->Map.elevation(this->At, k));
+        this->Elevations[k] = static_cast<float>(this->Map.elevationAt(this->Cell, k));
         this->Read |= std::uint64_t{ 1 } << k;
       }
       return this->Elevations[k];
@@ -152,8 +169,8 @@ public:
     Reach& reach(int k);
     double pastLeast(int k);
     const HorizonMap& Map;
-    Post At;
-    int I, J; // the post's grid indices
+    std::size_t Cell; // where the map keeps the post's horizons
+    int I, J;         // the post's grid indices
     int Count;
     double Margin; // proofMargin(), or +inf where the map proves nothing
     std::array<float, maximumAzimuths> Elevations, Tangents;
@@ -167,7 +184,9 @@ public:
 
 private:
   void fitMeanMap();
-  void sweep(int q, int p, int slot);
+  /// One azimuth's horizons at every post, into `out` (grid order, zeros first).
+  void sweep(int q, int p, std::uint16_t* out) const;
+  std::size_t postsX() const;
 
   const TerrainGrid& Terrain;
   /// The mean affine map from parameters to xy: x = X0 + Ux u + Vx v, and so on.
@@ -193,8 +212,14 @@ private:
   /// A metre along each azimuth in grid parameters (the mean map inverted).
   std::vector<std::array<double, 2>> AzimuthSteps;
   std::vector<std::array<double, 2>> AzimuthDirections; // (cos, sin) of each
-  /// Azimuth by azimuth, each azimuth's posts in order; elevation / (pi / 2) x 65535.
+  /// Azimuth by azimuth, the held posts in order; elevation / (pi / 2) x 65535.
   std::vector<std::uint16_t> Elevations;
   std::size_t PostCount = 0;
+  struct Window
+  {
+    int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+  } Held;                    // the posts whose horizons are kept
+  std::size_t HeldX = 0, HeldCount = 0;
+  bool HoldsAll = true;
 };
 } // namespace terralux

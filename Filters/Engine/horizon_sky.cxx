@@ -370,10 +370,11 @@ void HorizonSky::mapHorizons(const HorizonMap::Post& post, const Vec3& normal, M
   std::array<bool, HorizonMap::maximumAzimuths>& rises) const
 {
   const std::vector<SinCos>& directions = this->MapTable.directions;
+  const std::size_t cell = this->Map->cellOf(post);
   for (std::size_t a = 0; a < directions.size(); ++a)
   {
     const double lower = lowerBound(normal, directions[a]);
-    const double horizon = this->Map->elevation(post, static_cast<int>(a));
+    const double horizon = this->Map->elevationAt(cell, static_cast<int>(a));
     rises[a] = horizon > lower;
     elevations[a] = std::max(lower, horizon);
   }

@@ -251,7 +251,7 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
   std::unique_ptr<PostLattice> lattice;
   WorkSplit::partThenShare(
     this->Split, [&]() { lattice = this->gatherLatticePosts(root, hornNormals); },
-    [&]() { lattice->shareRows(*this->Split); });
+    [&]() { lattice->share(*this->Split); });
   this->Lattice = std::move(lattice);
   this->Gather->setPostLattice(this->Lattice.get());
 }
@@ -262,11 +262,11 @@ std::unique_ptr<PostLattice> HierarchicalRadiosity::gatherLatticePosts(const Ter
   auto lattice = std::make_unique<PostLattice>(grid.postsX(), grid.postsY());
   const int step = lattice->step();
   tbb::parallel_for(0, (grid.postsY() - 1) / step + 1, [&](int lj) {
-    if (!lattice->gathersRow(lj, this->Split))
-      return;
     const int j = lj * step;
     for (int i = 0; i < grid.postsX(); i += step)
     {
+      if (!PostLattice::gathers(i, j, this->Split))
+        continue;
       const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
       if (!leaf)
         continue;

@@ -38,14 +38,11 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   this->PerTerrain[k] = scaled;
 }
 
-void PostLattice::shareRows(const WorkSplit& split)
+void PostLattice::share(const WorkSplit& split)
 {
-  split.shareRows(this->Ny, rowsPerBlock, [&](int lj0, int rows, int owner) {
-    const std::size_t first = this->index(0, lj0), count = static_cast<std::size_t>(rows) * this->Nx;
-    split.share(&this->Reflected[first], count * sizeof(this->Reflected[0]), owner);
-    split.share(&this->Variance[first], count * sizeof(this->Variance[0]), owner);
-    split.share(&this->PerTerrain[first], count * sizeof(this->PerTerrain[0]), owner);
-  });
+  split.shareWindows(this->Reflected, this->Nx, this->Ny, this->Step);
+  split.shareWindows(this->Variance, this->Nx, this->Ny, this->Step);
+  split.shareWindows(this->PerTerrain, this->Nx, this->Ny, this->Step);
 }
 
 PostLattice::Around PostLattice::around(int i, int j) const

@@ -40,14 +40,14 @@ public:
   };
   /// Records a lattice post's gather (from any thread, each post once).
   void set(int i, int j, const Gathered& gathered);
-  /// With `split`, which lattice rows this process gathers (blocks of rowsPerBlock),
-  /// and, once each has gathered its own, every block received from its owner.
-  static constexpr int rowsPerBlock = 4;
-  bool gathersRow(int latticeRow, const WorkSplit* split) const
+  /// With `split`, whether this process gathers lattice post (i, j): those of its
+  /// window; and, once each has gathered its own, every window's received from its
+  /// process.
+  static bool gathers(int i, int j, const WorkSplit* split)
   {
-    return !split || split->ownsRow(latticeRow, rowsPerBlock);
+    return !split || split->window(split->part()).holds(i, j);
   }
-  void shareRows(const WorkSplit& split);
+  void share(const WorkSplit& split);
 
   /// The largest variance at a corner of the lattice cell holding post (i, j); -1
   /// where none is known.

@@ -21,16 +21,18 @@ PostSky::PostSky(
 {
   const int nx = terrain.postsX(), ny = terrain.postsY();
   const std::size_t posts = static_cast<std::size_t>(nx) * ny;
-  constexpr int rowsPerBlock = 16;
+  // With a split, each process finds the skies of its window's posts (whose horizons
+  // it holds), and gets the others' (gather rays read them wherever they land).
+  WorkSplit::Window own{ 0, nx - 1, 0, ny - 1 };
+  if (split)
+    own = split->window(split->part());
   WorkSplit::partThenShare(
     split,
     [&]() {
       this->Values.assign(posts, {});
       this->Used.assign(posts, 0);
-      tbb::parallel_for(0, ny, [&](int j) {
-        if (split && !split->ownsRow(j, rowsPerBlock))
-          return;
-        for (int i = 0; i < nx; ++i)
+      tbb::parallel_for(std::max(0, own.j0), std::min(ny - 1, own.j1) + 1, [&](int j) {
+        for (int i = std::max(0, own.i0); i <= std::min(nx - 1, own.i1); ++i)
         {
           if (!terrain.postUsed(i, j))
             continue;
@@ -46,11 +48,8 @@ PostSky::PostSky(
       });
     },
     [&]() {
-      split->shareRows(ny, rowsPerBlock, [&](int j0, int rows, int owner) {
-        const std::size_t first = static_cast<std::size_t>(j0) * nx, count = static_cast<std::size_t>(rows) * nx;
-        split->share(&this->Values[first], count * sizeof(this->Values[0]), owner);
-        split->share(&this->Used[first], count * sizeof(this->Used[0]), owner);
-      });
+      split->shareWindows(this->Values, nx, ny);
+      split->shareWindows(this->Used, nx, ny);
     });
 }
 

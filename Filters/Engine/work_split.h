@@ -1,17 +1,19 @@
 #pragma once
 // How processes that solve the same scene (MPI ranks, each evaluating its own piece of
-// a terrain) split work whose results every one of them needs: the horizons of every
-// post, their skies and the lattice's gathers, which gather rays read wherever they
-// land. Each value is computed the same way whoever computes it, so each process takes
-// its share of blocks and then receives the others' (a broadcast from each block's
-// owner): the results equal one process's, bit for bit. The engine knows no MPI; the
-// VTK adapter passes its controller in.
+// a terrain, its window) split work whose results every one of them needs: the posts'
+// skies and the lattice's gathers, which gather rays read wherever they land, and the
+// horizons' sweeps, which cross the whole grid. Each value is computed the same way
+// whoever computes it, so each process computes its share (its window's posts, its
+// azimuths) and then receives the others' (a broadcast from each share's process): the
+// results equal one process's, bit for bit. The engine knows no MPI; the VTK adapter
+// passes its controller in.
 
 #include "error.h"
 
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <vector>
 
 namespace terralux
 {
@@ -24,6 +26,44 @@ public:
   virtual int parts() const = 0;
   /// Every process calls it alike: `owner`'s `size` bytes at `data` replace the others'.
   virtual void share(void* data, std::size_t size, int owner) const = 0;
+  /// The posts a process evaluates (its piece: grid indices, inclusive; neighbouring
+  /// pieces may share their border posts). What is needed only there (the posts'
+  /// horizons) each process keeps for its own window alone.
+  struct Window
+  {
+    int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+    bool holds(int i, int j) const { return i >= this->i0 && i <= this->i1 && j >= this->j0 && j <= this->j1; }
+  };
+  virtual Window window(int part) const = 0;
+  /// Once each process has computed `values` at the posts of its window (one value per
+  /// post of an nx x ny grid, in grid order; or, with `step`, per post of a lattice of
+  /// every step-th post each way, nx x ny of them): every window's values, from its
+  /// process. Where windows share posts, each computed them alike.
+  template <typename T>
+  void shareWindows(std::vector<T>& values, int nx, int ny, int step = 1) const
+  {
+    std::vector<T> packed;
+    for (int owner = 0; owner < this->parts(); ++owner)
+    {
+      const Window w = this->window(owner);
+      auto first = [step](int post) { return post <= 0 ? 0 : (post + step - 1) / step; };
+      const int i0 = first(w.i0), i1 = std::min(nx - 1, w.i1 < 0 ? -1 : w.i1 / step);
+      const int j0 = first(w.j0), j1 = std::min(ny - 1, w.j1 < 0 ? -1 : w.j1 / step);
+      if (i1 < i0 || j1 < j0)
+        continue;
+      const std::size_t width = static_cast<std::size_t>(i1 - i0 + 1);
+      packed.resize(width * static_cast<std::size_t>(j1 - j0 + 1));
+      auto row = [&](int j) { return values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(j) * nx + i0); };
+      auto packedRow = [&](int j) { return packed.begin() + static_cast<std::ptrdiff_t>((j - j0) * width); };
+      if (owner == this->part())
+        for (int j = j0; j <= j1; ++j)
+          std::copy_n(row(j), width, packedRow(j));
+      this->share(packed.data(), packed.size() * sizeof(T), owner);
+      if (owner != this->part())
+        for (int j = j0; j <= j1; ++j)
+          std::copy_n(packedRow(j), width, row(j));
+    }
+  }
   /// Every process calls it alike: whether every process says `succeeded`.
   virtual bool allSucceeded(bool succeeded) const = 0;
 
@@ -53,20 +93,6 @@ public:
     if (!everyPart)
       throw Error("another process failed in a step the processes share (see its error); this one stops too");
     share();
-  }
-
-  /// Blocks dealt in turn (neighbouring rows cost alike, so the shares balance).
-  int ownerOf(std::size_t block) const { return static_cast<int>(block % static_cast<std::size_t>(this->parts())); }
-  bool owns(std::size_t block) const { return this->ownerOf(block) == this->part(); }
-  /// Rows dealt in blocks of `rowsPerBlock`: whether this process computes `row`.
-  bool ownsRow(int row, int rowsPerBlock) const { return this->owns(static_cast<std::size_t>(row / rowsPerBlock)); }
-  /// Once each process has computed its rows: send(firstRow, rowCount, owner) for every
-  /// block of the `rows`, in the same order everywhere (send calls share).
-  template <typename Send>
-  void shareRows(int rows, int rowsPerBlock, Send&& send) const
-  {
-    for (int first = 0; first < rows; first += rowsPerBlock)
-      send(first, std::min(rowsPerBlock, rows - first), this->ownerOf(static_cast<std::size_t>(first / rowsPerBlock)));
   }
 };
 } // namespace terralux

@@ -1,6 +1,7 @@
 // Work split between processes (work_split.h), with threads standing in for MPI ranks:
 // each builds the horizons' map and the posts' skies from its share and the others'
-// broadcasts, and must hold what one process alone finds, bit for bit.
+// broadcasts, and must hold what one process alone finds, bit for bit: the posts' skies
+// everywhere, the horizons in its own window of posts (a band of rows) only.
 
 #include "angles.h"
 #include "cie_sky.h"
@@ -23,6 +24,7 @@
 #include <condition_variable>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -38,9 +40,13 @@ namespace
 class ThreadRanks
 {
 public:
-  explicit ThreadRanks(int parts)
+  /// `parts` bands of the rows of a grid `rows` posts high, neighbours sharing a row
+  /// (as VTK's pieces do).
+  ThreadRanks(int parts, int rows = 1)
     : Parts(parts)
   {
+    for (int p = 0; p < parts; ++p)
+      this->Windows.push_back({ 0, std::numeric_limits<int>::max(), p * (rows - 1) / parts, (p + 1) * (rows - 1) / parts });
   }
   class Split : public WorkSplit
   {
@@ -52,6 +58,7 @@ public:
     }
     int part() const override { return this->Part; }
     int parts() const override { return this->Ranks.Parts; }
+    Window window(int part) const override { return this->Ranks.Windows[static_cast<std::size_t>(part)]; }
     void share(void* data, std::size_t size, int owner) const override
     {
       ++this->Shares;
@@ -111,6 +118,7 @@ private:
       this->Met.wait(lock, [&]() { return this->Generation != generation; });
   }
   int Parts;
+  std::vector<WorkSplit::Window> Windows;
   std::vector<char> Buffer;
   std::atomic<int> Failures{ 0 };
   std::mutex Mutex;
@@ -138,12 +146,13 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
     const PostSky aloneSkies(*grid, aloneSky, open, true);
     for (const int parts : { 2, 3 })
     {
-      ThreadRanks ranks(parts);
+      ThreadRanks ranks(parts, grid->postsY());
       ranks.run([&](const ThreadRanks::Split& split) {
         const HorizonMap map(*grid, dense, &split);
         const int sweeps = split.Shares;
         // Every azimuth sent once, from its owner.
         EXPECT_EQ(sweeps, map.azimuthCount());
+        const WorkSplit::Window own = split.window(split.part());
         const HorizonSky mapped(rays, open, &map);
         const PostSky skies(*grid, mapped, open, true, &split);
         EXPECT_GT(split.Shares, sweeps); // the skies' rows too
@@ -152,7 +161,11 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
           for (int i = 0; i < grid->postsX(); ++i)
           {
             const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * grid->postsX() + i };
-            for (int a = 0; a < map.azimuthCount(); ++a)
+            // The map holds its window's posts only, and finds no other.
+            const bool held = own.holds(i, j);
+            differences += map.holds(i, j) != held;
+            differences += static_cast<bool>(map.find(grid->post(i, j))) != held;
+            for (int a = 0; held && a < map.azimuthCount(); ++a)
               differences += map.elevation(post, a) != alone.elevation(post, a);
             PostSky::Value value, expected;
             const Vec3 normal = grid->normalAt(i, j, true);
