@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -53,22 +54,33 @@ void setGeoreference(vtkFieldData* fieldData, const terralux::GeoTransform& tran
   fieldData->AddArray(rasterSize);
 }
 
-// What a piece sends: a table of its point arrays (one row per post) with its numeric
-// field data and its extent (`PieceExtent`), no points. A table, because the legacy
-// format the controller sends data sets in keeps neither an image's extent in
-// ParaView (its images are uniform grids, which it cannot write) nor strings with
-// spaces (the CRS's WKT: the root takes that from its own piece).
-vtkSmartPointer<vtkTable> packetOf(vtkDataSet* piece)
+// What a piece tells the root first: a table of one-row columns named and typed as its
+// point arrays, with its numeric field data and its extent (`PieceExtent`), no points;
+// the arrays' values follow one array at a time (sent as they are, no copy). A table,
+// because the legacy format the controller sends data objects in keeps neither an
+// image's extent in ParaView (its images are uniform grids, which it cannot write) nor
+// strings with spaces (the CRS's WKT: the root takes that from its own piece). Empty
+// where the piece has no georeferenced posts.
+vtkSmartPointer<vtkTable> packetOf(vtkDataSet* piece, std::vector<vtkDataArray*>& arrays)
 {
   auto packet = vtkSmartPointer<vtkTable>::New();
   auto* grid = vtkStructuredGrid::SafeDownCast(piece);
   terralux::GeoTransform unused;
   if (!grid || grid->GetNumberOfPoints() == 0 || !transformOf(grid->GetFieldData(), unused))
-    return packet; // empty
+    return packet;
   vtkPointData* pointData = grid->GetPointData();
   for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
     if (vtkDataArray* array = pointData->GetArray(k); array && array->GetName())
-      packet->AddColumn(array);
+    {
+      vtkSmartPointer<vtkDataArray> column;
+      column.TakeReference(array->NewInstance());
+      column->SetName(array->GetName());
+      column->SetNumberOfComponents(array->GetNumberOfComponents());
+      column->SetNumberOfTuples(1); // the legacy format drops a table without rows
+      column->Fill(0.0);
+      packet->AddColumn(column);
+      arrays.push_back(array);
+    }
   vtkFieldData* fieldData = grid->GetFieldData();
   for (int k = 0; k < fieldData->GetNumberOfArrays(); ++k)
     if (vtkDataArray* array = fieldData->GetArray(k))
@@ -81,35 +93,63 @@ vtkSmartPointer<vtkTable> packetOf(vtkDataSet* piece)
   return packet;
 }
 
-// A received piece: its extent and its arrays.
+// A piece the root assembles: its extent, its arrays' names and types (the packet's
+// columns) and the rank that sends their values.
 struct Piece
 {
   int extent[6];
   vtkTable* table;
-  vtkDataArray* column(const char* name) const { return vtkDataArray::SafeDownCast(this->table->GetColumnByName(name)); }
+  int rank;
 };
 } // namespace
 
 vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
   vtkMultiProcessController* controller, vtkDataSet* piece, int root)
 {
+  // First the small packets, then each piece's arrays, one rank and one array at a
+  // time: the root holds the whole grid and one array in flight, the others nothing
+  // more than their piece.
+  std::vector<vtkDataArray*> ownArrays;
+  const vtkSmartPointer<vtkTable> packet = packetOf(piece, ownArrays);
   std::vector<vtkSmartPointer<vtkDataObject>> received;
-  controller->Gather(packetOf(piece), received, root);
+  controller->Gather(packet, received, root);
+  constexpr int valuesTag = 47113;
   if (controller->GetLocalProcessId() != root)
+  {
+    for (vtkDataArray* array : ownArrays)
+      controller->Send(array, root, valuesTag);
     return nullptr;
+  }
 
   std::vector<Piece> pieces;
-  for (const auto& object : received)
+  for (int rank = 0; rank < static_cast<int>(received.size()); ++rank)
   {
-    auto* table = vtkTable::SafeDownCast(object);
+    auto* table = vtkTable::SafeDownCast(received[rank]);
     vtkDataArray* extent = table ? table->GetFieldData()->GetArray("PieceExtent") : nullptr;
-    if (!extent || extent->GetNumberOfValues() != 6 || table->GetNumberOfRows() == 0)
+    if (!extent || extent->GetNumberOfValues() != 6)
       continue;
-    Piece piece{ {}, table };
+    Piece piece{ {}, table, rank };
     for (int k = 0; k < 6; ++k)
       piece.extent[k] = static_cast<int>(extent->GetComponent(k, 0));
     pieces.push_back(piece);
   }
+  // A piece's arrays, in its packet's order: the root's own as they are, the others' as
+  // they arrive.
+  auto receiveEach = [&](const Piece& p, const std::function<void(vtkDataArray* model, vtkDataArray* values)>& use) {
+    for (vtkIdType a = 0; a < p.table->GetNumberOfColumns(); ++a)
+    {
+      auto* model = vtkDataArray::SafeDownCast(p.table->GetColumn(a));
+      if (p.rank == root)
+      {
+        use(model, ownArrays[static_cast<std::size_t>(a)]);
+        continue;
+      }
+      vtkSmartPointer<vtkDataArray> values;
+      values.TakeReference(model->NewInstance());
+      controller->Receive(values, p.rank, valuesTag);
+      use(model, values);
+    }
+  };
   if (pieces.empty())
     return nullptr;
   int whole[6] = { VTK_INT_MAX, VTK_INT_MIN, VTK_INT_MAX, VTK_INT_MIN, 0, 0 };
@@ -156,27 +196,26 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
   {
     const int* e = p.extent;
     const int width = e[1] - e[0] + 1;
-    vtkDataArray* pieceGhosts = p.column(vtkDataSetAttributes::GhostArrayName());
-    std::vector<std::pair<vtkDataArray*, vtkDataArray*>> copies; // (whole, piece)
-    for (int a = 0; a < result->GetPointData()->GetNumberOfArrays(); ++a)
-    {
-      vtkDataArray* target = result->GetPointData()->GetArray(a);
-      if (vtkDataArray* source = p.column(target->GetName()))
-        copies.emplace_back(target, source);
-    }
     // Each row of a piece is a run of posts in the whole grid too.
-    for (int j = e[2]; j <= e[3]; ++j)
-    {
-      const vtkIdType from = static_cast<vtkIdType>(j - e[2]) * width;
-      const vtkIdType to = (e[0] - whole[0]) + static_cast<vtkIdType>(j - whole[2]) * nx;
-      for (const auto& [target, source] : copies)
-        target->InsertTuples(to, width, from, source);
-      for (int i = 0; i < width; ++i)
+    receiveEach(p, [&](vtkDataArray* model, vtkDataArray* values) {
+      const bool ghost = std::strcmp(model->GetName(), vtkDataSetAttributes::GhostArrayName()) == 0;
+      vtkDataArray* target = ghost ? nullptr : result->GetPointData()->GetArray(model->GetName());
+      for (int j = e[2]; j <= e[3]; ++j)
       {
-        const auto ghost = pieceGhosts ? static_cast<unsigned char>(pieceGhosts->GetComponent(from + i, 0)) : 0;
-        ghosts->SetValue(to + i, ghost & vtkDataSetAttributes::HIDDENPOINT);
+        const vtkIdType from = static_cast<vtkIdType>(j - e[2]) * width;
+        const vtkIdType to = (e[0] - whole[0]) + static_cast<vtkIdType>(j - whole[2]) * nx;
+        if (target && target->GetNumberOfComponents() == values->GetNumberOfComponents())
+          target->InsertTuples(to, width, from, values);
+        if (ghost)
+          for (int i = 0; i < width; ++i)
+            ghosts->SetValue(
+              to + i, static_cast<unsigned char>(values->GetComponent(from + i, 0)) & vtkDataSetAttributes::HIDDENPOINT);
       }
-    }
+    });
+    // Posts of a piece without a ghost array are all shown.
+    if (!p.table->GetColumnByName(vtkDataSetAttributes::GhostArrayName()))
+      for (int j = e[2]; j <= e[3]; ++j)
+        std::fill_n(ghosts->GetPointer((e[0] - whole[0]) + static_cast<vtkIdType>(j - whole[2]) * nx), width, 0);
   }
   result->GetPointData()->AddArray(ghosts);
 
