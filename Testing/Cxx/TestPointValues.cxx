@@ -206,9 +206,11 @@ TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
   // Rolling hills under a sun and a clear sky, reflectance 0.2: on most posts light from
   // surfaces is a small, smooth share of what they receive. Read between the lattice's
   // gathered posts it agrees with each post's own gather within the gather's error, for
-  // a fraction of the rays; where it is more than a small share, posts still gather.
+  // a fraction of the rays; where it is more than a small share, or where ripples (10 m
+  // high, 60-80 m long) make the lattice's posts disagree, posts still gather.
   const auto grid = makeGrid(97, 97, 30.0, [](double x, double y) {
-    return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0);
+    return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0) +
+      10.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
   });
   grid->setUniformMaterial(uniformSpectrum(0.2), Spectrum{});
   const Direction sun = directionFromZenithAzimuth(55.0 * degree, 2.0);
