@@ -238,12 +238,18 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
   auto cellValid = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx - 1 && j < ny - 1 && t.cellValid(i, j); };
 
   const bool complete = this->Complete;
-  // A line starts at each post whose step back leaves the grid.
+  // A line starts at each post whose step back leaves the grid (in grid order): a
+  // whole row where it leaves through the top or bottom, else the |q| posts next to the
+  // side it leaves through.
   std::vector<std::array<int, 2>> starts;
   for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      if (!inGrid(i - q, j - p))
-        starts.push_back({ i, j });
+  {
+    int first = 0, last = nx; // the whole row
+    if (j - p >= 0 && j - p < ny)
+      first = q < 0 ? std::max(0, nx + q) : 0, last = q > 0 ? std::min(nx, q) : (q < 0 ? nx : 0);
+    for (int i = first; i < last; ++i)
+      starts.push_back({ i, j });
+  }
 
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, starts.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
     struct Point

@@ -12,6 +12,7 @@ with no abort, must then give every rank its piece: no collective was left unmat
 import sys
 
 import terralux
+from mpi_pipeline import instant_solver
 from terralux.irradiation import start_mpi
 
 
@@ -23,15 +24,7 @@ def main(dem):
     rank, size = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
     terrain = terralux.vtkTerrainSource()
     terrain.SetFileName(dem)
-    sun = terralux.vtkSunSource()
-    sun.SetInputConnection(terrain.GetOutputPort())
-    sun.SetDateTime("2024-08-15T08:30:00-03:00")
-    sky = terralux.vtkSkySource()
-    sky.SetSunConnection(sun.GetOutputPort())
-    solver = terralux.vtkHierarchicalRadiosity()
-    solver.SetInputConnection(terrain.GetOutputPort())
-    solver.AddLightConnection(sun.GetOutputPort())
-    solver.AddLightConnection(sky.GetOutputPort(0))
+    solver = instant_solver(terrain, "2024-08-15T08:30:00-03:00")
 
     errors = []
     solver.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
