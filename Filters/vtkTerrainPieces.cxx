@@ -21,7 +21,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -133,23 +132,6 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
       piece.extent[k] = static_cast<int>(extent->GetComponent(k, 0));
     pieces.push_back(piece);
   }
-  // A piece's arrays, in its packet's order: the root's own as they are, the others' as
-  // they arrive.
-  auto receiveEach = [&](const Piece& p, const std::function<void(vtkDataArray* model, vtkDataArray* values)>& use) {
-    for (vtkIdType a = 0; a < p.table->GetNumberOfColumns(); ++a)
-    {
-      auto* model = vtkDataArray::SafeDownCast(p.table->GetColumn(a));
-      if (p.rank == root)
-      {
-        use(model, ownArrays[static_cast<std::size_t>(a)]);
-        continue;
-      }
-      vtkSmartPointer<vtkDataArray> values;
-      values.TakeReference(model->NewInstance());
-      controller->Receive(values, p.rank, valuesTag);
-      use(model, values);
-    }
-  };
   if (pieces.empty())
     return nullptr;
   int whole[6] = { VTK_INT_MAX, VTK_INT_MIN, VTK_INT_MAX, VTK_INT_MIN, 0, 0 };
@@ -196,8 +178,17 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
   {
     const int* e = p.extent;
     const int width = e[1] - e[0] + 1;
-    // Each row of a piece is a run of posts in the whole grid too.
-    receiveEach(p, [&](vtkDataArray* model, vtkDataArray* values) {
+    // The piece's arrays, in its packet's order: the root's own as they are, the others'
+    // as they arrive. Each row of a piece is a run of posts in the whole grid too.
+    for (vtkIdType a = 0; a < p.table->GetNumberOfColumns(); ++a)
+    {
+      auto* model = vtkDataArray::SafeDownCast(p.table->GetColumn(a));
+      vtkSmartPointer<vtkDataArray> values = p.rank == root ? ownArrays[static_cast<std::size_t>(a)] : nullptr;
+      if (!values)
+      {
+        values.TakeReference(model->NewInstance());
+        controller->Receive(values, p.rank, valuesTag);
+      }
       const bool ghost = std::strcmp(model->GetName(), vtkDataSetAttributes::GhostArrayName()) == 0;
       vtkDataArray* target = ghost ? nullptr : result->GetPointData()->GetArray(model->GetName());
       for (int j = e[2]; j <= e[3]; ++j)
@@ -211,7 +202,7 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
             ghosts->SetValue(
               to + i, static_cast<unsigned char>(values->GetComponent(from + i, 0)) & vtkDataSetAttributes::HIDDENPOINT);
       }
-    });
+    }
     // Posts of a piece without a ghost array are all shown.
     if (!p.table->GetColumnByName(vtkDataSetAttributes::GhostArrayName()))
       for (int j = e[2]; j <= e[3]; ++j)

@@ -128,14 +128,9 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
     this->AzimuthDirections.push_back({ x, y });
   }
   const int nx = terrain.postsX(), ny = terrain.postsY();
-  this->Held = { 0, nx - 1, 0, ny - 1 };
-  if (split)
-  {
-    const WorkSplit::Window own = split->window(split->part());
-    this->Held = { std::max(0, own.i0), std::min(nx - 1, own.i1), std::max(0, own.j0), std::min(ny - 1, own.j1) };
-    if (this->Held.i1 < this->Held.i0 || this->Held.j1 < this->Held.j0)
-      this->Held = { 0, -1, 0, -1 };
-  }
+  this->Held = split ? split->window(split->part()).clampedTo(nx, ny) : WorkSplit::Window{ 0, nx - 1, 0, ny - 1 };
+  if (this->Held.empty())
+    this->Held = {};
   this->HeldX = static_cast<std::size_t>(this->Held.i1 - this->Held.i0 + 1);
   this->HeldCount = this->HeldX * static_cast<std::size_t>(this->Held.j1 - this->Held.j0 + 1);
   this->HoldsAll = this->HeldCount == this->PostCount;
@@ -151,13 +146,18 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
   // whole grid), and each keeps its window of every azimuth it receives: the map per
   // process is its window's, plus two azimuths of the whole grid in flight.
   std::vector<std::uint16_t> swept, received;
+  WorkSplit::partThenShare(
+    split,
+    [&]() {
+      this->Elevations.assign(this->HeldCount * slots, 0);
+      received.resize(this->PostCount);
+    },
+    []() {});
   const int parts = split->parts(), part = split->part();
   for (std::size_t first = 0; first < slots; first += static_cast<std::size_t>(parts))
     WorkSplit::partThenShare(
       split,
       [&]() {
-        if (this->Elevations.empty())
-          this->Elevations.assign(this->HeldCount * slots, 0), received.resize(this->PostCount);
         const std::size_t slot = first + static_cast<std::size_t>(part);
         if (slot < slots)
         {

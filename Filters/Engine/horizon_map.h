@@ -17,6 +17,7 @@
 
 #include "angles.h"
 #include "radiosity_types.h"
+#include "work_split.h"
 
 #include <algorithm>
 #include <array>
@@ -27,7 +28,6 @@
 namespace terralux
 {
 class TerrainGrid;
-class WorkSplit;
 
 class HorizonMap
 {
@@ -60,10 +60,7 @@ public:
   Post find(const Vec3& point) const;
   /// Whether the map holds the horizons of post (i, j): every post, or with a split
   /// this process's window.
-  bool holds(int i, int j) const
-  {
-    return i >= this->Held.i0 && i <= this->Held.i1 && j >= this->Held.j0 && j <= this->Held.j1;
-  }
+  bool holds(int i, int j) const { return this->Held.holds(i, j); }
 
   /// The azimuths: radians counter-clockwise from +x, increasing, in [0, 2 pi).
   const std::vector<double>& azimuths() const { return this->Azimuths; }
@@ -215,10 +212,7 @@ private:
   /// Azimuth by azimuth, the held posts in order; elevation / (pi / 2) x 65535.
   std::vector<std::uint16_t> Elevations;
   std::size_t PostCount = 0;
-  struct Window
-  {
-    int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
-  } Held;                    // the posts whose horizons are kept
+  WorkSplit::Window Held; // the posts whose horizons are kept
   std::size_t HeldX = 0, HeldCount = 0;
   bool HoldsAll = true;
 };

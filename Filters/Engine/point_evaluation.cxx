@@ -166,10 +166,11 @@ bool HierarchicalRadiosity::readFromLattice(const HorizonMap::Post& post, const 
   // interpolated horizon was wrong) comes from the terrain the post sees, 1 - its sky
   // view factor: that times what the lattice's posts around found per terrain seen.
   // Where theirs agree within twice the error a gather would leave, reading it between
-  // them errs about as much (see latticeSpreadAllowance). Posts where light from surfaces is more than a small share of what
-  // they receive gather it still: read between posts it comes out about 3 % low on
-  // average (the accuracy report's hills and Olinda against a gather at each post),
-  // where the accuracy work asks for 5 % wherever it exceeds 1 % of the global.
+  // them errs about as much (see latticeSpreadAllowance). Posts where light from
+  // surfaces is more than a small share of what they receive gather it still: read
+  // between posts it comes out about 3 % low on average (the accuracy report's hills and
+  // Olinda against a gather at each post), where the accuracy work asks for 5 % wherever
+  // it exceeds 1 % of the global.
   const double terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
   const double received = largestBand(result.irradiance[SunLight]) + largestBand(sky.irradiance);
   PostLattice::PerTerrainSeen found;

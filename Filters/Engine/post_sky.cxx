@@ -23,16 +23,15 @@ PostSky::PostSky(
   const std::size_t posts = static_cast<std::size_t>(nx) * ny;
   // With a split, each process finds the skies of its window's posts (whose horizons
   // it holds), and gets the others' (gather rays read them wherever they land).
-  WorkSplit::Window own{ 0, nx - 1, 0, ny - 1 };
-  if (split)
-    own = split->window(split->part());
+  const WorkSplit::Window own =
+    split ? split->window(split->part()).clampedTo(nx, ny) : WorkSplit::Window{ 0, nx - 1, 0, ny - 1 };
   WorkSplit::partThenShare(
     split,
     [&]() {
       this->Values.assign(posts, {});
       this->Used.assign(posts, 0);
-      tbb::parallel_for(std::max(0, own.j0), std::min(ny - 1, own.j1) + 1, [&](int j) {
-        for (int i = std::max(0, own.i0); i <= std::min(nx - 1, own.i1); ++i)
+      tbb::parallel_for(own.j0, own.j1 + 1, [&](int j) {
+        for (int i = own.i0; i <= own.i1; ++i)
         {
           if (!terrain.postUsed(i, j))
             continue;

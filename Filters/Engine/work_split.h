@@ -33,6 +33,12 @@ public:
   {
     int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
     bool holds(int i, int j) const { return i >= this->i0 && i <= this->i1 && j >= this->j0 && j <= this->j1; }
+    bool empty() const { return this->i1 < this->i0 || this->j1 < this->j0; }
+    /// Its posts within an nx x ny grid.
+    Window clampedTo(int nx, int ny) const
+    {
+      return { std::max(0, this->i0), std::min(nx - 1, this->i1), std::max(0, this->j0), std::min(ny - 1, this->j1) };
+    }
   };
   virtual Window window(int part) const = 0;
   /// Once each process has computed `values` at the posts of its window (one value per
@@ -45,10 +51,11 @@ public:
     std::vector<T> packed;
     for (int owner = 0; owner < this->parts(); ++owner)
     {
+      // The window's posts on the lattice: from the first step-th post in it to the last.
       const Window w = this->window(owner);
       auto first = [step](int post) { return post <= 0 ? 0 : (post + step - 1) / step; };
-      const int i0 = first(w.i0), i1 = std::min(nx - 1, w.i1 < 0 ? -1 : w.i1 / step);
-      const int j0 = first(w.j0), j1 = std::min(ny - 1, w.j1 < 0 ? -1 : w.j1 / step);
+      auto last = [step](int post) { return post < 0 ? -1 : post / step; };
+      const auto [i0, i1, j0, j1] = Window{ first(w.i0), last(w.i1), first(w.j0), last(w.j1) }.clampedTo(nx, ny);
       if (i1 < i0 || j1 < j0)
         continue;
       const std::size_t width = static_cast<std::size_t>(i1 - i0 + 1);
