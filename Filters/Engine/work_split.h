@@ -55,10 +55,11 @@ public:
       const Window w = this->window(owner);
       auto first = [step](int post) { return post <= 0 ? 0 : (post + step - 1) / step; };
       auto last = [step](int post) { return post < 0 ? -1 : post / step; };
-      const auto [i0, i1, j0, j1] = Window{ first(w.i0), last(w.i1), first(w.j0), last(w.j1) }.clampedTo(nx, ny);
-      if (i1 < i0 || j1 < j0)
+      const Window lattice = Window{ first(w.i0), last(w.i1), first(w.j0), last(w.j1) }.clampedTo(nx, ny);
+      if (lattice.empty())
         continue;
-      const std::size_t width = static_cast<std::size_t>(i1 - i0 + 1);
+      const int i0 = lattice.i0, j0 = lattice.j0, j1 = lattice.j1;
+      const std::size_t width = static_cast<std::size_t>(lattice.i1 - i0 + 1);
       packed.resize(width * static_cast<std::size_t>(j1 - j0 + 1));
       auto row = [&](int j) { return values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(j) * nx + i0); };
       auto packedRow = [&](int j) { return packed.begin() + static_cast<std::ptrdiff_t>((j - j0) * width); };
