@@ -11,6 +11,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRadiosityScene.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStructuredGrid.h"
 
@@ -52,7 +53,10 @@ vtkSmartPointer<vtkDoubleArray> unsetArray(const char* name, int components, vtk
   array->SetName(name);
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(count);
-  array->Fill(std::numeric_limits<double>::quiet_NaN());
+  // On every core: the array's memory is first touched here, and the system's zeroing
+  // of its pages on one core took 3 s of a 4097^2 grid's solve.
+  double* values = array->GetPointer(0);
+  vtkSMPTools::Fill(values, values + count * components, std::numeric_limits<double>::quiet_NaN());
   return array;
 }
 

@@ -5,6 +5,7 @@
 #include "work_split.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
@@ -194,18 +195,33 @@ void HorizonMap::fitMeanMap()
   // Mean steps along u and v over the valid cells, and the mean offset: posts outside
   // valid cells may hold anything. Counting them also tells whether any is missing.
   const TerrainGrid& t = this->Terrain;
-  double sx = 0, sy = 0, ux = 0, uy = 0, vx = 0, vy = 0, si = 0, sj = 0;
-  std::size_t count = 0;
-  for (int j = 0; j < t.cellsY(); ++j)
+  // Row by row on every core, then summed in order: the same sums on every process
+  // of a split, whose map must agree.
+  struct Sums
+  {
+    double sx = 0, sy = 0, ux = 0, uy = 0, vx = 0, vy = 0, si = 0, sj = 0;
+    std::size_t count = 0;
+  };
+  std::vector<Sums> rows(static_cast<std::size_t>(std::max(0, t.cellsY())));
+  tbb::parallel_for(0, t.cellsY(), [&](int j) {
+    Sums& r = rows[static_cast<std::size_t>(j)];
     for (int i = 0; i < t.cellsX(); ++i)
       if (t.cellValid(i, j))
       {
         const Vec3 p00 = t.post(i, j) - t.origin(), p10 = t.post(i + 1, j) - t.origin(),
                    p01 = t.post(i, j + 1) - t.origin();
-        ux += p10.x - p00.x, uy += p10.y - p00.y, vx += p01.x - p00.x, vy += p01.y - p00.y;
-        sx += p00.x, sy += p00.y, si += i, sj += j;
-        ++count;
+        r.ux += p10.x - p00.x, r.uy += p10.y - p00.y, r.vx += p01.x - p00.x, r.vy += p01.y - p00.y;
+        r.sx += p00.x, r.sy += p00.y, r.si += i, r.sj += j;
+        ++r.count;
       }
+  });
+  double sx = 0, sy = 0, ux = 0, uy = 0, vx = 0, vy = 0, si = 0, sj = 0;
+  std::size_t count = 0;
+  for (const Sums& r : rows)
+  {
+    sx += r.sx, sy += r.sy, ux += r.ux, uy += r.uy, vx += r.vx, vy += r.vy, si += r.si, sj += r.sj;
+    count += r.count;
+  }
   this->Complete = count == static_cast<std::size_t>(t.cellsX()) * t.cellsY();
   if (count == 0)
     return;
@@ -238,6 +254,7 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
   auto cellValid = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx - 1 && j < ny - 1 && t.cellValid(i, j); };
 
   const bool complete = this->Complete;
+  const std::ptrdiff_t nextOffset = static_cast<std::ptrdiff_t>(p) * nx + q; // the next post on a line
   // A line starts at each post whose step back leaves the grid (in grid order): a
   // whole row where it leaves through the top or bottom, else the |q| posts next to the
   // side it leaves through.
@@ -275,6 +292,27 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
           break;
       }
     };
+    auto push = [&pop](std::vector<Point>& hull, const Point& point) {
+      pop(hull, point.x, point.z);
+      hull.push_back(point);
+    };
+    auto pointOf = [&](const float* post) { return Point{ post[0] * dx + post[1] * dy, post[2] }; };
+    // Crossing n of the step ahead of the post at `here`.
+    auto crossingAhead = [&](const float* here, std::size_t n) {
+      const float* a = here + 3 * offsets[n][0];
+      const float* b = here + 3 * offsets[n][1];
+      const double f = crossings[n].f;
+      return Point{ (a[0] + f * (b[0] - a[0])) * dx + (a[1] + f * (b[1] - a[1])) * dy, a[2] + f * (b[2] - a[2]) };
+    };
+    // A point lies below the segment between two others (in x between them, as
+    // crossings between posts do): no post before them sees it as its horizon, and
+    // no hull keeps it.
+    auto below = [](const Point& c, const Point& far, const Point& near) {
+      return (c.z - near.z) * (far.x - near.x) <= (far.z - near.z) * (c.x - near.x);
+    };
+    // One step's profile, the post ahead first, and the crossings that may count.
+    const std::size_t m = crossings.size();
+    std::vector<Point> profile(m + 2), kept(m);
     for (std::size_t first = r.begin(); first < r.end(); first += hulls.size())
     {
       const std::size_t lines = std::min<std::size_t>(r.end() - first, hulls.size());
@@ -297,27 +335,41 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
           const int i = starts[first + l][0] + k * q, j = starts[first + l][1] + k * p;
           // Where the step ahead lies inside a grid without missing cells, every
           // crossing is on terrain and needs no check (most of a DEM).
-          const bool checked = !complete || !inGrid(i + q, j + p);
-          // The crossings ahead of this post, farthest first (past the last post, those
-          // still inside the grid).
           const float* here = position(i, j);
-          for (std::size_t n = crossings.size(); n-- > 0;)
+          if (!complete || !inGrid(i + q, j + p))
           {
-            const Crossing* c = &crossings[n];
-            if (checked &&
-              (!inGrid(i + c->a0, j + c->b0) || !inGrid(i + c->a1, j + c->b1) ||
-                !(cellValid(i + c->ci, j + c->cj) || cellValid(i + c->di, j + c->dj))))
-              continue;
-            const float* a = here + 3 * offsets[n][0];
-            const float* b = here + 3 * offsets[n][1];
-            const double x = (a[0] + c->f * (b[0] - a[0])) * dx + (a[1] + c->f * (b[1] - a[1])) * dy;
-            const double z = a[2] + c->f * (b[2] - a[2]);
-            pop(hull, x, z);
-            hull.push_back({ x, z });
+            // The crossings ahead of this post, farthest first (past the last post,
+            // those still inside the grid).
+            for (std::size_t n = m; n-- > 0;)
+            {
+              const Crossing& c = crossings[n];
+              if (inGrid(i + c.a0, j + c.b0) && inGrid(i + c.a1, j + c.b1) &&
+                (cellValid(i + c.ci, j + c.cj) || cellValid(i + c.di, j + c.dj)))
+                push(hull, crossingAhead(here, n));
+            }
+          }
+          else
+          {
+            // Only the crossings above the chord to the next post and above the
+            // segment between their neighbours can count (about a third on rough
+            // terrain); they are sorted out without a branch each, since which way
+            // each goes is as random as the terrain (the sweep took 20 % less).
+            profile[0] = pointOf(here + 3 * nextOffset);
+            profile[m + 1] = pointOf(here);
+            for (std::size_t n = 0; n < m; ++n)
+              profile[n + 1] = crossingAhead(here, m - 1 - n);
+            std::size_t count = 0;
+            for (std::size_t n = 1; n <= m; ++n)
+            {
+              kept[count] = profile[n];
+              count += !below(profile[n], profile[0], profile[m + 1]) & !below(profile[n], profile[n - 1], profile[n + 1]);
+            }
+            for (std::size_t n = 0; n < count; ++n)
+              push(hull, kept[n]);
           }
           if (!complete && !t.postUsed(i, j))
             continue;
-          const double x = here[0] * dx + here[1] * dy, z = here[2];
+          const auto [x, z] = pointOf(here);
           pop(hull, x, z);
           if (!hull.empty() && hull.back().x > x)
           {
@@ -338,18 +390,24 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
 void HorizonMap::measureRelief()
 {
   const TerrainGrid& t = this->Terrain;
-  double steepest = 0.0, highest = -std::numeric_limits<double>::infinity();
-  for (int j = 0; j < t.cellsY(); ++j)
-    for (int i = 0; i < t.cellsX(); ++i)
-      if (t.cellValid(i, j))
-        for (const TerrainGrid::Triangle& triangle : t.cellTriangles(i, j))
-        {
-          const Vec3 n = TerrainGrid::areaVector(triangle);
-          if (n.z > 0.0)
-            steepest = std::max(steepest, std::hypot(n.x, n.y) / n.z);
-          for (const Vec3& corner : triangle)
-            highest = std::max(highest, corner.z);
-        }
+  using Relief = std::array<double, 2>; // the steepest slope, the highest point
+  const auto [steepest, highest] = tbb::parallel_reduce(
+    tbb::blocked_range<int>(0, t.cellsY()), Relief{ 0.0, -std::numeric_limits<double>::infinity() },
+    [&](const tbb::blocked_range<int>& rows, Relief relief) {
+      for (int j = rows.begin(); j < rows.end(); ++j)
+        for (int i = 0; i < t.cellsX(); ++i)
+          if (t.cellValid(i, j))
+            for (const TerrainGrid::Triangle& triangle : t.cellTriangles(i, j))
+            {
+              const Vec3 n = TerrainGrid::areaVector(triangle);
+              if (n.z > 0.0)
+                relief[0] = std::max(relief[0], std::hypot(n.x, n.y) / n.z);
+              for (const Vec3& corner : triangle)
+                relief[1] = std::max(relief[1], corner.z);
+            }
+      return relief;
+    },
+    [](const Relief& a, const Relief& b) { return Relief{ std::max(a[0], b[0]), std::max(a[1], b[1]) }; });
   this->SteepestSlope = steepest;
   this->HighestZ = highest;
   // The shortest way to the edge u = 0 runs square to v's direction, against u's.

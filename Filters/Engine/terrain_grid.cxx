@@ -195,6 +195,21 @@ Vec3 TerrainGrid::postNormal(int i, int j) const
   // The triangles that have the post as a corner (six with this diagonal), as a
   // triangle mesh's vertex normal: the cell to the upper right contributes its lower
   // triangle, the lower-left one its upper triangle, the other two both.
+  if (i > 0 && j > 0 && i + 1 < this->Nx && j + 1 < this->Ny && this->cellValid(i - 1, j - 1) &&
+    this->cellValid(i, j - 1) && this->cellValid(i - 1, j) && this->cellValid(i, j))
+  {
+    // Inside the grid the six triangles close a fan: their area vectors sum to half
+    // the cross products of neighbouring spokes, read once each (a post's normal is
+    // asked for several times a solve).
+    const Vec3 p = this->post(i, j);
+    const Vec3 spokes[6] = { this->post(i + 1, j) - p, this->post(i, j + 1) - p, this->post(i - 1, j + 1) - p,
+      this->post(i - 1, j) - p, this->post(i, j - 1) - p, this->post(i + 1, j - 1) - p };
+    Vec3 fan(0.0);
+    for (int k = 0; k < 6; ++k)
+      fan += glm::cross(spokes[k], spokes[(k + 1) % 6]);
+    const double length = glm::length(fan);
+    return length > 0.0 ? fan / length : Vec3(0.0, 0.0, 1.0);
+  }
   Vec3 sum(0.0);
   for (int cj = std::max(0, j - 1); cj <= std::min(j, this->Ny - 2); ++cj)
     for (int ci = std::max(0, i - 1); ci <= std::min(i, this->Nx - 2); ++ci)

@@ -95,6 +95,34 @@ TEST(TerrainGrid, SurfaceOfATiltedPlane)
   EXPECT_NEAR(glm::dot(grid->postNormal(3, 2), normal), 1.0, 1e-6);
 }
 
+// A post's normal is that of the triangles that have it as a corner, area-weighted:
+// checked against their area vectors found one by one from the cells' triangles, on
+// rough terrain, at inner posts, at edges and corners, and next to a missing cell.
+TEST(TerrainGrid, PostNormalsAreTheAreaWeightedNormalsOfTheirTriangles)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> rough(-15.0, 15.0);
+  std::vector<double> heights(7 * 6);
+  for (double& h : heights)
+    h = rough(random);
+  const auto grid = makeGrid(
+    7, 6, 10.0, [&](double x, double y) { return heights[static_cast<std::size_t>(std::lround(y / 10.0) * 7 + std::lround(x / 10.0))]; },
+    [](int i, int j) { return !(i == 4 && j == 3); });
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 7; ++i)
+    {
+      Vec3 sum(0.0);
+      for (int cj = std::max(0, j - 1); cj <= std::min(j, 4); ++cj)
+        for (int ci = std::max(0, i - 1); ci <= std::min(i, 5); ++ci)
+          if (grid->cellValid(ci, cj))
+            for (const TerrainGrid::Triangle& t : grid->cellTriangles(ci, cj))
+              if (std::find(t.begin(), t.end(), grid->post(i, j)) != t.end())
+                sum += TerrainGrid::areaVector(t);
+      const Vec3 expected = glm::normalize(sum), normal = grid->postNormal(i, j);
+      EXPECT_NEAR(glm::length(normal - expected), 0.0, 1e-12) << "post " << i << ", " << j;
+    }
+}
+
 TEST(TerrainPatch, SplitRanges)
 {
   using R = std::array<double, 4>;
