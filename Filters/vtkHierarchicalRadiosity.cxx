@@ -134,8 +134,14 @@ void addPointArrays(vtkInformationVector* geometry, const terralux::Hierarchical
 }
 
 // Field data: sizes, rays and seconds per phase, so a user sees where the time went.
+struct PointsPhase
+{
+  double seconds = 0.0;
+  double latticeSeconds = 0.0; // of those, the lattice's gathers
+  std::size_t latticeRays = 0;
+};
 void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
-  double secondsPoints, vtkFieldData* fieldData)
+  const PointsPhase& points, vtkFieldData* fieldData)
 {
   const terralux::RadiosityStatistics& stats = solver.statistics();
   auto addValue = [&](const char* name, double value) { vtkRadiosityOutputs::AddFieldValue(fieldData, name, value); };
@@ -152,10 +158,12 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
   addValue("SecondsGather", stats.secondsGather);
   addValue("SecondsPushPull", stats.secondsPushPull);
   addValue("SecondsHorizons", stats.secondsHorizons);
-  addValue("SecondsPoints", secondsPoints);
+  addValue("SecondsPoints", points.seconds);
+  addValue("SecondsLattice", points.latticeSeconds);
   addValue("RaysRefine", static_cast<double>(stats.raysRefine));
   addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
   addValue("RaysPoints", static_cast<double>(solver.raysCast() - stats.rays));
+  addValue("RaysLattice", static_cast<double>(points.latticeRays));
 }
 
 } // namespace
@@ -545,10 +553,15 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   // with the point arrays.
   const auto pointsStart = std::chrono::steady_clock::now();
   // A lattice of the terrain's posts gathered first, at the normals the outputs use
-  // (the whole grid on every rank, so that pieces agree with one process).
+  // (each rank its window's, shared with the others, so that pieces agree with one
+  // process).
+  PointsPhase points;
   if (this->EvaluateAtPoints && solver->terrainRoots().size() == 1 && solver->terrainRoots().front())
   {
+    const std::size_t raysBefore = solver->raysCast();
     solver->gatherPostLattice(*solver->terrainRoots().front(), hornNormals);
+    points.latticeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
+    points.latticeRays = solver->raysCast() - raysBefore;
   }
   vtkRadiosityOutputs::PointOptions pointOptions;
   pointOptions.bands = this->NumberOfBands;
@@ -556,9 +569,8 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   pointOptions.hornNormals = hornNormals;
   pointOptions.sunshine = scene.SunshineDuration;
   addPointArrays(inputVector[0], *solver, scene, pointOptions, piece.extent, output);
-  const double secondsPoints =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
-  addStatistics(*solver, scene, secondsPoints, output->GetFieldData());
+  points.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
+  addStatistics(*solver, scene, points, output->GetFieldData());
 
   if (piece.withMeshAndLinks)
   {

@@ -39,8 +39,9 @@
  * (vertex and line cells, and polygons of fewer than 3 points: no area, no light), seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsHorizons` for the horizons of every post,
  * `SecondsRefine`, `SecondsGather`, `SecondsPushPull`, `SecondsPoints` for output 0's
- * point values) and rays per phase (`RaysRefine`,
- * `RaysPushPull` for gather and push-pull, `RaysPoints`).
+ * point values, of which `SecondsLattice` for the lattice of posts gathered first) and
+ * rays per phase (`RaysRefine`, `RaysPushPull` for gather and push-pull, `RaysPoints`,
+ * of which `RaysLattice`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
  * `Level`, and the same point arrays (SkyViewFactor: the leaves' own, under a sky),
  * continuous across elements (values at T-vertices interpolated along the coarser

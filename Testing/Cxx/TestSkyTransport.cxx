@@ -128,15 +128,28 @@ TEST(SkyTransport, ValleyBottomPostsSeeCosOfTheSlopeFromTheirHorizons)
     vtkNew<MessageCatcher> messages;
     ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
     vtkDataSet* output = vtkDataSet::SafeDownCast(radiosity->GetOutput());
-    EXPECT_GT(output->GetFieldData()->GetArray("SecondsHorizons")->GetTuple1(0), 0.0);
+    vtkFieldData* field = output->GetFieldData();
+    EXPECT_GT(field->GetArray("SecondsHorizons")->GetTuple1(0), 0.0);
+    // The lattice of posts gathered first is a part of the points' phase, in rays and
+    // time (no rays here: nothing but the sky of the horizons reaches the posts).
+    EXPECT_EQ(field->GetArray("RaysLattice")->GetTuple1(0), 0.0);
+    EXPECT_GT(field->GetArray("SecondsLattice")->GetTuple1(0), 0.0);
+    EXPECT_LE(field->GetArray("SecondsLattice")->GetTuple1(0), field->GetArray("SecondsPoints")->GetTuple1(0));
     vtkDataArray* values = output->GetPointData()->GetArray("SkyIrradiance");
     // The floor's posts (row 100), away from the valley's ends.
     for (int i = 60; i <= 140; i += 8)
       EXPECT_NEAR(values->GetComponent(i + 100 * 201, 0), 100.0 * std::cos(slope * M_PI / 180.0), 0.5) << i;
+    // With light from the valley's sides, the lattice's posts gather it with rays.
+    radiosity->SetDefaultReflectance(0.3);
+    ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+    field = vtkDataSet::SafeDownCast(radiosity->GetOutput())->GetFieldData();
+    EXPECT_GT(field->GetArray("RaysLattice")->GetTuple1(0), 0.0);
+    EXPECT_LT(field->GetArray("RaysLattice")->GetTuple1(0), field->GetArray("RaysPoints")->GetTuple1(0));
     // The interpolated output needs no horizons.
     radiosity->SetEvaluateAtPoints(false);
     ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
     output = vtkDataSet::SafeDownCast(radiosity->GetOutput());
     EXPECT_EQ(output->GetFieldData()->GetArray("SecondsHorizons")->GetTuple1(0), 0.0);
+    EXPECT_EQ(output->GetFieldData()->GetArray("RaysLattice")->GetTuple1(0), 0.0);
   }
 }
