@@ -138,7 +138,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
   const std::size_t slots = order.size();
   if (!split)
   {
-    this->Elevations.assign(this->HeldCount * slots, 0);
+    this->Elevations.resize(this->HeldCount * slots);
     for (std::size_t slot = 0; slot < slots; ++slot)
       this->sweep(steps[order[slot]][0], steps[order[slot]][1], &this->Elevations[slot * this->PostCount]);
     return;
@@ -150,7 +150,8 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
   WorkSplit::partThenShare(
     split,
     [&]() {
-      this->Elevations.assign(this->HeldCount * slots, 0);
+      this->Elevations.resize(this->HeldCount * slots);
+      swept.resize(this->PostCount);
       received.resize(this->PostCount);
     },
     []() {});
@@ -161,10 +162,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
       [&]() {
         const std::size_t slot = first + static_cast<std::size_t>(part);
         if (slot < slots)
-        {
-          swept.assign(this->PostCount, 0);
           this->sweep(steps[order[slot]][0], steps[order[slot]][1], swept.data());
-        }
       },
       [&]() {
         for (int owner = 0; owner < parts && first + static_cast<std::size_t>(owner) < slots; ++owner)
@@ -362,11 +360,15 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
             for (std::size_t n = 1; n <= m; ++n)
             {
               kept[count] = profile[n];
-              count += !below(profile[n], profile[0], profile[m + 1]) & !below(profile[n], profile[n - 1], profile[n + 1]);
+              const std::size_t aboveChord = !below(profile[n], profile[0], profile[m + 1]);
+              const std::size_t aboveNeighbours = !below(profile[n], profile[n - 1], profile[n + 1]);
+              count += aboveChord & aboveNeighbours;
             }
             for (std::size_t n = 0; n < count; ++n)
               push(hull, kept[n]);
           }
+          std::uint16_t& horizon = out[static_cast<std::size_t>(j) * nx + i];
+          horizon = 0; // nothing above the horizontal, or a post of no cell
           if (!complete && !t.postUsed(i, j))
             continue;
           const auto [x, z] = pointOf(here);
@@ -378,7 +380,7 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
             {
               // Rounded to the nearest (a positive value: + 0.5, truncated).
               const double quantised = atanOfPositive(tangent) / (0.5 * pi) * 65535.0 + 0.5;
-              out[static_cast<std::size_t>(j) * nx + i] = static_cast<std::uint16_t>(std::min(65535.0, quantised));
+              horizon = static_cast<std::uint16_t>(std::min(65535.0, quantised));
             }
           }
           hull.push_back({ x, z });

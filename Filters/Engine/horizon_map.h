@@ -17,6 +17,7 @@
 
 #include "angles.h"
 #include "radiosity_types.h"
+#include "uninitialized_vector.h"
 #include "work_split.h"
 
 #include <algorithm>
@@ -181,7 +182,7 @@ public:
 
 private:
   void fitMeanMap();
-  /// One azimuth's horizons at every post, into `out` (grid order, zeros first).
+  /// One azimuth's horizons at every post, into `out` (grid order; each post written).
   void sweep(int q, int p, std::uint16_t* out) const;
   std::size_t postsX() const;
 
@@ -210,7 +211,7 @@ private:
   std::vector<std::array<double, 2>> AzimuthSteps;
   std::vector<std::array<double, 2>> AzimuthDirections; // (cos, sin) of each
   /// Azimuth by azimuth, the held posts in order; elevation / (pi / 2) x 65535.
-  std::vector<std::uint16_t> Elevations;
+  UninitializedVector<std::uint16_t> Elevations; // every value written by a sweep or a share
   std::size_t PostCount = 0;
   WorkSplit::Window Held; // the posts whose horizons are kept
   std::size_t HeldX = 0, HeldCount = 0;

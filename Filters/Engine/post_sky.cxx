@@ -28,16 +28,17 @@ PostSky::PostSky(
   WorkSplit::partThenShare(
     split,
     [&]() {
-      this->Values.assign(posts, {});
+      this->Values.resize(posts);
       this->Used.assign(posts, 0);
       tbb::parallel_for(own.j0, own.j1 + 1, [&](int j) {
         for (int i = own.i0; i <= own.i1; ++i)
         {
-          if (!terrain.postUsed(i, j))
-            continue;
           HorizonMap::Post post;
           post.found = true;
           post.index = static_cast<std::size_t>(j) * nx + i;
+          this->Values[post.index] = {};
+          if (!terrain.postUsed(i, j))
+            continue;
           const Value value = at(post, terrain.normalAt(i, j, hornNormals), horizons, sky);
           for (int band = 0; band < maxBands; ++band)
             this->Values[post.index][band] = static_cast<float>(value.irradiance[band]);

@@ -9,6 +9,7 @@
 
 #include "horizon_map.h"
 #include "radiosity_types.h"
+#include "uninitialized_vector.h"
 
 #include <array>
 #include <vector>
@@ -49,7 +50,9 @@ public:
 private:
   const TerrainGrid& Terrain;
   bool HornNormals;
-  std::vector<std::array<float, maxBands + 1>> Values; // per post, row by row: irradiance, sky view factor
+  // Per post, row by row: irradiance, sky view factor, each written by a parallel loop
+  // or a share without a serial zeroing first (read only where Used).
+  UninitializedVector<std::array<float, maxBands + 1>> Values;
   std::vector<std::uint8_t> Used;
 };
 } // namespace terralux

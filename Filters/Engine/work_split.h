@@ -45,9 +45,10 @@ public:
   /// post of an nx x ny grid, in grid order; or, with `step`, per post of a lattice of
   /// every step-th post each way, nx x ny of them): every window's values, from its
   /// process. Where windows share posts, each computed them alike.
-  template <typename T>
-  void shareWindows(std::vector<T>& values, int nx, int ny, int step = 1) const
+  template <typename Vector>
+  void shareWindows(Vector& values, int nx, int ny, int step = 1) const
   {
+    using T = typename Vector::value_type;
     std::vector<T> packed;
     for (int owner = 0; owner < this->parts(); ++owner)
     {
