@@ -245,11 +245,7 @@ Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector
       if (!visibility.occludedToward(point, normal, source.direction()))
         transport = kernel;
     }
-    const Spectrum flux = sun.emittance();
-    for (int band = 0; band < maxBands; ++band)
-      result[band] += transport * flux[band];
-    if (sunlitHours && transport > 0.0)
-      *sunlitHours += source.duration();
+    addSunlight(transport, sun.emittance(), source.duration(), result, sunlitHours);
   }
   return result;
 }

@@ -46,6 +46,15 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
 /// `sunlitHours`, also the durations of the suns that reach the point (sunshine).
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
   const Visibility& visibility, double* sunlitHours = nullptr);
+/// One sun's part of that: `transport` (its kernel where it is seen, else 0) x its flux,
+/// and its duration where it is seen.
+inline void addSunlight(double transport, const Spectrum& flux, double duration, Spectrum& result, double* sunlitHours)
+{
+  for (int band = 0; band < maxBands; ++band)
+    result[band] += transport * flux[band];
+  if (sunlitHours && transport > 0.0)
+    *sunlitHours += duration;
+}
 
 /// Kernel, visibility and direction of the link receiver <- sender.
 Link evaluateLink(HElement& receiver, HElement& sender, const Visibility& visibility, int samples);

@@ -228,12 +228,8 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
       continue;
     const bool open = horizons.clearlyAbove(sun.sight) ||
       (!horizons.clearlyBelow(sun.sight) && !this->Rays->occludedToward(point, normal, sun.direction));
-    if (!open)
-      continue;
-    for (int band = 0; band < maxBands; ++band)
-      result[band] += kernel * sun.flux[band];
-    if (sunlitHours)
-      *sunlitHours += sun.duration;
+    if (open)
+      addSunlight(kernel, sun.flux, sun.duration, result, sunlitHours);
   }
   return result;
 }
@@ -250,24 +246,33 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
     return;
   this->Lattice.reset(); // its own posts gather from the leaves, with pilots
   this->Gather->setPostLattice(nullptr);
-  std::unique_ptr<PostLattice> lattice;
-  WorkSplit::partThenShare(
-    this->Split, [&]() { lattice = this->gatherLatticePosts(root, hornNormals); },
-    [&]() { lattice->share(*this->Split); });
+  const TerrainGrid& grid = root.grid();
+  auto lattice = std::make_unique<PostLattice>(grid.postsX(), grid.postsY());
+  // Every second lattice post first; then the rest of the cells whose corners disagree
+  // (see latticeRefineAllowance), decided alike by every process from the shared first
+  // pass.
+  for (const bool first : { true, false })
+  {
+    if (!first)
+      lattice->refine(latticeRefineAllowance * this->Options.gatherError);
+    WorkSplit::partThenShare(
+      this->Split, [&]() { this->gatherLatticePosts(root, hornNormals, first, *lattice); },
+      [&]() { lattice->share(*this->Split); });
+  }
   this->Lattice = std::move(lattice);
   this->Gather->setPostLattice(this->Lattice.get());
 }
 
-std::unique_ptr<PostLattice> HierarchicalRadiosity::gatherLatticePosts(const TerrainPatch& root, bool hornNormals) const
+void HierarchicalRadiosity::gatherLatticePosts(
+  const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const
 {
   const TerrainGrid& grid = root.grid();
-  auto lattice = std::make_unique<PostLattice>(grid.postsX(), grid.postsY());
-  const int step = lattice->step();
+  const int step = lattice.step();
   tbb::parallel_for(0, (grid.postsY() - 1) / step + 1, [&](int lj) {
     const int j = lj * step;
     for (int i = 0; i < grid.postsX(); i += step)
     {
-      if (!PostLattice::gathers(i, j, this->Split))
+      if (!lattice.gatheredInPass(i, j, firstPass) || !PostLattice::gathers(i, j, this->Split))
         continue;
       const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
       if (!leaf)
@@ -285,10 +290,10 @@ std::unique_ptr<PostLattice> HierarchicalRadiosity::gatherLatticePosts(const Ter
       gathered.skyViewCorrection = result.skyViewFactor - sky.skyViewFactor;
       gathered.variance = result.gatherVariance;
       gathered.terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
-      lattice->set(i, j, gathered);
+      gathered.received = largestBand(result.irradiance[SunLight]) + largestBand(sky.irradiance);
+      lattice.set(i, j, gathered);
     }
   });
-  return lattice;
 }
 
 void HierarchicalRadiosity::gatherLeaves(bool terrains)

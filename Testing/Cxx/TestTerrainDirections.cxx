@@ -214,6 +214,65 @@ TEST(PostSky, PostsHoldTheirSkyAndCellsReadItBetweenThem)
   EXPECT_NEAR(read[0], 0.5 * (at(15, 16).irradiance[0] + at(16, 16).irradiance[0]), 1e-4 * open0[0]);
 }
 
+// Two passes: every second lattice post first; the others only in the coarse cells
+// whose corners disagree (relative to what each receives) or lack data, and at the far
+// edges; a post reads between the corners of the finest cell gathered around it.
+TEST(PostLattice, RefinesOnlyTheCellsWhoseCornersDisagree)
+{
+  // 21 x 17 posts, every 4th: lattice posts 0..5 x 0..4, coarse cells of 8 x 8 posts:
+  // (0, 0), (1, 0) complete; the column at i = 16..20 lacks its far corners.
+  PostLattice lattice(21, 17, 4);
+  EXPECT_TRUE(lattice.gatheredInPass(8, 8, true));
+  EXPECT_FALSE(lattice.gatheredInPass(4, 0, true));
+  EXPECT_FALSE(lattice.gatheredInPass(8, 8, false));
+  auto gathered = [](double reflected, double received) {
+    PostLattice::Gathered g;
+    g.reflected = uniformSpectrum(reflected);
+    g.variance = 1.0;
+    g.terrainSeen = 0.5;
+    g.received = received;
+    return g;
+  };
+  // Cell (0, 0): its corners find 10 and 10.2 W/m^2 per half of terrain seen, a spread
+  // of 0.2 per 1 terrain seen, 0.1 at theirs: within 0.001 x their 200 W/m^2. Cell
+  // (1, 0): 10 and 14.
+  for (int j : { 0, 8, 16 })
+    for (int i : { 0, 8, 16 })
+      lattice.set(i, j, gathered(i == 16 ? 14.0 : (j == 8 ? 10.1 : 10.0), 200.0));
+  lattice.refine(0.001);
+  EXPECT_FALSE(lattice.gatheredInPass(4, 0, false));  // inside cell (0, 0) alone
+  EXPECT_TRUE(lattice.gatheredInPass(12, 0, false));  // inside cell (1, 0)
+  EXPECT_TRUE(lattice.gatheredInPass(8, 4, false));   // on their common side
+  EXPECT_TRUE(lattice.gatheredInPass(20, 12, false)); // the edge column: always
+  EXPECT_FALSE(lattice.gatheredInPass(4, 12, false)); // cell (0, 1) agrees too
+  // Cell (0, 0) reads between its coarse corners: at (4, 4), the mean of 20, 20, 20.2,
+  // 20.2 per terrain seen.
+  PostLattice::PerTerrainSeen per;
+  ASSERT_TRUE(lattice.perTerrainSeenAt(4.0, 4.0, per));
+  EXPECT_DOUBLE_EQ(per.reflected[0], 0.5 * (20.0 + 20.2));
+  EXPECT_DOUBLE_EQ(lattice.around(5, 5).largestPerTerrainSeen, 20.2);
+  EXPECT_DOUBLE_EQ(lattice.around(5, 5).leastPerTerrainSeen, 20.0);
+  // Cell (1, 0) reads between its lattice posts once the second pass has them.
+  lattice.set(12, 0, gathered(12.0, 200.0));
+  lattice.set(12, 4, gathered(12.0, 200.0));
+  lattice.set(8, 4, gathered(10.0, 200.0));
+  lattice.set(16, 4, gathered(14.0, 200.0));
+  EXPECT_DOUBLE_EQ(lattice.around(13, 1).largestPerTerrainSeen, 28.0); // (16, 0), (16, 4)
+  EXPECT_DOUBLE_EQ(lattice.around(13, 1).leastPerTerrainSeen, 24.0);  // (12, 0), (12, 4)
+  Spectrum read;
+  ASSERT_TRUE(lattice.reflectedAt(12.0, 2.0, read));
+  EXPECT_DOUBLE_EQ(read[0], 12.0);
+  // Refined too where a corner has no data.
+  PostLattice holes(17, 17, 4);
+  for (int j : { 0, 8, 16 })
+    for (int i : { 0, 8, 16 })
+      if (!(i == 16 && j == 16))
+        holes.set(i, j, gathered(10.0, 200.0));
+  holes.refine(0.001);
+  EXPECT_FALSE(holes.gatheredInPass(4, 4, false));
+  EXPECT_TRUE(holes.gatheredInPass(12, 12, false));
+}
+
 TEST(PostLattice, ReadsBetweenItsPostsAndTellsTheLargestSpreadAround)
 {
   // 10 x 7 posts, every 4th: lattice posts at i = 0, 4, 8 and j = 0, 4.
