@@ -244,7 +244,10 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
   double dx = this->Ux * q + this->Vx * p, dy = this->Uy * q + this->Vy * p;
   const double length = std::hypot(dx, dy);
   if (!(length > 0.0))
+  {
+    std::fill_n(out, static_cast<std::size_t>(nx) * ny, std::uint16_t{ 0 }); // a grid without extent
     return;
+  }
   dx /= length, dy /= length;
   const float* xyz = t.vertices();
   auto position = [&](int i, int j) { return xyz + 3 * (static_cast<std::size_t>(j) * nx + i); };
@@ -331,9 +334,9 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
             continue;
           std::vector<Point>& hull = hulls[l];
           const int i = starts[first + l][0] + k * q, j = starts[first + l][1] + k * p;
+          const float* here = position(i, j);
           // Where the step ahead lies inside a grid without missing cells, every
           // crossing is on terrain and needs no check (most of a DEM).
-          const float* here = position(i, j);
           if (!complete || !inGrid(i + q, j + p))
           {
             // The crossings ahead of this post, farthest first (past the last post,
