@@ -30,6 +30,14 @@ bool leafLooksOpen(const PolygonElement& leaf)
   return leaf.SkyViewFactor >= 0.999 * openPlane &&
     largestBand(leaf.Irradiance[ReflectedLight]) <= 0.002 * leaf.receivedIrradiance();
 }
+
+// What a post receives beside the light from surfaces (its sun and its horizons' sky,
+// largest bands): what the lattice's spread is measured against, when its cells are
+// refined and when a post reads between them.
+double receivedBesideSurfaces(const Spectrum& sun, const PostSky::Value& sky)
+{
+  return largestBand(sun) + largestBand(sky.irradiance);
+}
 } // namespace
 
 PointIrradiance HierarchicalRadiosity::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
@@ -172,7 +180,7 @@ bool HierarchicalRadiosity::readFromLattice(const HorizonMap::Post& post, const 
   // Olinda against a gather at each post), where the accuracy work asks for 5 % wherever
   // it exceeds 1 % of the global.
   const double terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
-  const double received = largestBand(result.irradiance[SunLight]) + largestBand(sky.irradiance);
+  const double received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
   PostLattice::PerTerrainSeen found;
   if (terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen) >
       latticeSpreadAllowance * this->Options.gatherError * received ||
@@ -290,7 +298,7 @@ void HierarchicalRadiosity::gatherLatticePosts(
       gathered.skyViewCorrection = result.skyViewFactor - sky.skyViewFactor;
       gathered.variance = result.gatherVariance;
       gathered.terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
-      gathered.received = largestBand(result.irradiance[SunLight]) + largestBand(sky.irradiance);
+      gathered.received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
       lattice.set(i, j, gathered);
     }
   });

@@ -54,22 +54,17 @@ void PostLattice::refine(double allowedSpread)
   for (int cj = 0; cj < this->CoarseY; ++cj)
     for (int ci = 0; ci < this->CoarseX; ++ci)
     {
+      const Cell coarse{ 2 * ci, 2 * cj, 2 };
       bool refined = 2 * ci + 2 > this->Nx - 1 || 2 * cj + 2 > this->Ny - 1; // no coarse corner at the far side
-      double largest = -std::numeric_limits<double>::infinity(), least = std::numeric_limits<double>::infinity();
-      for (int dj = 0; dj < 2 && !refined; ++dj)
-        for (int di = 0; di < 2 && !refined; ++di)
-        {
-          const std::size_t k = this->index(2 * (ci + di), 2 * (cj + dj));
-          refined = this->Variance[k] < 0.0;
-          largest = std::max(largest, this->largestPerTerrainSeen(k));
-          least = std::min(least, this->largestPerTerrainSeen(k));
-        }
-      for (int dj = 0; dj < 2 && !refined; ++dj)
-        for (int di = 0; di < 2 && !refined; ++di)
-        {
-          const std::size_t k = this->index(2 * (ci + di), 2 * (cj + dj));
-          refined = this->TerrainSeen[k] * (largest - least) > allowedSpread * this->Received[k];
-        }
+      if (!refined)
+      {
+        const Around corners = this->aroundCell(coarse);
+        this->forEachCorner(coarse, [&](std::size_t k) {
+          refined = refined || this->Variance[k] < 0.0 ||
+            this->TerrainSeen[k] * (corners.largestPerTerrainSeen - corners.leastPerTerrainSeen) >
+              allowedSpread * this->Received[k];
+        });
+      }
       this->Refined[static_cast<std::size_t>(cj) * this->CoarseX + ci] = refined;
     }
 }
@@ -132,23 +127,32 @@ void PostLattice::share(const WorkSplit& split)
   split.shareWindows(this->TerrainSeen, this->Nx, this->Ny, this->Step);
 }
 
-PostLattice::Around PostLattice::around(int i, int j) const
+template <class Corner>
+void PostLattice::forEachCorner(const Cell& cell, const Corner& corner) const
 {
-  const Cell cell = this->cellAt(i, j);
-  Around result;
-  result.leastPerTerrainSeen = std::numeric_limits<double>::infinity();
   for (int dj = 0; dj < 2 && cell.lj + dj * cell.side < this->Ny; ++dj)
     for (int di = 0; di < 2 && cell.li + di * cell.side < this->Nx; ++di)
-    {
-      const std::size_t k = this->index(cell.li + di * cell.side, cell.lj + dj * cell.side);
-      if (this->Variance[k] < 0.0)
-        continue;
-      const double largest = this->largestPerTerrainSeen(k);
-      result.variance = std::max(result.variance, this->Variance[k]);
-      result.largestPerTerrainSeen = std::max(result.largestPerTerrainSeen, largest);
-      result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
-    }
+      corner(this->index(cell.li + di * cell.side, cell.lj + dj * cell.side));
+}
+
+PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
+{
+  Around result;
+  result.leastPerTerrainSeen = std::numeric_limits<double>::infinity();
+  this->forEachCorner(cell, [&](std::size_t k) {
+    if (this->Variance[k] < 0.0)
+      return;
+    const double largest = this->largestPerTerrainSeen(k);
+    result.variance = std::max(result.variance, this->Variance[k]);
+    result.largestPerTerrainSeen = std::max(result.largestPerTerrainSeen, largest);
+    result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
+  });
   return result;
+}
+
+PostLattice::Around PostLattice::around(int i, int j) const
+{
+  return this->aroundCell(this->cellAt(i, j));
 }
 
 bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const

@@ -109,6 +109,11 @@ private:
     int li, lj, side;
   };
   Cell cellAt(double u, double v) const;
+  /// Calls corner(k) for each corner of `cell` on the lattice (k: its index).
+  template <class Corner>
+  void forEachCorner(const Cell& cell, const Corner& corner) const;
+  /// What the gathered corners of `cell` found (see around).
+  Around aroundCell(const Cell& cell) const;
   template <class Value, class NodeValue>
   bool interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const;
   double largestPerTerrainSeen(std::size_t k) const;

@@ -190,13 +190,18 @@ double TerrainGrid::meanCosine(int i0, int j0, int i1, int j1, const Vec3& d) co
   return area > 0.0 ? weighted / area : 0.0;
 }
 
+bool TerrainGrid::surroundedByCells(int i, int j) const
+{
+  return i > 0 && j > 0 && i + 1 < this->Nx && j + 1 < this->Ny && this->cellValid(i - 1, j - 1) &&
+    this->cellValid(i, j - 1) && this->cellValid(i - 1, j) && this->cellValid(i, j);
+}
+
 Vec3 TerrainGrid::postNormal(int i, int j) const
 {
   // The triangles that have the post as a corner (six with this diagonal), as a
   // triangle mesh's vertex normal: the cell to the upper right contributes its lower
   // triangle, the lower-left one its upper triangle, the other two both.
-  if (i > 0 && j > 0 && i + 1 < this->Nx && j + 1 < this->Ny && this->cellValid(i - 1, j - 1) &&
-    this->cellValid(i, j - 1) && this->cellValid(i - 1, j) && this->cellValid(i, j))
+  if (this->surroundedByCells(i, j))
   {
     // Inside the grid the six triangles close a fan: their area vectors sum to half
     // the cross products of neighbouring spokes, read once each (a post's normal is
@@ -229,8 +234,7 @@ Vec3 TerrainGrid::postNormal(int i, int j) const
 
 Vec3 TerrainGrid::hornNormal(int i, int j) const
 {
-  if (i < 1 || j < 1 || i + 1 >= this->Nx || j + 1 >= this->Ny || !this->cellValid(i - 1, j - 1) ||
-    !this->cellValid(i, j - 1) || !this->cellValid(i - 1, j) || !this->cellValid(i, j))
+  if (!this->surroundedByCells(i, j))
     return this->postNormal(i, j);
   auto p = [this](int a, int b) { return this->post(a, b); };
   const Vec3 alongI = (p(i + 1, j - 1) + 2.0 * p(i + 1, j) + p(i + 1, j + 1)) - (p(i - 1, j - 1) + 2.0 * p(i - 1, j) + p(i - 1, j + 1));

@@ -95,6 +95,8 @@ public:
   /// The normal of post (i, j) by either convention (the outputs' choice, see the
   /// filter's PostNormals): Horn's where `horn`, the area-weighted one otherwise.
   Vec3 normalAt(int i, int j, bool horn) const { return horn ? this->hornNormal(i, j) : this->postNormal(i, j); }
+  /// Whether post (i, j) lies inside the grid with all four cells around it valid.
+  bool surroundedByCells(int i, int j) const;
   /// True when every triangle of the valid cells faces up (+z): the surface is then a
   /// height field over the ground plane, as a DEM is, and not a folded grid.
   bool facesUp() const;
