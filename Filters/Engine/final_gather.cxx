@@ -8,6 +8,7 @@
 #include "open_sky.h"
 #include "post_lattice.h"
 #include "post_sky.h"
+#include "post_sunlight.h"
 #include "sampling.h"
 #include "terrain_directions.h"
 #include "terrain_patch.h"
@@ -66,7 +67,10 @@ Spectrum FinalGather::radiosityAt(
   Spectrum sun{};
   if (this->SunCumulative.empty())
   {
-    sun = directSunlight(hit.point, front, this->Suns, this->Rays);
+    // On the scene's one terrain, where the hit's cell's posts all prove a sun seen or
+    // hidden, it takes their answer (see PostSunlight).
+    const SunsProven proven = hit.terrain == 0 && this->PostSuns ? this->PostSuns->between(hit.u, hit.v) : SunsProven{};
+    sun = directSunlight(hit.point, front, this->Suns, this->Rays, nullptr, proven);
   }
   else
   {

@@ -20,6 +20,7 @@ class OpenSky;
 class PolygonElement;
 class PostLattice;
 class PostSky;
+class PostSunlight;
 class SkyImportance;
 class TerrainPatch;
 class Visibility;
@@ -103,6 +104,10 @@ public:
   /// Posts of that terrain gathered first: a hit on it receives their light from
   /// surfaces, read between them, instead of its leaf's.
   void setPostLattice(const PostLattice* lattice) { this->Lattice = lattice; }
+  /// Which suns the posts of that terrain are proven to see or not (PostSunlight, in
+  /// the order of the suns given): a hit on it whose cell's posts all agree takes no
+  /// shadow ray for that sun.
+  void setPostSunlight(const PostSunlight* sunlight) { this->PostSuns = sunlight; }
   /// What leaves receive, gathered from each (LeafLight): a hit on one of them sends
   /// that instead of the hierarchy's values (null: the hierarchy's).
   void setLeafLight(const LeafLight* leaves) { this->Leaves = leaves; }
@@ -143,6 +148,7 @@ private:
   const HorizonSky* Horizons = nullptr;
   const PostSky* PostSkies = nullptr;
   const PostLattice* Lattice = nullptr;
+  const PostSunlight* PostSuns = nullptr;
   const LeafLight* Leaves = nullptr;
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit

@@ -547,7 +547,7 @@ HorizonMap::View::Reach& HorizonMap::View::reach(int k)
   this->Reached |= std::uint64_t{ 1 } << k;
   const HorizonMap& map = this->Map;
   const double r0 = map.exitDistance(this->I, this->J, k), r1 = map.exitDistance(this->I, this->J, this->next(k));
-  reach = Reach{};
+  reach.pastLeast = -1.0;
   reach.longer = r1 > r0 ? 1 : 0;
   reach.shorter = std::min(r0, r1);
   reach.pastShorter = map.riseOver(this->I, this->J, reach.shorter);

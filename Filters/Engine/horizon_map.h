@@ -144,13 +144,15 @@ public:
     /// Distances R of a bracket k (azimuths k, k + 1), as the tangent of the highest
     /// point's elevation seen from them, rise / R (no angle: compared with a sight's
     /// tangents).
+    /// No member initialisers: a View holds one per azimuth, each written when first
+    /// asked, and zeroing them all took more than a post's proofs.
     struct Reach
     {
-      double shorter = 0.0;     // the shorter exit distance of the two azimuths (m)
-      double pastShorter = 0.0; // R: that one
-      double pastLonger = 0.0;  // the longer, where a corner lies within; else 0
-      double pastLeast = -1.0;  // the least over the bracket (found when first asked)
-      int longer = 0;           // 0: azimuth k, 1: k + 1
+      double shorter;     // the shorter exit distance of the two azimuths (m)
+      double pastShorter; // R: that one
+      double pastLonger;  // the longer, where a corner lies within; else 0
+      double pastLeast;   // the least over the bracket (found when first asked; < 0 until)
+      int longer;         // 0: azimuth k, 1: k + 1
     };
     int next(int k) const { return k + 1 == this->Count ? 0 : k + 1; }
     double elevation(int k)

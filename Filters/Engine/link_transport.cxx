@@ -227,7 +227,7 @@ double skyViewOf(const HElement& sender, const Vec3& normal, double transport)
 }
 
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
-  const Visibility& visibility, double* sunlitHours)
+  const Visibility& visibility, double* sunlitHours, const SunsProven& proven)
 {
   Spectrum result{};
   for (std::size_t s = 0; s < suns.size(); ++s)
@@ -238,11 +238,14 @@ Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector
     // it open, else 0: transportToPoint's value, without its sampling machinery on this
     // hot path.
     double transport = 0.0;
+    const unsigned bit = s < 32 ? 1u << s : 0u;
+    if (proven.hidden & bit)
+      continue;
     if (!source.parallel())
       transport = transportToPoint(point, normal, sun, visibility, 1, 0);
     else if (const double kernel = source.kernel(normal); kernel > 0.0)
     {
-      if (!visibility.occludedToward(point, normal, source.direction()))
+      if ((proven.seen & bit) || !visibility.occludedToward(point, normal, source.direction()))
         transport = kernel;
     }
     addSunlight(transport, sun.emittance(), source.duration(), result, sunlitHours);

@@ -41,11 +41,18 @@ double sampledVisibility(HElement& receiver, HElement& sender, const Visibility&
 double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
   const Visibility& visibility, int samples, std::uint64_t seed);
 
+/// Suns already known seen or hidden from a point (bit s: suns[s]), which take no ray.
+struct SunsProven
+{
+  unsigned seen = 0, hidden = 0;
+};
+
 /// Direct sunlight at a point with a unit normal from every sun: normal irradiance x
-/// cosine where one ray from just above the point reaches the sun, else 0. With
-/// `sunlitHours`, also the durations of the suns that reach the point (sunshine).
+/// cosine where one ray from just above the point reaches the sun (or `proven` says it
+/// is seen), else 0. With `sunlitHours`, also the durations of the suns that reach the
+/// point (sunshine).
 Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector<HElement*>& suns,
-  const Visibility& visibility, double* sunlitHours = nullptr);
+  const Visibility& visibility, double* sunlitHours = nullptr, const SunsProven& proven = {});
 /// One sun's part of that: `transport` (its kernel where it is seen, else 0) x its flux,
 /// and its duration where it is seen.
 inline void addSunlight(double transport, const Spectrum& flux, double duration, Spectrum& result, double* sunlitHours)

@@ -8,6 +8,7 @@
 #include "polygon_element.h"
 #include "post_lattice.h"
 #include "post_sky.h"
+#include "post_sunlight.h"
 #include "terrain_grid.h"
 #include "terrain_patch.h"
 #include "sampling.h"
@@ -227,15 +228,24 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
   // A sun the post's horizons prove open or hidden takes no ray. Every point sun is a
   // parallel SunElement: its kernel and flux, kept beside its sight, need no virtual
   // call on this path (a year of hours tests 5 G suns at the posts of a 1025^2 DEM).
+  // The post's proofs were found for every post at once where gather hits read them.
+  const int nx = this->HeightFieldGrid->postsX();
+  const SunsProven proven = this->PostSuns
+    ? this->PostSuns->at(static_cast<int>(post.index % nx), static_cast<int>(post.index / nx))
+    : SunsProven{};
   HorizonMap::View horizons(*this->SunHorizons, post);
   Spectrum result{};
-  for (const MappedSun& sun : this->MappedSuns)
+  for (std::size_t s = 0; s < this->MappedSuns.size(); ++s)
   {
+    const MappedSun& sun = this->MappedSuns[s];
     const double kernel = glm::dot(normal, sun.direction);
     if (!(kernel > 0.0))
       continue;
-    const bool open = horizons.clearlyAbove(sun.sight) ||
-      (!horizons.clearlyBelow(sun.sight) && !this->Rays->occludedToward(point, normal, sun.direction));
+    const unsigned bit = s < 32 ? 1u << s : 0u;
+    const bool open = this->PostSuns
+      ? (proven.seen & bit) || (!(proven.hidden & bit) && !this->Rays->occludedToward(point, normal, sun.direction))
+      : horizons.clearlyAbove(sun.sight) ||
+        (!horizons.clearlyBelow(sun.sight) && !this->Rays->occludedToward(point, normal, sun.direction));
     if (open)
       addSunlight(kernel, sun.flux, sun.duration, result, sunlitHours);
   }

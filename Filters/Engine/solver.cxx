@@ -10,6 +10,7 @@
 #include "leaf_light.h"
 #include "post_lattice.h"
 #include "post_sky.h"
+#include "post_sunlight.h"
 #include "scene_geometry.h"
 #include "open_sky.h"
 #include "link_transport.h"
@@ -216,7 +217,9 @@ void HierarchicalRadiosity::restart()
   this->Gather->setPostSkies(nullptr);
   this->Gather->setPostLattice(nullptr);
   this->Gather->setLeafLight(nullptr);
+  this->Gather->setPostSunlight(nullptr);
   this->PostSkies.reset(); // of the last sky; the posts' horizons stay (the geometry's)
+  this->PostSuns.reset();
   this->Lattice.reset();
   this->Leaves.reset();
   this->resetHorizons();
@@ -258,6 +261,8 @@ void HierarchicalRadiosity::forgetMappedSuns()
 {
   this->SunHorizons = nullptr;
   this->MappedSuns.clear();
+  this->Gather->setPostSunlight(nullptr);
+  this->PostSuns.reset();
 }
 
 void HierarchicalRadiosity::findSunHorizons()
@@ -283,6 +288,21 @@ void HierarchicalRadiosity::findSunHorizons()
       sun->emittance(), source.duration() });
   }
   this->SunHorizons = map;
+  // Gather hits on the terrain read the suns its posts prove (where each hit takes
+  // every sun, the hierarchy's suns being the points' own, all parallel).
+  const bool everySunParallel = std::all_of(this->PointSuns.begin(), this->PointSuns.end(),
+    [](const HElement* sun) { return sun->asExternal()->parallel(); });
+  if (this->PostSkies && map == this->PostHorizons && this->Suns == this->PointSuns && everySunParallel &&
+    this->PointSuns.size() <= std::min(PostSunlight::maximumSuns, FinalGather::maximumSunsPerHit))
+  {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<HorizonMap::Sight> sights;
+    for (const MappedSun& sun : this->MappedSuns)
+      sights.push_back(sun.sight);
+    this->PostSuns = std::make_unique<PostSunlight>(*grid, *map, sights, this->Split);
+    this->Gather->setPostSunlight(this->PostSuns.get());
+    this->Stats.secondsHorizons += secondsSince(start);
+  }
 }
 
 OracleSettings HierarchicalRadiosity::oracleSettings() const

@@ -23,6 +23,7 @@ class FinalGather;
 class HorizonSky;
 class LeafLight;
 class PostSky;
+class PostSunlight;
 class SceneGeometry;
 class OpenSky;
 class PolygonElement;
@@ -334,6 +335,7 @@ private:
   };
   std::vector<MappedSun> MappedSuns;
   std::unique_ptr<PostSky> PostSkies;            // and the sky each of them receives
+  std::unique_ptr<PostSunlight> PostSuns;        // and the suns they prove seen or hidden (findSunHorizons)
   std::unique_ptr<PostLattice> Lattice;          // its posts gathered first (gatherPostLattice)
   std::unique_ptr<LeafLight> Leaves;             // what leaves receive, gathered (gatherLeaves)
   std::vector<PolygonElement*> Roots;

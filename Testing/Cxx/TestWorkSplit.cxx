@@ -1,7 +1,7 @@
 // Work split between processes (work_split.h), with threads standing in for MPI ranks:
 // each builds the horizons' map and the posts' skies from its share and the others'
 // broadcasts, and must hold what one process alone finds, bit for bit: the posts' skies
-// everywhere, the horizons in its own window of posts (a band of rows) only.
+// and suns everywhere, the horizons in its own window of posts (a band of rows) only.
 
 #include "angles.h"
 #include "cie_sky.h"
@@ -9,6 +9,7 @@
 #include "horizon_sky.h"
 #include "open_sky.h"
 #include "post_sky.h"
+#include "post_sunlight.h"
 #include "sky_hierarchy.h"
 #include "terrain_grids.h"
 #include "visibility.h"
@@ -144,6 +145,8 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
     const HorizonMap alone(*grid, dense);
     const HorizonSky aloneSky(rays, open, &alone);
     const PostSky aloneSkies(*grid, aloneSky, open, true);
+    const std::vector<HorizonMap::Sight> suns{ alone.sight(2.0, 15.0 * degree), alone.sight(-0.7, 30.0 * degree) };
+    const PostSunlight aloneSunlight(*grid, alone, suns);
     for (const int parts : { 2, 3 })
     {
       ThreadRanks ranks(parts, grid->postsY());
@@ -156,6 +159,7 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
         const HorizonSky mapped(rays, open, &map);
         const PostSky skies(*grid, mapped, open, true, &split);
         EXPECT_GT(split.Shares, sweeps); // the skies' rows too
+        const PostSunlight sunlight(*grid, map, suns, &split);
         int differences = 0;
         for (int j = 0; j < grid->postsY(); ++j)
           for (int i = 0; i < grid->postsX(); ++i)
@@ -173,6 +177,8 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
             ASSERT_TRUE(aloneSkies.found(post, normal, expected));
             differences += value.irradiance[0] != expected.irradiance[0];
             differences += value.skyViewFactor != expected.skyViewFactor;
+            differences += sunlight.at(i, j).seen != aloneSunlight.at(i, j).seen;
+            differences += sunlight.at(i, j).hidden != aloneSunlight.at(i, j).hidden;
           }
         EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts << (dense ? ", dense" : "");
       });

@@ -1,0 +1,63 @@
+#include "post_sunlight.h"
+
+#include "error.h"
+#include "terrain_grid.h"
+#include "work_split.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace terralux
+{
+PostSunlight::PostSunlight(
+  const TerrainGrid& terrain, const HorizonMap& map, const std::vector<HorizonMap::Sight>& suns, const WorkSplit* split)
+  : PostsX(terrain.postsX())
+  , PostsY(terrain.postsY())
+  , Suns(suns.size())
+{
+  if (suns.size() > maximumSuns)
+    throw Error("PostSunlight records at most 4 suns a post");
+  const int nx = this->PostsX, ny = this->PostsY;
+  const WorkSplit::Window own =
+    split ? split->window(split->part()).clampedTo(nx, ny) : WorkSplit::Window{ 0, nx - 1, 0, ny - 1 };
+  WorkSplit::partThenShare(
+    split,
+    [&]() {
+      this->Bits.resize(static_cast<std::size_t>(nx) * ny);
+      tbb::parallel_for(own.j0, own.j1 + 1, [&](int j) {
+        for (int i = own.i0; i <= own.i1; ++i)
+        {
+          const std::size_t index = static_cast<std::size_t>(j) * nx + i;
+          std::uint8_t bits = 0;
+          if (terrain.postUsed(i, j))
+          {
+            HorizonMap::View horizons(map, { true, index });
+            for (std::size_t s = 0; s < suns.size(); ++s)
+            {
+              if (horizons.clearlyAbove(suns[s]))
+                bits |= static_cast<std::uint8_t>(1u << s);
+              else if (horizons.clearlyBelow(suns[s]))
+                bits |= static_cast<std::uint8_t>(1u << (s + maximumSuns));
+            }
+          }
+          this->Bits[index] = bits;
+        }
+      });
+    },
+    [&]() { split->shareWindows(this->Bits, nx, ny); });
+}
+
+SunsProven PostSunlight::between(double u, double v) const
+{
+  // The cell's four posts (the last cell's for parameters on the grid's far edges).
+  const int nx = this->PostsX, ny = this->PostsY;
+  if (nx < 2 || ny < 2 || !(std::isfinite(u) && std::isfinite(v)))
+    return {};
+  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, nx - 2);
+  const int j = std::clamp(static_cast<int>(std::floor(v)), 0, ny - 2);
+  const SunsProven a = this->at(i, j), b = this->at(i + 1, j), c = this->at(i, j + 1), d = this->at(i + 1, j + 1);
+  return { a.seen & b.seen & c.seen & d.seen, a.hidden & b.hidden & c.hidden & d.hidden };
+}
+} // namespace terralux
