@@ -1,7 +1,9 @@
 #include "vtkRadiosityOutputs.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataArrayRange.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -46,6 +48,18 @@ std::array<Spectrum, quantities> quantitiesOf(const terralux::PointValues& v)
     v.irradiance[terralux::ReflectedLight], v.radiosity };
 }
 
+// vtkRadiosityOutputs::FillWithNaN's worker, for each real value type.
+struct FillNaN
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* typed) const
+  {
+    using Value = vtk::GetAPIType<ArrayT>;
+    auto values = vtk::DataArrayValueRange(typed);
+    vtkSMPTools::Fill(values.begin(), values.end(), std::numeric_limits<Value>::quiet_NaN());
+  }
+};
+
 // A point array of `components` values per point, NaN until set.
 vtkSmartPointer<vtkDoubleArray> unsetArray(const char* name, int components, vtkIdType count)
 {
@@ -53,10 +67,8 @@ vtkSmartPointer<vtkDoubleArray> unsetArray(const char* name, int components, vtk
   array->SetName(name);
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(count);
-  // On every core: the array's memory is first touched here, and the system's zeroing
-  // of its pages on one core took 3 s of a 4097^2 grid's solve.
-  double* values = array->GetPointer(0);
-  vtkSMPTools::Fill(values, values + count * components, std::numeric_limits<double>::quiet_NaN());
+  // On every core (one core's zeroing of the pages took 3 s of a 4097^2 grid's solve).
+  vtkRadiosityOutputs::FillWithNaN(array);
   return array;
 }
 
@@ -235,4 +247,12 @@ void vtkRadiosityOutputs::AddFieldValue(vtkFieldData* fieldData, const char* nam
   array->SetName(name);
   array->InsertNextValue(value);
   fieldData->AddArray(array);
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityOutputs::FillWithNaN(vtkDataArray* array)
+{
+  using Reals = vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>;
+  if (array && !Reals::Execute(array, FillNaN{}))
+    array->Fill(std::numeric_limits<double>::quiet_NaN()); // integers: as VTK casts NaN, on one core
 }

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+class vtkDataArray;
 class vtkDataSet;
 class vtkFieldData;
 class vtkPolyData;
@@ -59,6 +60,10 @@ struct vtkRadiosityOutputs
   static void BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output);
   /// Adds a one-value double array to field data (counts, seconds).
   static void AddFieldValue(vtkFieldData* fieldData, const char* name, double value);
+  /// Every value NaN ("not computed"), written on every core: an output array's memory
+  /// is first touched here, and the system zeroes its pages on the core that touches
+  /// them. Arrays of integers take vtkDataArray::Fill's value, on one core.
+  static void FillWithNaN(vtkDataArray* array);
 };
 
 #endif

@@ -1,5 +1,7 @@
 #include "vtkTerrainPieces.h"
 
+#include "vtkRadiosityOutputs.h"
+
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -169,7 +171,7 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
     array->SetName(model->GetName());
     array->SetNumberOfComponents(model->GetNumberOfComponents());
     array->SetNumberOfTuples(count);
-    array->Fill(std::numeric_limits<double>::quiet_NaN());
+    vtkRadiosityOutputs::FillWithNaN(array);
     if (vtkInformation* info = model->HasInformation() ? model->GetInformation() : nullptr)
       array->GetInformation()->Copy(info);
     result->GetPointData()->AddArray(array);

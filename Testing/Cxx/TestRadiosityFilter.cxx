@@ -6,6 +6,7 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkHierarchicalRadiosity.h"
 #include "vtkImageData.h"
 #include "vtkMultiBlockDataSet.h"
@@ -14,6 +15,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRadiosityOutputs.h"
+#include "vtkSOADataArrayTemplate.h"
 #include "vtkSkySource.h"
 #include "vtkSunSource.h"
 
@@ -295,4 +298,25 @@ TEST(RadiosityFilter, BadInput)
   EXPECT_EQ(fieldValue(radiosity->GetOutput(), "DegeneratePolygons"), 2.0);
   // The input is not modified.
   EXPECT_EQ(mixed->GetPointData()->GetNumberOfArrays(), 0);
+}
+
+TEST(RadiosityOutputs, FillWithNaNReachesEveryValueOfEveryRealArray)
+{
+  // Output arrays and the GeoTIFF writer's whole-grid bands start as "not computed".
+  vtkNew<vtkDoubleArray> doubles;
+  vtkNew<vtkFloatArray> floats;
+  vtkNew<vtkSOADataArrayTemplate<float>> structOfArrays; // not VTK's usual layout
+  for (vtkDataArray* array : std::initializer_list<vtkDataArray*>{ doubles, floats, structOfArrays })
+  {
+    array->SetNumberOfComponents(3);
+    array->SetNumberOfTuples(100003);
+    array->Fill(1.0);
+    vtkRadiosityOutputs::FillWithNaN(array);
+    vtkIdType notNaN = 0;
+    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+      for (int c = 0; c < 3; ++c)
+        notNaN += !std::isnan(array->GetComponent(t, c));
+    EXPECT_EQ(notNaN, 0) << array->GetClassName();
+  }
+  vtkRadiosityOutputs::FillWithNaN(nullptr); // nothing to fill
 }
