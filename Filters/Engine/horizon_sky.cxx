@@ -88,11 +88,11 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const Horizon
       for (int j = 0; j < piecesPerSector; ++j)
       {
         const double phi0 = from + j * width;
-        MapPiece mapPiece{ phi0, phi0 + width, sinCos(phi0), sinCos(phi0 + width), sinCos(phi0 + 0.5 * width) };
+        MapPiece mapPiece{ phi0, phi0 + width, sinCos(phi0), sinCos(phi0 + width), sinCos(phi0 + 0.5 * width), 0.0, 0.0, 0.0, {} };
         this->sumPiece(mapPiece);
         table.pieces.push_back(std::move(mapPiece));
       }
-      MapPiece sector{ from, to, sinCos(from), sinCos(to), sinCos(0.5 * (from + to)) };
+      MapPiece sector{ from, to, sinCos(from), sinCos(to), sinCos(0.5 * (from + to)), 0.0, 0.0, 0.0, {} };
       this->sumPiece(sector);
       table.sectors.push_back(std::move(sector));
     }

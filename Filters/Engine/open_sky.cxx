@@ -3,10 +3,9 @@
 #include "angles.h"
 #include "sky_patch_element.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace terralux
 {
@@ -123,21 +122,40 @@ constexpr int tableValues = maxBands + 1;
 void OpenSky::tabulate(int side)
 {
   const int vertices = side + 1;
-  std::vector<double> table(static_cast<std::size_t>(vertices) * vertices * tableValues);
-  tbb::parallel_for(0, vertices, [&](int row) {
-    for (int column = 0; column < vertices; ++column)
-    {
-      Spectrum e;
-      double omega;
-      this->exactIrradiance(fromSquare(-1.0 + 2.0 * column / side, -1.0 + 2.0 * row / side), e, omega);
-      double* out = &table[(static_cast<std::size_t>(row) * vertices + column) * tableValues];
-      for (int band = 0; band < maxBands; ++band)
-        out[band] = e[band];
-      out[maxBands] = omega;
-    }
-  });
-  this->Table = std::move(table);
+  const std::size_t count = static_cast<std::size_t>(vertices) * vertices;
+  this->Table.assign(count * tableValues, 0.0);
+  this->TableState = std::make_unique<std::atomic<std::uint8_t>[]>(count);
+  for (std::size_t v = 0; v < count; ++v)
+    this->TableState[v].store(0, std::memory_order_relaxed);
   this->TableSide = side;
+}
+
+const double* OpenSky::tableVertex(int row, int column) const
+{
+  // 0: not computed; 1: one thread computes it; 2: ready. A thread that finds another
+  // computing it waits the few tens of microseconds that takes.
+  constexpr std::uint8_t computing = 1, ready = 2;
+  const int side = this->TableSide;
+  const std::size_t index = static_cast<std::size_t>(row) * (side + 1) + column;
+  double* values = &this->Table[index * tableValues];
+  std::atomic<std::uint8_t>& state = this->TableState[index];
+  if (state.load(std::memory_order_acquire) == ready)
+    return values;
+  std::uint8_t expected = 0;
+  if (state.compare_exchange_strong(expected, computing, std::memory_order_acq_rel))
+  {
+    Spectrum e;
+    double omega;
+    this->exactIrradiance(fromSquare(-1.0 + 2.0 * column / side, -1.0 + 2.0 * row / side), e, omega);
+    for (int band = 0; band < maxBands; ++band)
+      values[band] = e[band];
+    values[maxBands] = omega;
+    state.store(ready, std::memory_order_release);
+    return values;
+  }
+  while (state.load(std::memory_order_acquire) != ready)
+    std::this_thread::yield();
+  return values;
 }
 
 void OpenSky::irradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const
@@ -146,7 +164,7 @@ void OpenSky::irradiance(const Vec3& n, Spectrum& irradiance, double& projectedS
   double a = 0.0, b = 0.0;
   if (n.z > 0.0)
     toSquare(n, a, b);
-  const int side = this->TableSide, vertices = side + 1;
+  const int side = this->TableSide;
   if (side == 0 || !(n.z > 0.0) || std::abs(a) + std::abs(b) > 1.0 - 6.0 / std::max(side, 1))
   {
     this->exactIrradiance(n, irradiance, projectedSolidAngle);
@@ -156,10 +174,10 @@ void OpenSky::irradiance(const Vec3& n, Spectrum& irradiance, double& projectedS
   const double y = std::clamp(0.5 * (b + 1.0) * side, 0.0, static_cast<double>(side));
   const int column = std::min(static_cast<int>(x), side - 1), row = std::min(static_cast<int>(y), side - 1);
   const double fx = x - column, fy = y - row;
-  const double* v00 = &this->Table[(static_cast<std::size_t>(row) * vertices + column) * tableValues];
-  const double* v10 = v00 + tableValues;
-  const double* v01 = v00 + static_cast<std::size_t>(vertices) * tableValues;
-  const double* v11 = v01 + tableValues;
+  const double* v00 = this->tableVertex(row, column);
+  const double* v10 = this->tableVertex(row, column + 1);
+  const double* v01 = this->tableVertex(row + 1, column);
+  const double* v11 = this->tableVertex(row + 1, column + 1);
   double values[tableValues];
   for (int k = 0; k < tableValues; ++k)
     values[k] = (1.0 - fy) * ((1.0 - fx) * v00[k] + fx * v10[k]) + fy * ((1.0 - fx) * v01[k] + fx * v11[k]);

@@ -6,7 +6,10 @@
 
 #include "radiosity_types.h"
 
+#include <atomic>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace terralux
 {
@@ -32,6 +35,8 @@ public:
   /// is smooth (a radiance integrated against a clamped cosine), so at side 128 the
   /// table is within about 1e-5 of the exact value, for a few look-ups instead of a
   /// recursion over the sky. Worth it for many points (a terrain of a million posts).
+  /// Each vertex is computed when first read, by one thread, exactly: a terrain's
+  /// normals fill part of the hemisphere, and the values never depend on the order.
   void tabulate(int side);
   /// Radiance (W/m^2/sr) of the finest sky cell holding unit direction d; 0 below the horizon.
   Spectrum radiance(const Vec3& d) const;
@@ -59,7 +64,11 @@ private:
   int Side = 0;                 // the finest level's cells per parameter
   int Bands = 1;
   std::vector<Spectrum> Finest; // their radiance, row by row of altitude
+  /// Vertex (row, column) of the table, computed if it is not yet.
+  const double* tableVertex(int row, int column) const;
+
   int TableSide = 0;
-  std::vector<double> Table; // per vertex: the bands' irradiance, then the projected solid angle
+  mutable std::vector<double> Table; // per vertex: the bands' irradiance, then the projected solid angle
+  mutable std::unique_ptr<std::atomic<std::uint8_t>[]> TableState; // per vertex: see tableVertex
 };
 } // namespace terralux

@@ -13,6 +13,7 @@
 #include "visibility.h"
 
 #include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
 
 #include <cmath>
 
@@ -134,6 +135,33 @@ TEST(OpenSky, TheTableOverNormalsHoldsTheExactValues)
   table.irradiance(wall, t, tableOmega);
   EXPECT_EQ(e[0], t[0]);
   EXPECT_EQ(omega, tableOmega);
+}
+
+TEST(OpenSky, TheTableReadsTheSameWhateverThreadFillsItFirst)
+{
+  // The table's vertices are computed when first read: many threads reading the same
+  // few normals at once (the posts of one slope) get what one thread reads in order.
+  const SkyHierarchy sky(CieGeneralSky(5, directionFromZenithAzimuth(30.0 * degree, 1.0)), 100.0, 6);
+  OpenSky alone(sky), shared(sky);
+  alone.tabulate(64);
+  shared.tabulate(64);
+  std::vector<Vec3> normals;
+  for (int k = 0; k < 2000; ++k)
+  {
+    const double slope = (k % 40) * 2.0 * degree, azimuth = (k % 7) * 0.9; // many repeats
+    normals.emplace_back(std::sin(slope) * std::cos(azimuth), std::sin(slope) * std::sin(azimuth), std::cos(slope));
+  }
+  std::vector<Spectrum> expected(normals.size()), found(normals.size());
+  std::vector<double> expectedOmega(normals.size()), foundOmega(normals.size());
+  for (std::size_t k = 0; k < normals.size(); ++k)
+    alone.irradiance(normals[k], expected[k], expectedOmega[k]);
+  tbb::parallel_for(std::size_t(0), normals.size(),
+    [&](std::size_t k) { shared.irradiance(normals[k], found[k], foundOmega[k]); });
+  int differences = 0;
+  for (std::size_t k = 0; k < normals.size(); ++k)
+    differences += found[k][0] != expected[k][0] || foundOmega[k] != expectedOmega[k];
+  EXPECT_EQ(differences, 0);
+  EXPECT_GT(expected[0][0], 0.0);
 }
 
 TEST(OpenSky, RadianceTowardAPatchCentreIsThatPatchsRadiance)
