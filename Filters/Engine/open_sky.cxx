@@ -10,8 +10,7 @@
 namespace terralux
 {
 OpenSky::OpenSky(const SkyHierarchy& sky)
-  : Sky(sky)
-  , Deepest(std::min(sky.finestLevel(), 4))
+  : Deepest(std::min(sky.finestLevel(), 4))
   , Side(SkyHierarchy::cellsPerSide(sky.finestLevel()))
   , Bands(std::clamp(sky.bands(), 1, maxBands))
 {
@@ -72,10 +71,10 @@ void OpenSky::accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, 
   const int side = towardCentre > radius ? 1 : (towardCentre < -radius ? -1 : patch.sideOf(n));
   if (side < 0)
     return;
-  // The plane's horizon crosses the patch: split it while what it gives could matter,
-  // since its radiance is taken as its mean where splitting stops.
+  // The plane's horizon crosses the patch: split it while it gives anything, since its
+  // radiance is taken as its mean where splitting stops.
   if (side == 0 && level < this->Deepest &&
-    (level < 3 || patch.projectedSolidAngle(n) * largestBand(patch.emittance()) > 1e-4 * this->Brightest))
+    (level < 3 || patch.projectedSolidAngle(n) * largestBand(patch.emittance()) > 0.0))
   {
     for (int k = 0; k < 4; ++k)
       this->accumulate(level + 1, 2 * iu + k / 2, 2 * iv + k % 2, n, e, omega);

@@ -26,8 +26,8 @@ public:
   /// solid angle of the sky above both the plane and the horizon (pi x the sky view
   /// factor of an open plane): patches wholly in front of the plane exactly through
   /// their irradiance vectors, those its horizon crosses split (to level 3 at least, on
-  /// toward the sky map's finest level, at most 4, while one gives more than 1e-4 of the
-  /// horizontal irradiance) and integrated exactly in solid angle there.
+  /// toward the sky map's finest level, at most 4, while one gives anything) and
+  /// integrated exactly in solid angle there.
   /// With a table (tabulate), normals above the horizon are read from it instead.
   void irradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const;
   /// Tabulates irradiance() over the upper hemisphere of normals (an octahedral map of
@@ -56,9 +56,7 @@ private:
   void exactIrradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const;
   void accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, double& omega) const;
 
-  const SkyHierarchy& Sky;
   int Deepest = 0;
-  double Brightest = 0.0; // largest horizontal irradiance over the bands
   std::vector<std::vector<std::unique_ptr<SkyPatchElement>>> Levels; // [level][iu * side + iv]
   std::vector<std::vector<double>> Radii; // the same: largest |d - centre| over each patch
   int Side = 0;                 // the finest level's cells per parameter
