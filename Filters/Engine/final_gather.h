@@ -77,7 +77,8 @@ public:
   /// What a hit sends is its leaf's radiosity except for direct sunlight, the sharpest
   /// part of it: that is taken at the hit itself, with its own triangle's cosine and a
   /// shadow ray (a leaf of several cells of a rough terrain averages slopes the
-  /// grazing sun lights very differently).
+  /// grazing sun lights very differently), or the answer its cell's posts all prove
+  /// (setPostSunlight).
   ///
   /// With a sky (setSky), the sky at the point is the open sky of its plane (exact,
   /// OpenSky) minus what the scene hides: from the point's horizon (setHorizons), or
