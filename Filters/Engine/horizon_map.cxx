@@ -129,7 +129,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
     this->AzimuthDirections.push_back({ x, y });
   }
   const int nx = terrain.postsX(), ny = terrain.postsY();
-  this->Held = split ? split->window(split->part()).clampedTo(nx, ny) : WorkSplit::Window{ 0, nx - 1, 0, ny - 1 };
+  this->Held = WorkSplit::ownWindow(split, nx, ny);
   if (this->Held.empty())
     this->Held = {};
   this->HeldX = static_cast<std::size_t>(this->Held.i1 - this->Held.i0 + 1);

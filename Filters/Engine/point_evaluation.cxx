@@ -242,10 +242,9 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
     if (!(kernel > 0.0))
       continue;
     const unsigned bit = s < 32 ? 1u << s : 0u;
-    const bool open = this->PostSuns
-      ? (proven.seen & bit) || (!(proven.hidden & bit) && !this->Rays->occludedToward(point, normal, sun.direction))
-      : horizons.clearlyAbove(sun.sight) ||
-        (!horizons.clearlyBelow(sun.sight) && !this->Rays->occludedToward(point, normal, sun.direction));
+    const bool seen = this->PostSuns ? (proven.seen & bit) != 0 : horizons.clearlyAbove(sun.sight);
+    const bool hidden = !seen && (this->PostSuns ? (proven.hidden & bit) != 0 : horizons.clearlyBelow(sun.sight));
+    const bool open = seen || (!hidden && !this->Rays->occludedToward(point, normal, sun.direction));
     if (open)
       addSunlight(kernel, sun.flux, sun.duration, result, sunlitHours);
   }

@@ -23,8 +23,7 @@ PostSky::PostSky(
   const std::size_t posts = static_cast<std::size_t>(nx) * ny;
   // With a split, each process finds the skies of its window's posts (whose horizons
   // it holds), and gets the others' (gather rays read them wherever they land).
-  const WorkSplit::Window own =
-    split ? split->window(split->part()).clampedTo(nx, ny) : WorkSplit::Window{ 0, nx - 1, 0, ny - 1 };
+  const WorkSplit::Window own = WorkSplit::ownWindow(split, nx, ny);
   WorkSplit::partThenShare(
     split,
     [&]() {

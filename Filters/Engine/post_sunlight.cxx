@@ -20,8 +20,7 @@ PostSunlight::PostSunlight(
   if (suns.size() > maximumSuns)
     throw Error("PostSunlight records at most 4 suns a post");
   const int nx = this->PostsX, ny = this->PostsY;
-  const WorkSplit::Window own =
-    split ? split->window(split->part()).clampedTo(nx, ny) : WorkSplit::Window{ 0, nx - 1, 0, ny - 1 };
+  const WorkSplit::Window own = WorkSplit::ownWindow(split, nx, ny);
   WorkSplit::partThenShare(
     split,
     [&]() {

@@ -41,6 +41,12 @@ public:
     }
   };
   virtual Window window(int part) const = 0;
+  /// The posts of an nx x ny grid this process computes: its window's with `split`,
+  /// every post without one.
+  static Window ownWindow(const WorkSplit* split, int nx, int ny)
+  {
+    return split ? split->window(split->part()).clampedTo(nx, ny) : Window{ 0, nx - 1, 0, ny - 1 };
+  }
   /// Once each process has computed `values` at the posts of its window (one value per
   /// post of an nx x ny grid, in grid order; or, with `step`, per post of a lattice of
   /// every step-th post each way, nx x ny of them): every window's values, from its
