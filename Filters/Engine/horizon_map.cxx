@@ -155,19 +155,28 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
       received.resize(this->PostCount);
     },
     []() {});
+  // Azimuths of alike cost sweep in the same round: a step's crossings set its cost (none
+  // along the grid's axes, 11 for slope 2/5), and a round lasts as long as its slowest.
+  std::vector<std::size_t> schedule(slots);
+  std::iota(schedule.begin(), schedule.end(), std::size_t{ 0 });
+  auto crossingsOfSlot = [&](std::size_t slot) {
+    return crossingsOf(steps[order[slot]][0], steps[order[slot]][1]).size();
+  };
+  std::stable_sort(schedule.begin(), schedule.end(),
+    [&](std::size_t a, std::size_t b) { return crossingsOfSlot(a) < crossingsOfSlot(b); });
   const int parts = split->parts(), part = split->part();
   for (std::size_t first = 0; first < slots; first += static_cast<std::size_t>(parts))
     WorkSplit::partThenShare(
       split,
       [&]() {
-        const std::size_t slot = first + static_cast<std::size_t>(part);
-        if (slot < slots)
-          this->sweep(steps[order[slot]][0], steps[order[slot]][1], swept.data());
+        const std::size_t round = first + static_cast<std::size_t>(part);
+        if (round < slots)
+          this->sweep(steps[order[schedule[round]]][0], steps[order[schedule[round]]][1], swept.data());
       },
       [&]() {
         for (int owner = 0; owner < parts && first + static_cast<std::size_t>(owner) < slots; ++owner)
         {
-          const std::size_t slot = first + static_cast<std::size_t>(owner);
+          const std::size_t slot = schedule[first + static_cast<std::size_t>(owner)];
           std::vector<std::uint16_t>& whole = owner == part ? swept : received;
           split->share(whole.data(), this->PostCount * sizeof(std::uint16_t), owner);
           for (int j = this->Held.j0; j <= this->Held.j1; ++j)

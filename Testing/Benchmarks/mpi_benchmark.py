@@ -39,14 +39,16 @@ ok = writer.Write()
 seconds = time.perf_counter() - start
 points = solver.GetOutputDataObject(0).GetNumberOfPoints()
 field = solver.GetOutputDataObject(0).GetFieldData()
-phase = {name: field.GetArray(name).GetValue(0) for name in ("SecondsRefine", "SecondsGather", "SecondsPoints", "Steps")
+phase = {name: field.GetArray(name).GetValue(0) for name in ("SecondsVisibilityBuild", "SecondsRefine", "SecondsHorizons", "SecondsPoints",
+                                                          "SecondsLattice", "Steps")
          if field.GetArray(name) is not None}
 peak_mib = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 rows = MPI.COMM_WORLD.gather((rank, points, seconds, peak_mib, phase, ok), root=0)
 if rank == 0:
     for r, posts, s, mib, phases, written in rows:
-        print("  rank %d of %d: %9d posts, %7.1f s (refine %.1f, gather %.1f, points %.1f%s), peak %6.0f MiB%s"
-              % (r, size, posts, s, phases.get("SecondsRefine", 0), phases.get("SecondsGather", 0),
-                 phases.get("SecondsPoints", 0), ", %d steps" % phases["Steps"] if "Steps" in phases else "",
-                 mib, "" if written else ", WRITE FAILED"))
+        print("  rank %d of %d: %9d posts, %7.1f s (Embree %.1f, refine %.1f, horizons and skies %.1f, points %.1f"
+              " of which lattice %.1f%s), peak %6.0f MiB%s"
+              % (r, size, posts, s, phases.get("SecondsVisibilityBuild", 0), phases.get("SecondsRefine", 0),
+                 phases.get("SecondsHorizons", 0), phases.get("SecondsPoints", 0), phases.get("SecondsLattice", 0),
+                 ", %d steps" % phases["Steps"] if "Steps" in phases else "", mib, "" if written else ", WRITE FAILED"))
 controller.Finalize(1)
