@@ -6,6 +6,10 @@
 # threads; TerraLux's benchmark_radiosity (sun and CIE clear sky at 09:00 of the same
 # day, reflectance 0.2, interreflection, the defaults: tolerance 1e-3, 4 samples) at
 # every post and with EvaluateAtPoints off. Prints the times, peak memory and ratios.
+# Then the same physics in GRASS: r.sun takes no terrain off the diffuse sky unless
+# given horizons, so r.horizon finds them first at TerraLux's 32 azimuths (every 11.25
+# deg; one thread, it has no nprocs) and r.sun reads them (horizon_basename); skipped
+# with RSUN_HORIZONS=0 (r.horizon takes about 80 s at 1025^2).
 # Usage: Testing/Benchmarks/run_rsun_instant_benchmark.sh [BUILD_DIR] [DEM ...]
 #   default DEM: the 1025^2 fractal (made by make_fractal_dem).
 set -euo pipefail
@@ -40,4 +44,19 @@ GRASS
       "$(awk -v a="${t}" -v b="${rsun}" 'BEGIN { printf "%.2f", a / b }') x r.sun"
     sed 's/^/    /' "${work}/${mode}.out" | tail -n 1
   done
+  [ "${RSUN_HORIZONS:-1}" = 0 ] && continue
+  rsun_script "${dem}" "${work}" "${name}_horizons"
+  cat >> "${work}/${name}_horizons.sh" <<GRASS
+/usr/bin/time -f "elapsed %e peak %M" -o "${work}/horizon.time" \
+  r.horizon elevation=dem step=11.25 output=horizon --overwrite --quiet
+r.sun elevation=dem slope=slope aspect=aspect day=356 time=9.0 linke_value=3.0 albedo_value=0.2 \
+  horizon_basename=horizon horizon_step=11.25 \
+  beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob nprocs=2 --overwrite --quiet
+GRASS
+  /usr/bin/time -f "elapsed %e peak %M" -o "${work}/rsun_horizons.time" \
+    grass "${work}/${name}_horizons/PERMANENT" --exec bash "${work}/${name}_horizons.sh" >/dev/null 2>&1
+  both="$(seconds "${work}/rsun_horizons.time")"
+  echo "  r.horizon (32 azimuths) then r.sun with them, the same session: $(printf '%6.1f' "${both}") s" \
+    "(r.horizon $(seconds "${work}/horizon.time") s), $(peak_mib "${work}/rsun_horizons.time") MiB;" \
+    "TerraLux points $(awk -v a="$(seconds "${work}/points.time")" -v b="${both}" 'BEGIN { printf "%.3f", a / b }') x"
 done
