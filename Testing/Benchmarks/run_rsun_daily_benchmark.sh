@@ -6,7 +6,9 @@
 # 30-minute steps (Horn normals as r.slope.aspect; --points and --fast), and how their
 # beam and global sums compare post by post (scripts: compare_rasters.py). With
 # TERRALUX_BENCH_YEAR=1, also a year of hourly steps at every post (2024), against the
-# same run's r.sun day (the time-integration issue's figure: at most 10 x).
+# same run's r.sun day (the time-integration issue's figure: at most 10 x) and against
+# r.sun's year as a GIS user gets it, a daily run per day at 1-hour steps: twelve days
+# (the 21st of each month) timed in one GRASS session, their mean times 365.
 # Usage: Testing/Benchmarks/run_rsun_daily_benchmark.sh [BUILD_DIR] [DEM ...]
 #   default DEMs: Olinda and the 1025^2 fractal (made by make_fractal_dem).
 set -euo pipefail
@@ -51,5 +53,18 @@ GRASS
     t="$(seconds "${work}/${name}.year.time")"
     echo "  terralux.irradiation, a year hourly: $(printf '%6.1f' "${t}") s, $(peak_mib "${work}/${name}.year.time") MiB," \
       "$(awk -v a="${t}" -v b="${rsun}" 'BEGIN { printf "%.2f", a / b }') x r.sun's day"
+    cat > "${work}/${name}.days.sh" <<GRASS
+set -e
+for day in 21 52 81 112 142 173 203 234 265 295 326 356; do
+  r.sun elevation=dem slope=slope aspect=aspect day=\${day} step=1.0 linke_value=3.0 albedo_value=0.2 \
+    glob_rad=glob nprocs=2 --overwrite --quiet
+done
+GRASS
+    /usr/bin/time -f "elapsed %e peak %M" -o "${work}/${name}.days.time" \
+      grass "${work}/${name}/PERMANENT" --exec bash "${work}/${name}.days.sh" >/dev/null 2>&1
+    days="$(seconds "${work}/${name}.days.time")"
+    year="$(awk -v d="${days}" 'BEGIN { printf "%.0f", d / 12 * 365 }')"
+    echo "  r.sun's year, a run per day at 1-hour steps: about ${year} s (12 days in ${days} s, x 365 / 12);" \
+      "TerraLux's year $(awk -v a="${t}" -v b="${year}" 'BEGIN { printf "%.3f", a / b }') x that"
   fi
 done
