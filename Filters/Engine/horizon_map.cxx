@@ -157,13 +157,12 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
     []() {});
   // Azimuths of alike cost sweep in the same round: a step's crossings set its cost (none
   // along the grid's axes, 11 for slope 2/5), and a round lasts as long as its slowest.
-  std::vector<std::size_t> schedule(slots);
+  std::vector<std::size_t> schedule(slots), cost(slots);
   std::iota(schedule.begin(), schedule.end(), std::size_t{ 0 });
-  auto crossingsOfSlot = [&](std::size_t slot) {
-    return crossingsOf(steps[order[slot]][0], steps[order[slot]][1]).size();
-  };
-  std::stable_sort(schedule.begin(), schedule.end(),
-    [&](std::size_t a, std::size_t b) { return crossingsOfSlot(a) < crossingsOfSlot(b); });
+  for (std::size_t slot = 0; slot < slots; ++slot)
+    cost[slot] = crossingsOf(steps[order[slot]][0], steps[order[slot]][1]).size();
+  std::stable_sort(
+    schedule.begin(), schedule.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
   const int parts = split->parts(), part = split->part();
   for (std::size_t first = 0; first < slots; first += static_cast<std::size_t>(parts))
     WorkSplit::partThenShare(

@@ -238,14 +238,13 @@ Spectrum directSunlight(const Vec3& point, const Vec3& normal, const std::vector
     // it open, else 0: transportToPoint's value, without its sampling machinery on this
     // hot path.
     double transport = 0.0;
-    const unsigned bit = s < 32 ? 1u << s : 0u;
-    if (proven.hidden & bit)
+    if (proven.hiddenAt(s))
       continue;
     if (!source.parallel())
       transport = transportToPoint(point, normal, sun, visibility, 1, 0);
     else if (const double kernel = source.kernel(normal); kernel > 0.0)
     {
-      if ((proven.seen & bit) || !visibility.occludedToward(point, normal, source.direction()))
+      if (proven.seenAt(s) || !visibility.occludedToward(point, normal, source.direction()))
         transport = kernel;
     }
     addSunlight(transport, sun.emittance(), source.duration(), result, sunlitHours);

@@ -45,6 +45,10 @@ double transportToPoint(const Vec3& point, const Vec3& normal, HElement& sender,
 struct SunsProven
 {
   unsigned seen = 0, hidden = 0;
+  /// Whether sun s (of the suns in order) is proven seen, or hidden; suns past the
+  /// mask's bits are proven neither.
+  bool seenAt(std::size_t s) const { return s < 32 && (this->seen >> s & 1u); }
+  bool hiddenAt(std::size_t s) const { return s < 32 && (this->hidden >> s & 1u); }
 };
 
 /// Direct sunlight at a point with a unit normal from every sun: normal irradiance x

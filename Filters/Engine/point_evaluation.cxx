@@ -241,9 +241,8 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
     const double kernel = glm::dot(normal, sun.direction);
     if (!(kernel > 0.0))
       continue;
-    const unsigned bit = s < 32 ? 1u << s : 0u;
-    const bool seen = this->PostSuns ? (proven.seen & bit) != 0 : horizons.clearlyAbove(sun.sight);
-    const bool hidden = !seen && (this->PostSuns ? (proven.hidden & bit) != 0 : horizons.clearlyBelow(sun.sight));
+    const bool seen = this->PostSuns ? proven.seenAt(s) : horizons.clearlyAbove(sun.sight);
+    const bool hidden = !seen && (this->PostSuns ? proven.hiddenAt(s) : horizons.clearlyBelow(sun.sight));
     const bool open = seen || (!hidden && !this->Rays->occludedToward(point, normal, sun.direction));
     if (open)
       addSunlight(kernel, sun.flux, sun.duration, result, sunlitHours);

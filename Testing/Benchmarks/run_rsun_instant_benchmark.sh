@@ -24,11 +24,11 @@ dems=("$@")
 for dem in "${dems[@]}"; do
   name="$(basename "${dem}" .tif)"
   echo "== ${name}"
+  # The instant both GRASS sessions compute, with and without horizons.
+  rsun_call="r.sun elevation=dem slope=slope aspect=aspect day=356 time=9.0 linke_value=3.0 albedo_value=0.2
+    beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob nprocs=2 --overwrite --quiet"
   rsun_script "${dem}" "${work}" "${name}"
-  cat >> "${work}/${name}.sh" <<GRASS
-r.sun elevation=dem slope=slope aspect=aspect day=356 time=9.0 linke_value=3.0 albedo_value=0.2 \
-  beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob nprocs=2 --overwrite --quiet
-GRASS
+  echo ${rsun_call} >> "${work}/${name}.sh"
   # The whole GRASS session: ingest, slopes and r.sun, as a user runs them.
   /usr/bin/time -f "elapsed %e peak %M" -o "${work}/rsun.time" \
     grass "${work}/${name}/PERMANENT" --exec bash "${work}/${name}.sh" >/dev/null 2>&1
@@ -49,9 +49,7 @@ GRASS
   cat >> "${work}/${name}_horizons.sh" <<GRASS
 /usr/bin/time -f "elapsed %e peak %M" -o "${work}/horizon.time" \
   r.horizon elevation=dem step=11.25 output=horizon --overwrite --quiet
-r.sun elevation=dem slope=slope aspect=aspect day=356 time=9.0 linke_value=3.0 albedo_value=0.2 \
-  horizon_basename=horizon horizon_step=11.25 \
-  beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob nprocs=2 --overwrite --quiet
+$(echo ${rsun_call}) horizon_basename=horizon horizon_step=11.25
 GRASS
   /usr/bin/time -f "elapsed %e peak %M" -o "${work}/rsun_horizons.time" \
     grass "${work}/${name}_horizons/PERMANENT" --exec bash "${work}/${name}_horizons.sh" >/dev/null 2>&1
