@@ -10,6 +10,8 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
+#include "vtkMPICommunicator.h"
+#include "vtkMPIController.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -22,7 +24,9 @@
 #include "work_split.h"
 
 #include <algorithm>
+#include <climits>
 #include <cstring>
+#include <deque>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -268,10 +272,52 @@ public:
     this->Controller->AllReduce(&mine, &all, 1, vtkCommunicator::MIN_OP);
     return all == 1;
   }
+  // Point to point through MPI: sends that do not wait (a process that waits for a
+  // neighbour's hulls on one azimuth must not hold up what it sends on another).
+  bool sendsPointToPoint() const override { return this->Mpi != nullptr; }
+  void send(std::vector<char> bytes, int to, int tag) const override
+  {
+    if (bytes.size() > static_cast<std::size_t>(INT_MAX))
+      throw terralux::Error("a message between MPI ranks outgrew 2 GiB");
+    Outgoing& out = this->Pending.emplace_back();
+    out.Size = static_cast<int>(bytes.size());
+    out.Bytes = std::move(bytes);
+    this->Mpi->NoBlockSend(&out.Size, 1, to, TagBase + tag, out.SizeSent);
+    if (out.Size > 0)
+      this->Mpi->NoBlockSend(out.Bytes.data(), out.Size, to, TagBase + tag, out.BytesSent);
+  }
+  std::vector<char> receive(int from, int tag) const override
+  {
+    int size = 0;
+    this->Mpi->Receive(&size, 1, from, TagBase + tag);
+    std::vector<char> bytes(static_cast<std::size_t>(std::max(0, size)));
+    if (size > 0)
+      this->Mpi->Receive(bytes.data(), size, from, TagBase + tag);
+    return bytes;
+  }
+  void finishSends() const override
+  {
+    for (Outgoing& out : this->Pending)
+    {
+      out.SizeSent.Wait();
+      if (out.Size > 0)
+        out.BytesSent.Wait();
+    }
+    this->Pending.clear();
+  }
 
 private:
+  static constexpr int TagBase = 7700; // apart from VTK's own tags
+  struct Outgoing
+  {
+    int Size = 0;
+    std::vector<char> Bytes;
+    vtkMPICommunicator::Request SizeSent, BytesSent;
+  };
   vtkMultiProcessController* Controller;
+  vtkMPIController* Mpi = vtkMPIController::SafeDownCast(this->Controller);
   std::vector<Window> Windows;
+  mutable std::deque<Outgoing> Pending; // kept until sent
 };
 } // namespace
 

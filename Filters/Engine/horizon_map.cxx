@@ -135,54 +135,19 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
   this->HeldX = static_cast<std::size_t>(this->Held.i1 - this->Held.i0 + 1);
   this->HeldCount = this->HeldX * static_cast<std::size_t>(this->Held.j1 - this->Held.j0 + 1);
   this->HoldsAll = this->HeldCount == this->PostCount;
-  const std::size_t slots = order.size();
+  std::vector<std::array<int, 2>> slotSteps;
+  for (const int step : order)
+    slotSteps.push_back(steps[static_cast<std::size_t>(step)]);
   if (!split)
   {
-    this->Elevations.resize(this->HeldCount * slots);
-    for (std::size_t slot = 0; slot < slots; ++slot)
-      this->sweep(steps[order[slot]][0], steps[order[slot]][1], &this->Elevations[slot * this->PostCount]);
-    return;
+    this->Elevations.resize(this->HeldCount * slotSteps.size());
+    for (std::size_t slot = 0; slot < slotSteps.size(); ++slot)
+      this->sweepWholeGrid(slotSteps[slot][0], slotSteps[slot][1], &this->Elevations[slot * this->PostCount]);
   }
-  // Processes sweep an azimuth each at a time, at every post (the lines cross the
-  // whole grid), and each keeps its window of every azimuth it receives: the map per
-  // process is its window's, plus two azimuths of the whole grid in flight.
-  std::vector<std::uint16_t> swept, received;
-  WorkSplit::partThenShare(
-    split,
-    [&]() {
-      this->Elevations.resize(this->HeldCount * slots);
-      swept.resize(this->PostCount);
-      received.resize(this->PostCount);
-    },
-    []() {});
-  // Azimuths of alike cost sweep in the same round: a step's crossings set its cost (none
-  // along the grid's axes, 11 for slope 2/5), and a round lasts as long as its slowest.
-  std::vector<std::size_t> schedule(slots), cost(slots);
-  std::iota(schedule.begin(), schedule.end(), std::size_t{ 0 });
-  for (std::size_t slot = 0; slot < slots; ++slot)
-    cost[slot] = crossingsOf(steps[order[slot]][0], steps[order[slot]][1]).size();
-  std::stable_sort(
-    schedule.begin(), schedule.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
-  const int parts = split->parts(), part = split->part();
-  for (std::size_t first = 0; first < slots; first += static_cast<std::size_t>(parts))
-    WorkSplit::partThenShare(
-      split,
-      [&]() {
-        const std::size_t round = first + static_cast<std::size_t>(part);
-        if (round < slots)
-          this->sweep(steps[order[schedule[round]]][0], steps[order[schedule[round]]][1], swept.data());
-      },
-      [&]() {
-        for (int owner = 0; owner < parts && first + static_cast<std::size_t>(owner) < slots; ++owner)
-        {
-          const std::size_t slot = schedule[first + static_cast<std::size_t>(owner)];
-          std::vector<std::uint16_t>& whole = owner == part ? swept : received;
-          split->share(whole.data(), this->PostCount * sizeof(std::uint16_t), owner);
-          for (int j = this->Held.j0; j <= this->Held.j1; ++j)
-            std::copy_n(&whole[static_cast<std::size_t>(j) * nx + this->Held.i0], this->HeldX,
-              &this->Elevations[slot * this->HeldCount + (j - this->Held.j0) * this->HeldX]);
-        }
-      });
+  else if (split->sendsPointToPoint())
+    this->sweepWindows(slotSteps, *split);
+  else
+    this->sweepSharedAzimuths(slotSteps, *split);
 }
 
 std::size_t HorizonMap::postsX() const
@@ -237,10 +202,43 @@ void HorizonMap::fitMeanMap()
   this->Y0 = (sy - this->Uy * si - this->Vy * sj) / n;
 }
 
-void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
+std::vector<HorizonMap::LineRun> HorizonMap::runsWithin(int q, int p, const WorkSplit::Window& w)
+{
+  // A stretch starts at each post whose step back leaves the window (in grid order): a
+  // whole row where it leaves through the top or bottom, else the |q| posts next to the
+  // side it leaves through.
+  std::vector<LineRun> runs;
+  const int width = w.i1 - w.i0 + 1;
+  auto inWindow = [&](int i, int j) { return w.holds(i, j); };
+  for (int j = w.j0; j <= w.j1; ++j)
+  {
+    int first = 0, last = width; // the whole row, as offsets from i0
+    if (j - p >= w.j0 && j - p <= w.j1)
+      first = q < 0 ? std::max(0, width + q) : 0, last = q > 0 ? std::min(width, q) : (q < 0 ? width : 0);
+    for (int i = w.i0 + first; i < w.i0 + last; ++i)
+    {
+      LineRun run;
+      run.i = i, run.j = j, run.count = 1;
+      while (inWindow(i + run.count * q, j + run.count * p))
+        ++run.count;
+      runs.push_back(run);
+    }
+  }
+  return runs;
+}
+
+void HorizonMap::sweepWholeGrid(int q, int p, std::uint16_t* out) const
+{
+  const WorkSplit::Window whole{ 0, this->Terrain.postsX() - 1, 0, this->Terrain.postsY() - 1 };
+  this->sweep(q, p, runsWithin(q, p, whole), whole, out);
+}
+
+void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const WorkSplit::Window& window,
+  std::uint16_t* out, const std::vector<Capture>& captures, std::vector<Hull>* captured) const
 {
   const TerrainGrid& t = this->Terrain;
   const int nx = t.postsX(), ny = t.postsY();
+  const std::size_t outX = static_cast<std::size_t>(window.i1 - window.i0 + 1);
   // Azimuth by azimuth: neighbouring lines, swept one after another, write
   // neighbouring posts.
   const std::vector<Crossing> crossings = crossingsOf(q, p);
@@ -253,7 +251,8 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
   const double length = std::hypot(dx, dy);
   if (!(length > 0.0))
   {
-    std::fill_n(out, static_cast<std::size_t>(nx) * ny, std::uint16_t{ 0 }); // a grid without extent
+    // A grid without extent.
+    std::fill_n(out, window.empty() ? 0 : outX * static_cast<std::size_t>(window.j1 - window.j0 + 1), std::uint16_t{ 0 });
     return;
   }
   dx /= length, dy /= length;
@@ -264,30 +263,16 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
 
   const bool complete = this->Complete;
   const std::ptrdiff_t nextOffset = static_cast<std::ptrdiff_t>(p) * nx + q; // the next post on a line
-  // A line starts at each post whose step back leaves the grid (in grid order): a
-  // whole row where it leaves through the top or bottom, else the |q| posts next to the
-  // side it leaves through.
-  std::vector<std::array<int, 2>> starts;
-  for (int j = 0; j < ny; ++j)
-  {
-    int first = 0, last = nx; // the whole row
-    if (j - p >= 0 && j - p < ny)
-      first = q < 0 ? std::max(0, nx + q) : 0, last = q > 0 ? std::min(nx, q) : (q < 0 ? nx : 0);
-    for (int i = first; i < last; ++i)
-      starts.push_back({ i, j });
-  }
 
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, starts.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
-    struct Point
-    {
-      double x, z;
-    };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs.size(), 64), [&](const tbb::blocked_range<std::size_t>& r) {
+    using Point = HullPoint;
     // Up to 128 neighbouring lines are swept in step: at each step they read and write
     // neighbouring posts, which then share cache lines (a 4097^2 grid's line alone
     // outgrows the cache before the next line comes back to its rows: its horizons took
     // 52.3 s line by line, 46.2 s 32 lines in step, 43.6 s 128).
     std::array<std::vector<Point>, 128> hulls; // per line: the upper hull of what lies ahead; the nearest last
     std::array<int, 128> onLine{};
+    std::array<std::size_t, 128> nextCapture{};
     // Drops the hull's nearest points that (x, z) and the next one hide: they are below
     // the segment between them, so no point nearer sees them as its horizon.
     auto pop = [](std::vector<Point>& hull, double x, double z) {
@@ -319,6 +304,12 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
     auto below = [](const Point& c, const Point& far, const Point& near) {
       return (c.z - near.z) * (far.x - near.x) <= (far.z - near.z) * (c.x - near.x);
     };
+    // Keeps the hull after post k where a window behind on the line needs it.
+    auto captureAt = [&](const LineRun& run, std::size_t l, int k) {
+      std::size_t& n = nextCapture[l];
+      while (n < run.firstCapture + run.captureCount && captures[n].k == k)
+        (*captured)[captures[n++].slot] = hulls[l];
+    };
     // One step's profile, the post ahead first, and the crossings that may count.
     const std::size_t m = crossings.size();
     std::vector<Point> profile(m + 2), kept(m);
@@ -328,11 +319,13 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
       int longest = 0;
       for (std::size_t l = 0; l < lines; ++l)
       {
-        const int i0 = starts[first + l][0], j0 = starts[first + l][1];
-        hulls[l].clear();
-        onLine[l] = 1;
-        while (inGrid(i0 + onLine[l] * q, j0 + onLine[l] * p))
-          ++onLine[l];
+        const LineRun& run = runs[first + l];
+        if (run.ahead)
+          hulls[l] = *run.ahead;
+        else
+          hulls[l].clear();
+        onLine[l] = run.count;
+        nextCapture[l] = run.firstCapture;
         longest = std::max(longest, onLine[l]);
       }
       for (int k = longest - 1; k >= 0; --k)
@@ -341,7 +334,8 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
           if (k >= onLine[l])
             continue;
           std::vector<Point>& hull = hulls[l];
-          const int i = starts[first + l][0] + k * q, j = starts[first + l][1] + k * p;
+          const LineRun& run = runs[first + l];
+          const int i = run.i + k * q, j = run.j + k * p;
           const float* here = position(i, j);
           // Where the step ahead lies inside a grid without missing cells, every
           // crossing is on terrain and needs no check (most of a DEM).
@@ -378,10 +372,14 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
             for (std::size_t n = 0; n < count; ++n)
               push(hull, kept[n]);
           }
-          std::uint16_t& horizon = out[static_cast<std::size_t>(j) * nx + i];
+          std::uint16_t& horizon =
+            out[static_cast<std::size_t>(j - window.j0) * outX + static_cast<std::size_t>(i - window.i0)];
           horizon = 0; // nothing above the horizontal, or a post of no cell
           if (!complete && !t.postUsed(i, j))
+          {
+            captureAt(run, l, k);
             continue;
+          }
           const auto [x, z] = pointOf(here);
           pop(hull, x, z);
           if (!hull.empty() && hull.back().x > x)
@@ -395,6 +393,7 @@ void HorizonMap::sweep(int q, int p, std::uint16_t* out) const
             }
           }
           hull.push_back({ x, z });
+          captureAt(run, l, k);
         }
     }
   });

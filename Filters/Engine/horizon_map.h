@@ -38,9 +38,12 @@ public:
   /// hours): about half as far from a sun's bearing to the nearest mapped azimuth, so
   /// fewer suns near a post's horizon need a ray (a year's on the 1025^2 fractal: 449 M
   /// rays instead of 679 M), for 2.4 times the sweep's work.
-  /// `split`: processes that each sweep their share of the azimuths and send it to the
-  /// others (all of them build the map together; null: this one alone); each keeps the
-  /// horizons of its own window of posts only (holds).
+  /// `split`: processes that build the map together (null: this one alone), each
+  /// keeping the horizons of its own window of posts only (holds). Where the split
+  /// sends point to point, each sweeps its window's stretch of every line and hands
+  /// the hull it reaches to the window the line enters next (horizon_handoff.cxx);
+  /// else each sweeps a share of the azimuths over the whole grid and broadcasts it.
+  /// Either way every held horizon is one process's, bit for bit.
   explicit HorizonMap(const TerrainGrid& terrain, bool dense = false, const WorkSplit* split = nullptr);
   static constexpr int standardAzimuths = 32, maximumAzimuths = 64; // dense: the maximum
   int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
@@ -184,8 +187,42 @@ public:
 
 private:
   void fitMeanMap();
-  /// One azimuth's horizons at every post, into `out` (grid order; each post written).
-  void sweep(int q, int p, std::uint16_t* out) const;
+  /// A point of a line's profile: distance along the azimuth, height (m).
+  struct HullPoint
+  {
+    double x, z;
+  };
+  /// The upper convex hull of a line's profile ahead of a post, the nearest point last.
+  using Hull = std::vector<HullPoint>;
+  /// The stretch of a line inside a window: posts (i, j) + k g for k < count, swept from
+  /// k = count - 1 down, `ahead` the hull of the line beyond it (null: none, or what
+  /// the sweep reads from the grid). After post k = captures[n].k it copies its hull to
+  /// captured[captures[n].slot], for n from firstCapture, in decreasing k.
+  struct LineRun
+  {
+    int i = 0, j = 0, count = 0;
+    const Hull* ahead = nullptr;
+    std::size_t firstCapture = 0, captureCount = 0;
+  };
+  struct Capture
+  {
+    int k;
+    std::size_t slot;
+  };
+  /// The stretches of the lines of step (q, p) inside `window`, in grid order of their
+  /// nearest posts.
+  static std::vector<LineRun> runsWithin(int q, int p, const WorkSplit::Window& window);
+  /// One azimuth's horizons at the posts of `runs`, into `out`, the posts of `window`
+  /// in grid order (the runs write each post of it once).
+  void sweep(int q, int p, const std::vector<LineRun>& runs, const WorkSplit::Window& window, std::uint16_t* out,
+    const std::vector<Capture>& captures = {}, std::vector<Hull>* captured = nullptr) const;
+  /// The same at every post of the grid.
+  void sweepWholeGrid(int q, int p, std::uint16_t* out) const;
+  /// The split's two ways (horizon_handoff.cxx): each process sweeps its window and
+  /// hands hulls on along the lines; or each sweeps a share of the azimuths at every
+  /// post and broadcasts it.
+  void sweepWindows(const std::vector<std::array<int, 2>>& slotSteps, const WorkSplit& split);
+  void sweepSharedAzimuths(const std::vector<std::array<int, 2>>& slotSteps, const WorkSplit& split);
   std::size_t postsX() const;
 
   const TerrainGrid& Terrain;

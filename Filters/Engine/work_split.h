@@ -82,6 +82,25 @@ public:
   /// Every process calls it alike: whether every process says `succeeded`.
   virtual bool allSucceeded(bool succeeded) const = 0;
 
+  /// Point to point, for work handed from window to window (the horizons' sweeps hand
+  /// their lines' hulls on): whether this split has it (else such work uses shares).
+  virtual bool sendsPointToPoint() const { return false; }
+  /// Sends `bytes` to process `to` without waiting for it to take them; they arrive in
+  /// the order sent, for each `tag` (0 <= tag < 1000).
+  virtual void send(std::vector<char> bytes, int to, int tag) const
+  {
+    (void)bytes, (void)to, (void)tag;
+    throw Error("this split of the work sends no bytes point to point");
+  }
+  /// Waits for the next bytes `from` sent with `tag`.
+  virtual std::vector<char> receive(int from, int tag) const
+  {
+    (void)from, (void)tag;
+    throw Error("this split of the work receives no bytes point to point");
+  }
+  /// Waits until every process this one sent to has taken what it sent.
+  virtual void finishSends() const {}
+
   /// A step whose results every process needs: this process's part, then `share`. A
   /// process whose part throws (out of memory, say, on one node) must not leave the
   /// others waiting in a broadcast: every process learns it, and all of them throw.

@@ -24,8 +24,10 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstring>
+#include <deque>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -43,11 +45,19 @@ class ThreadRanks
 public:
   /// `parts` bands of the rows of a grid `rows` posts high, neighbours sharing a row
   /// (as VTK's pieces do).
-  ThreadRanks(int parts, int rows = 1)
+  ThreadRanks(int parts, int rows = 1, bool pointToPoint = false)
     : Parts(parts)
+    , PointToPoint(pointToPoint)
   {
     for (int p = 0; p < parts; ++p)
       this->Windows.push_back({ 0, std::numeric_limits<int>::max(), p * (rows - 1) / parts, (p + 1) * (rows - 1) / parts });
+  }
+  /// Given windows (blocks, as VTK cuts pieces), sending point to point.
+  explicit ThreadRanks(const std::vector<WorkSplit::Window>& windows)
+    : Parts(static_cast<int>(windows.size()))
+    , PointToPoint(true)
+    , Windows(windows)
+  {
   }
   class Split : public WorkSplit
   {
@@ -85,7 +95,24 @@ public:
       this->Ranks.meet();
       return all;
     }
-    mutable int Shares = 0;
+    bool sendsPointToPoint() const override { return this->Ranks.PointToPoint; }
+    void send(std::vector<char> bytes, int to, int tag) const override
+    {
+      ++this->Sends;
+      std::lock_guard<std::mutex> lock(this->Ranks.Mutex);
+      this->Ranks.Mail[{ this->Part, to, tag }].push_back(std::move(bytes));
+      this->Ranks.Met.notify_all();
+    }
+    std::vector<char> receive(int from, int tag) const override
+    {
+      std::unique_lock<std::mutex> lock(this->Ranks.Mutex);
+      std::deque<std::vector<char>>& box = this->Ranks.Mail[{ from, this->Part, tag }];
+      this->Ranks.Met.wait(lock, [&]() { return !box.empty(); });
+      std::vector<char> bytes = std::move(box.front());
+      box.pop_front();
+      return bytes;
+    }
+    mutable int Shares = 0, Sends = 0;
 
   private:
     ThreadRanks& Ranks;
@@ -119,7 +146,9 @@ private:
       this->Met.wait(lock, [&]() { return this->Generation != generation; });
   }
   int Parts;
+  bool PointToPoint = false;
   std::vector<WorkSplit::Window> Windows;
+  std::map<std::array<int, 3>, std::deque<std::vector<char>>> Mail; // (from, to, tag)
   std::vector<char> Buffer;
   std::atomic<int> Failures{ 0 };
   std::mutex Mutex;
@@ -148,13 +177,18 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
     const std::vector<HorizonMap::Sight> suns{ alone.sight(2.0, 15.0 * degree), alone.sight(-0.7, 30.0 * degree) };
     const PostSunlight aloneSunlight(*grid, alone, suns);
     for (const int parts : { 2, 3 })
+    for (const bool pointToPoint : { false, true })
     {
-      ThreadRanks ranks(parts, grid->postsY());
+      ThreadRanks ranks(parts, grid->postsY(), pointToPoint);
       ranks.run([&](const ThreadRanks::Split& split) {
         const HorizonMap map(*grid, dense, &split);
         const int sweeps = split.Shares;
-        // Every azimuth sent once, from its owner.
-        EXPECT_EQ(sweeps, map.azimuthCount());
+        // Every azimuth broadcast once, from its owner; or each window's sweeps handed
+        // on along the lines, azimuth by azimuth, to the band behind.
+        EXPECT_EQ(sweeps, pointToPoint ? 0 : map.azimuthCount());
+        if (pointToPoint)
+          EXPECT_EQ(split.Sends, (split.part() > 0) * (map.azimuthCount() / 2 - 1) +
+              (split.part() < parts - 1) * (map.azimuthCount() / 2 - 1));
         const WorkSplit::Window own = split.window(split.part());
         const HorizonSky mapped(rays, open, &map);
         const PostSky skies(*grid, mapped, open, true, &split);
@@ -181,6 +215,64 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
             differences += sunlight.at(i, j).hidden != aloneSunlight.at(i, j).hidden;
           }
         EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts << (dense ? ", dense" : "");
+      });
+    }
+  }
+}
+
+TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
+{
+  // A turned grid of oblong cells with a hole of no data across the windows' borders
+  // (the sweep's checked crossings), cut as VTK cuts pieces (blocks sharing their
+  // border posts), in a pinwheel (windows that wait for each other in a ring toward
+  // some azimuths), and with a process whose window is empty.
+  const int n = 65;
+  const double turn = 30.0 * degree, c = std::cos(turn), s = std::sin(turn);
+  auto inHole = [](int i, int j) { return i >= 28 && i < 37 && j >= 20 && j < 45; };
+  TerrainGrid grid(n, n, Vec3(0.0));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+    {
+      const double x = 10.0 * i, y = 14.0 * j;
+      grid.setPost(i, j, Vec3(c * x - s * y, s * x + c * y, hills(x, y) + 40.0 * std::sin(0.9 * i) * std::cos(1.3 * j)));
+    }
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i)
+      grid.setCellValid(i, j, !inHole(i, j));
+  ASSERT_TRUE(grid.facesUp());
+  using Window = WorkSplit::Window;
+  const std::vector<std::vector<Window>> cuts{
+    { { 0, 32, 0, 32 }, { 32, 64, 0, 32 }, { 0, 32, 32, 64 }, { 32, 64, 32, 64 } },
+    { { 0, 32, 0, 64 }, { 32, 64, 0, 40 }, { 32, 64, 40, 64 } },
+    { { 0, 39, 0, 19 }, { 40, 64, 0, 39 }, { 25, 64, 40, 64 }, { 0, 24, 20, 64 }, { 25, 39, 20, 39 } },
+    { { 0, 64, 0, 64 }, { 0, -1, 0, -1 } },
+  };
+  for (const bool dense : { false, true })
+  {
+    const HorizonMap alone(grid, dense);
+    for (std::size_t cut = 0; cut < cuts.size(); ++cut)
+    {
+      ThreadRanks ranks(cuts[cut]);
+      ranks.run([&](const ThreadRanks::Split& split) {
+        const HorizonMap map(grid, dense, &split);
+        const Window own = split.window(split.part()).clampedTo(n, n);
+        int differences = 0, held = 0;
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i)
+          {
+            differences += map.holds(i, j) != own.holds(i, j);
+            if (!own.holds(i, j))
+              continue;
+            ++held;
+            const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * n + i };
+            for (int a = 0; a < map.azimuthCount(); ++a)
+              differences += map.elevation(post, a) != alone.elevation(post, a);
+          }
+        EXPECT_EQ(differences, 0) << "cut " << cut << ", part " << split.part() << (dense ? ", dense" : "");
+        EXPECT_EQ(held, own.empty() ? 0 : (own.i1 - own.i0 + 1) * (own.j1 - own.j0 + 1));
+        // Blocks hand hulls on, and broadcast nothing.
+        if (cut < 2)
+          EXPECT_EQ(split.Shares, 0);
       });
     }
   }
