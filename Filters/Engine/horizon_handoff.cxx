@@ -252,7 +252,7 @@ void HorizonMap::sweepWindows(const std::vector<std::array<int, 2>>& slotSteps, 
           run.captureCount = captures.size() - run.firstCapture;
         }
         captured.resize(captures.size());
-        this->sweep(q, p, runs, own, &this->Elevations[slot * this->HeldCount], captures, &captured);
+        this->sweep(q, p, runs, own, this->Elevations.data() + slot * this->HeldCount, captures, &captured);
       }
       catch (...)
       {
