@@ -175,6 +175,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , VisibilitySamples(4)
   , MaximumGatherRays(4096)
   , GatherError(0.003)
+  , DetailDistance(0.0)
   , MaximumIterations(30)
   , ConvergenceTolerance(1e-3)
   , MaximumNumberOfElements(1000000)
@@ -390,7 +391,8 @@ std::unique_ptr<vtkRadiosityScene> vtkHierarchicalRadiosity::BuildScene(vtkInfor
 {
   terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
     { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
-    { "DefaultReflectance", this->DefaultReflectance }, { "GatherError", this->GatherError } });
+    { "DefaultReflectance", this->DefaultReflectance }, { "GatherError", this->GatherError },
+    { "DetailDistance", this->DetailDistance } });
   this->CheckCellArraysToProcess();
   auto scene = std::make_unique<vtkRadiosityScene>();
   for (vtkDataSet* input : inputDataSets(inputVector[0]))
@@ -411,6 +413,7 @@ terralux::HierarchicalRadiosity& vtkHierarchicalRadiosity::PrepareSolver(std::un
   options.visibilitySamples = this->VisibilitySamples;
   options.gatherSamples = this->MaximumGatherRays;
   options.gatherError = this->GatherError;
+  options.gatherDetailDistance = this->DetailDistance;
   options.skyFromHorizons = this->SkyFromHorizons != 0;
   options.maximumIterations = this->MaximumIterations;
   options.convergenceTolerance = this->ConvergenceTolerance;
@@ -604,6 +607,7 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
   os << indent << "MaximumGatherRays: " << this->MaximumGatherRays << "\n";
   os << indent << "GatherError: " << this->GatherError << "\n";
+  os << indent << "DetailDistance: " << this->DetailDistance << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";

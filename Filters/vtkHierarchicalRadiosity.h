@@ -158,6 +158,21 @@ public:
 
   ///@{
   /**
+   * Set/Get the distance (m, horizontally) within which a gather ray's hit on the
+   * scene's one terrain reads what its posts found (their skies by their horizons, the
+   * suns they prove seen or hidden, the lattice's light from surfaces); a hit farther
+   * from the gathering point sends its leaf's light, as a hit on other surfaces does.
+   * Under MPI each rank then holds and receives those values only for the posts within
+   * this distance of its piece, not the whole grid's: memory and traffic follow the
+   * piece. Results do not depend on the number of ranks. 0 (the default): every hit
+   * reads its posts, and every rank holds every post's.
+   */
+  vtkSetClampMacro(DetailDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DetailDistance, double);
+  ///@}
+
+  ///@{
+  /**
    * Set/Get the most gather / push-pull iterations. Default is 30.
    */
   vtkSetClampMacro(MaximumIterations, int, 1, 100000);
@@ -411,6 +426,7 @@ protected:
   int VisibilitySamples;
   int MaximumGatherRays;
   double GatherError;
+  double DetailDistance;
   int MaximumIterations;
   double ConvergenceTolerance;
   vtkIdType MaximumNumberOfElements;

@@ -61,15 +61,19 @@ void FinalGather::prepareSuns()
 }
 
 Spectrum FinalGather::radiosityAt(
-  const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front, double sunSample) const
+  const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front, double sunSample, const Vec3& from) const
 {
   const auto& e = leaf.Irradiance;
+  // Whether the hit reads the posts of the scene's one terrain around it.
+  const bool nearPosts = hit.terrain == 0 &&
+    (!(this->DetailDistance > 0.0) ||
+      std::hypot(hit.point.x - from.x, hit.point.y - from.y) <= this->DetailDistance);
   Spectrum sun{};
   if (this->SunCumulative.empty())
   {
     // On the scene's one terrain, where the hit's cell's posts all prove a sun seen or
     // hidden, it takes their answer (see PostSunlight).
-    const SunsProven proven = hit.terrain == 0 && this->PostSuns ? this->PostSuns->between(hit.u, hit.v) : SunsProven{};
+    const SunsProven proven = nearPosts && this->PostSuns ? this->PostSuns->between(hit.u, hit.v) : SunsProven{};
     sun = directSunlight(hit.point, front, this->Suns, this->Rays, nullptr, proven);
   }
   else
@@ -89,9 +93,9 @@ Spectrum FinalGather::radiosityAt(
   Spectrum sky = e[SkyLight], reflected = e[ReflectedLight];
   if (this->Leaves)
     this->Leaves->at(leaf.id(), hit.point, sky, reflected);
-  if (hit.terrain == 0 && this->PostSkies)
+  if (nearPosts && this->PostSkies)
     this->PostSkies->interpolate(hit.u, hit.v, sky);
-  if (hit.terrain == 0 && this->Lattice)
+  if (nearPosts && this->Lattice)
     this->Lattice->reflectedAt(hit.u, hit.v, reflected);
   return radiosityOf(leaf.emission(), leaf.reflectance(), totalIrradiance(sun, sky, reflected));
 }
@@ -296,7 +300,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
         return value;
       }
       const double sunSample = std::fmod(sunStart + 0.61803398874989485 * k, 1.0);
-      const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample);
+      const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample, point);
       for (int band = 0; band < maxBands; ++band)
         surfaces[band] += weight * b[band];
       return value + weight * largestBand(b);

@@ -112,6 +112,13 @@ public:
   /// What leaves receive, gathered from each (LeafLight): a hit on one of them sends
   /// that instead of the hierarchy's values (null: the hierarchy's).
   void setLeafLight(const LeafLight* leaves) { this->Leaves = leaves; }
+  /// Beyond this distance (m, horizontally) from the gathering point, a hit on that
+  /// terrain reads nothing of its posts (skies, proven suns, lattice) and sends its
+  /// leaf's light, as a hit on other surfaces does: what a far hit adds is small, and
+  /// a process evaluating a piece of the terrain then needs its posts' values only
+  /// within this distance of the piece (HeldPosts). 0: every hit reads them.
+  void setDetailDistance(double metres) { this->DetailDistance = metres; }
+  double detailDistance() const { return this->DetailDistance; }
   /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
   /// at every hit; more (the sun positions of a day or a year, summed in one solve)
   /// would multiply the gather's rays, so a hit then takes one sun, chosen in
@@ -129,10 +136,10 @@ public:
   static Vec3 frontAt(const struct SurfaceHit& hit, const PolygonElement& leaf);
   /// The leaf a ray's hit lies on (null where nothing solved is there).
   const PolygonElement* leafAt(const struct SurfaceHit& hit) const;
-  /// Radiosity leaving a hit on `leaf`, its direct sunlight taken at the hit;
-  /// `sunSample` in [0, 1) picks the sun when there are many.
-  Spectrum radiosityAt(
-    const PolygonElement& leaf, const struct SurfaceHit& hit, const Vec3& front, double sunSample) const;
+  /// Radiosity leaving a hit on `leaf` of a ray from `from`, its direct sunlight taken
+  /// at the hit; `sunSample` in [0, 1) picks the sun when there are many.
+  Spectrum radiosityAt(const PolygonElement& leaf, const struct SurfaceHit& hit, const Vec3& front,
+    double sunSample, const Vec3& from) const;
 
 private:
   /// The sky a point does not see, by occlusion rays drawn in proportion to the sky's
@@ -151,6 +158,7 @@ private:
   const PostLattice* Lattice = nullptr;
   const PostSunlight* PostSuns = nullptr;
   const LeafLight* Leaves = nullptr;
+  double DetailDistance = 0.0;
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };

@@ -1,6 +1,7 @@
 #include "post_sky.h"
 
 #include "angles.h"
+#include "error.h"
 #include "grid_interpolation.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
@@ -14,13 +15,19 @@
 
 namespace terralux
 {
-PostSky::PostSky(
-  const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals, const WorkSplit* split)
+namespace
+{
+constexpr int skyTag = 900; // apart from the horizons' hand-off (a tag per azimuth)
+}
+
+PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals,
+  const WorkSplit* split, int halo)
   : Terrain(terrain)
   , HornNormals(hornNormals)
+  , Held(terrain.postsX(), terrain.postsY(), split, halo)
 {
   const int nx = terrain.postsX(), ny = terrain.postsY();
-  const std::size_t posts = static_cast<std::size_t>(nx) * ny;
+  const std::size_t posts = this->Held.count();
   // With a split, each process finds the skies of its window's posts (whose horizons
   // it holds), and gets the others' (gather rays read them wherever they land).
   const WorkSplit::Window own = WorkSplit::ownWindow(split, nx, ny);
@@ -35,20 +42,21 @@ PostSky::PostSky(
           HorizonMap::Post post;
           post.found = true;
           post.index = static_cast<std::size_t>(j) * nx + i;
-          this->Values[post.index] = {};
+          const std::size_t held = this->Held.index(i, j);
+          this->Values[held] = {};
           if (!terrain.postUsed(i, j))
             continue;
           const Value value = at(post, terrain.normalAt(i, j, hornNormals), horizons, sky);
           for (int band = 0; band < maxBands; ++band)
-            this->Values[post.index][band] = static_cast<float>(value.irradiance[band]);
-          this->Values[post.index][maxBands] = static_cast<float>(value.skyViewFactor);
-          this->Used[post.index] = 1;
+            this->Values[held][band] = static_cast<float>(value.irradiance[band]);
+          this->Values[held][maxBands] = static_cast<float>(value.skyViewFactor);
+          this->Used[held] = 1;
         }
       });
     },
     [&]() {
-      split->shareWindows(this->Values, nx, ny);
-      split->shareWindows(this->Used, nx, ny);
+      this->Held.share(this->Values, *split, skyTag);
+      this->Held.share(this->Used, *split, skyTag + 1);
     });
 }
 
@@ -67,16 +75,19 @@ PostSky::Value PostSky::at(const HorizonMap::Post& post, const Vec3& normal, con
 
 bool PostSky::found(const HorizonMap::Post& post, const Vec3& normal, Value& value) const
 {
-  if (!post || post.index >= this->Used.size() || !this->Used[post.index])
-    return false;
   const int nx = this->Terrain.postsX();
+  if (!post || nx < 1)
+    return false;
   const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
+  if (!this->Held.holds(i, j) || !this->Used[this->Held.index(i, j)])
+    return false;
   // Stored as floats: the same normal to 1e-6 gives the same sky to about 1e-6.
   if (glm::length(this->Terrain.normalAt(i, j, this->HornNormals) - normal) > 1e-6)
     return false;
+  const std::array<float, maxBands + 1>& held = this->Values[this->Held.index(i, j)];
   for (int band = 0; band < maxBands; ++band)
-    value.irradiance[band] = this->Values[post.index][band];
-  value.skyViewFactor = this->Values[post.index][maxBands];
+    value.irradiance[band] = held[band];
+  value.skyViewFactor = held[maxBands];
   return true;
 }
 
@@ -85,7 +96,10 @@ bool PostSky::interpolate(double u, double v, Spectrum& irradiance) const
   const int nx = this->Terrain.postsX();
   return interpolateNodes(u, v, nx, this->Terrain.postsY(),
     [&](int i, int j, Spectrum& value) {
-      const std::size_t index = static_cast<std::size_t>(j) * nx + i;
+      if (!this->Held.holds(i, j))
+        throw Error("a gather ray read the sky of a post this process does not hold: its detail distance's halo "
+                    "is too narrow for this grid");
+      const std::size_t index = this->Held.index(i, j);
       if (!this->Used[index])
         return false;
       for (int band = 0; band < maxBands; ++band)

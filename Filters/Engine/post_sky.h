@@ -7,6 +7,7 @@
 // then gathered 2 to 4 times the reference's reflected light from their walls).
 // Between posts the sky is interpolated bilinearly from the posts of the hit's cell.
 
+#include "held_posts.h"
 #include "horizon_map.h"
 #include "radiosity_types.h"
 #include "uninitialized_vector.h"
@@ -26,9 +27,11 @@ class PostSky
 public:
   /// Every used post of the map's terrain, on its normal (Horn's where `hornNormals`,
   /// the area-weighted one otherwise: the outputs' choice), in parallel; with `split`,
-  /// each process its share of the rows, then the others' received.
+  /// each process its window's posts, then the others' it holds received: every post,
+  /// or with a `halo` >= 0 (HeldPosts::haloFor a detail distance) those within it of
+  /// its window.
   PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals = false,
-    const WorkSplit* split = nullptr);
+    const WorkSplit* split = nullptr, int halo = -1);
 
   struct Value
   {
@@ -44,13 +47,14 @@ public:
   bool found(const HorizonMap::Post& post, const Vec3& normal, Value& value) const;
 
   /// The sky irradiance at grid parameters (u, v), between the used posts of its cell;
-  /// false where the cell has none.
+  /// false where the cell has none. Throws where this process does not hold them.
   bool interpolate(double u, double v, Spectrum& irradiance) const;
 
 private:
   const TerrainGrid& Terrain;
   bool HornNormals;
-  // Per post, row by row: irradiance, sky view factor, each written by a parallel loop
+  HeldPosts Held;
+  // Per held post, row by row: irradiance, sky view factor, each written by a parallel loop
   // or a share without a serial zeroing first (read only where Used).
   UninitializedVector<std::array<float, maxBands + 1>> Values;
   std::vector<std::uint8_t> Used;

@@ -11,11 +11,18 @@
 
 namespace terralux
 {
+namespace
+{
+constexpr int sunlightTag = 902; // after the posts' skies' (post_sky.cxx)
+}
+
 PostSunlight::PostSunlight(
-  const TerrainGrid& terrain, const HorizonMap& map, const std::vector<HorizonMap::Sight>& suns, const WorkSplit* split)
+  const TerrainGrid& terrain, const HorizonMap& map, const std::vector<HorizonMap::Sight>& suns, const WorkSplit* split,
+  int halo)
   : PostsX(terrain.postsX())
   , PostsY(terrain.postsY())
   , Suns(suns.size())
+  , Held(terrain.postsX(), terrain.postsY(), split, halo)
 {
   if (suns.size() > maximumSuns)
     throw Error("PostSunlight records at most 4 suns a post");
@@ -24,7 +31,7 @@ PostSunlight::PostSunlight(
   WorkSplit::partThenShare(
     split,
     [&]() {
-      this->Bits.resize(static_cast<std::size_t>(nx) * ny);
+      this->Bits.resize(this->Held.count());
       tbb::parallel_for(own.j0, own.j1 + 1, [&](int j) {
         for (int i = own.i0; i <= own.i1; ++i)
         {
@@ -41,11 +48,11 @@ PostSunlight::PostSunlight(
                 bits |= static_cast<std::uint8_t>(1u << (s + maximumSuns));
             }
           }
-          this->Bits[index] = bits;
+          this->Bits[this->Held.index(i, j)] = bits;
         }
       });
     },
-    [&]() { split->shareWindows(this->Bits, nx, ny); });
+    [&]() { this->Held.share(this->Bits, *split, sunlightTag); });
 }
 
 SunsProven PostSunlight::between(double u, double v) const
@@ -56,6 +63,9 @@ SunsProven PostSunlight::between(double u, double v) const
     return {};
   const int i = std::clamp(static_cast<int>(std::floor(u)), 0, nx - 2);
   const int j = std::clamp(static_cast<int>(std::floor(v)), 0, ny - 2);
+  if (!this->Held.holds(i, j) || !this->Held.holds(i + 1, j + 1))
+    throw Error("a gather ray read the suns of a post this process does not hold: its detail distance's halo is "
+                "too narrow for this grid");
   const SunsProven a = this->at(i, j), b = this->at(i + 1, j), c = this->at(i, j + 1), d = this->at(i + 1, j + 1);
   return { a.seen & b.seen & c.seen & d.seen, a.hidden & b.hidden & c.hidden & d.hidden };
 }

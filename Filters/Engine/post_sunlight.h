@@ -10,6 +10,7 @@
 // receiver (its light from surfaces) from the posts around each hit; the posts' own
 // sun still comes from their horizons or a ray from the post itself.
 
+#include "held_posts.h"
 #include "horizon_map.h"
 #include "link_transport.h"
 #include "uninitialized_vector.h"
@@ -30,18 +31,19 @@ public:
   static constexpr std::size_t maximumSuns = 4;
   /// Every used post of the map's terrain against each of `suns` (at most maximumSuns,
   /// in the order hits take them), in parallel; with `split`, each process its window's
-  /// posts (whose horizons it holds), then the others' received.
+  /// posts (whose horizons it holds), then the others' it holds received (all, or with
+  /// a `halo` >= 0 those within it of its window: see HeldPosts).
   PostSunlight(const TerrainGrid& terrain, const HorizonMap& map, const std::vector<HorizonMap::Sight>& suns,
-    const WorkSplit* split = nullptr);
+    const WorkSplit* split = nullptr, int halo = -1);
 
   /// Bit s set: every post of the cell holding grid parameters (u, v) proves sun s
   /// seen (`seen`) or hidden (`hidden`). A cell with a missing or unproven post proves
-  /// neither.
+  /// neither. Throws where this process does not hold them.
   SunsProven between(double u, double v) const;
-  /// What post (i, j) itself proves.
+  /// What post (i, j), held, itself proves.
   SunsProven at(int i, int j) const
   {
-    const unsigned bits = this->Bits[static_cast<std::size_t>(j) * this->PostsX + i];
+    const unsigned bits = this->Bits[this->Held.index(i, j)];
     return { bits & 0xFu, bits >> maximumSuns };
   }
   std::size_t suns() const { return this->Suns; }
@@ -49,7 +51,8 @@ public:
 private:
   int PostsX, PostsY;
   std::size_t Suns;
-  // Per post, row by row: the low four bits seen, the high four hidden; 0 at unused posts.
+  HeldPosts Held;
+  // Per held post, row by row: the low four bits seen, the high four hidden; 0 at unused posts.
   UninitializedVector<std::uint8_t> Bits;
 };
 } // namespace terralux

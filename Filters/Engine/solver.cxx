@@ -50,10 +50,11 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   , Sources(std::make_unique<ElementStore>(firstSourceId))
 {
   if (options.visibilitySamples < 1 || options.maximumIterations < 1 || !(options.errorTolerance > 0.0) ||
-    options.gatherSamples < 0 || !(options.gatherError > 0.0))
+    options.gatherSamples < 0 || !(options.gatherError > 0.0) ||
+    !(options.gatherDetailDistance >= 0.0 && options.gatherDetailDistance <= std::numeric_limits<double>::max()))
   {
     throw Error("radiosity options: VisibilitySamples and MaximumIterations must be >= 1, "
-                "ErrorTolerance > 0, MaximumGatherRays >= 0 and GatherError > 0");
+                "ErrorTolerance > 0, MaximumGatherRays >= 0, GatherError > 0 and DetailDistance finite and >= 0");
   }
   const auto hierarchyStart = std::chrono::steady_clock::now();
   std::vector<PolygonElement*>& polygons = this->TopSurfaces;
@@ -112,6 +113,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   for (const TerrainGrid* terrain : scene.terrains)
     this->PointCount += static_cast<std::size_t>(terrain->postsX()) * terrain->postsY();
   this->Gather = std::make_unique<FinalGather>(*this->Rays, this->Roots, this->TerrainRoots, this->Suns);
+  this->Gather->setDetailDistance(options.gatherDetailDistance);
   this->HeightField = options.skyFromHorizons && scene.polygons.empty() &&
     std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
   if (this->HeightField && scene.terrains.size() == 1)
@@ -123,12 +125,13 @@ HierarchicalRadiosity::~HierarchicalRadiosity() = default;
 
 bool operator==(const RadiosityOptions& a, const RadiosityOptions& b)
 {
-  static_assert(sizeof(RadiosityOptions) == 72, "an option was added: compare it here");
+  static_assert(sizeof(RadiosityOptions) == 80, "an option was added: compare it here");
   return a.errorTolerance == b.errorTolerance && a.minimumElementArea == b.minimumElementArea &&
     a.visibilitySamples == b.visibilitySamples && a.maximumIterations == b.maximumIterations &&
     a.convergenceTolerance == b.convergenceTolerance && a.maximumSkyLevel == b.maximumSkyLevel &&
     a.maximumElements == b.maximumElements && a.gatherSamples == b.gatherSamples &&
-    a.gatherError == b.gatherError && a.skyFromHorizons == b.skyFromHorizons;
+    a.gatherError == b.gatherError && a.skyFromHorizons == b.skyFromHorizons &&
+    a.gatherDetailDistance == b.gatherDetailDistance;
 }
 
 bool HierarchicalRadiosity::serves(const RadiosityScene& scene, const RadiosityOptions& options) const
@@ -246,8 +249,11 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   this->PostHorizons = &this->Geometry->horizons(0, this->wantsDenseHorizons(), this->Split);
   this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons);
   this->Gather->setHorizons(this->Horizons.get());
-  this->PostSkies =
-    std::make_unique<PostSky>(*this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals, this->Split);
+  // With a split and a detail distance, each process holds the posts' skies and suns
+  // within it of its window only.
+  this->PostsHalo = this->Split ? HeldPosts::haloFor(*this->HeightFieldGrid, this->Options.gatherDetailDistance) : -1;
+  this->PostSkies = std::make_unique<PostSky>(
+    *this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals, this->Split, this->PostsHalo);
   this->Gather->setPostSkies(this->PostSkies.get());
   this->Stats.secondsHorizons = secondsSince(start);
 }
@@ -299,7 +305,7 @@ void HierarchicalRadiosity::findSunHorizons()
     std::vector<HorizonMap::Sight> sights;
     for (const MappedSun& sun : this->MappedSuns)
       sights.push_back(sun.sight);
-    this->PostSuns = std::make_unique<PostSunlight>(*grid, *map, sights, this->Split);
+    this->PostSuns = std::make_unique<PostSunlight>(*grid, *map, sights, this->Split, this->PostsHalo);
     this->Gather->setPostSunlight(this->PostSuns.get());
     this->Stats.secondsHorizons += secondsSince(start);
   }

@@ -59,6 +59,11 @@ struct RadiosityOptions
   /// sky hidden from a point comes from its horizon (HorizonSky) instead of the
   /// gather's rays: no sampling noise in the sky.
   bool skyFromHorizons = true;
+  /// m; > 0: a gather hit farther than this (horizontally) from its point takes its
+  /// leaf's light, not the one terrain's posts' (FinalGather::setDetailDistance), and
+  /// with a work split each process holds the posts' skies and suns only within it of
+  /// its window (HeldPosts). 0: every hit reads the posts.
+  double gatherDetailDistance = 0.0;
 };
 
 bool operator==(const RadiosityOptions& a, const RadiosityOptions& b);
@@ -326,6 +331,7 @@ private:
   const HorizonMap* PostHorizons = nullptr;      // its posts' horizons (findPostHorizons), the geometry's
   const HorizonMap* SunHorizons = nullptr;       // the same map, for direct sun (findSunHorizons)
   const WorkSplit* Split = nullptr;              // the processes sharing the work (setWorkSplit)
+  int PostsHalo = -1;                            // HeldPosts::haloFor the detail distance, with a split
   struct MappedSun // each of PointSuns on that map
   {
     HorizonMap::Sight sight;

@@ -5,6 +5,7 @@
 
 #include "angles.h"
 #include "cie_sky.h"
+#include "held_posts.h"
 #include "horizon_map.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
@@ -191,8 +192,10 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
               (split.part() < parts - 1) * (map.azimuthCount() / 2 - 1));
         const WorkSplit::Window own = split.window(split.part());
         const HorizonSky mapped(rays, open, &map);
+        const int sent = split.Sends;
         const PostSky skies(*grid, mapped, open, true, &split);
-        EXPECT_GT(split.Shares, sweeps); // the skies' rows too
+        // The skies' rows too: broadcast, or each window sent to each other process.
+        EXPECT_EQ(split.Shares - sweeps + split.Sends - sent, pointToPoint ? 2 * (parts - 1) : 2 * parts);
         const PostSunlight sunlight(*grid, map, suns, &split);
         int differences = 0;
         for (int j = 0; j < grid->postsY(); ++j)
@@ -218,6 +221,81 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
       });
     }
   }
+}
+
+TEST(WorkSplit, ProcessesHoldThePostsWithinTheDetailDistanceOfTheirWindowsOnly)
+{
+  // A turned grid of oblong cells (10 x 14 m): the halo counts the narrowest cell
+  // height, 10 m, whatever the turn.
+  const int nx = 97, ny = 81;
+  const double turn = 30.0 * degree, c = std::cos(turn), s = std::sin(turn);
+  TerrainGrid grid(nx, ny, Vec3(0.0));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+    {
+      const double x = 10.0 * i, y = 14.0 * j;
+      grid.setPost(i, j, Vec3(c * x - s * y, s * x + c * y, hills(x, y)));
+    }
+  EXPECT_EQ(HeldPosts::haloFor(grid, 0.0), -1);
+  EXPECT_EQ(HeldPosts::haloFor(grid, 35.0), 6); // 3.5 cells, the hit's cell, a margin
+  EXPECT_EQ(HeldPosts::haloFor(grid, 1e6), -1); // beyond the grid: every post
+  const int halo = HeldPosts::haloFor(grid, 35.0);
+
+  const Visibility rays(sceneOf({ &grid }));
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(50.0 * degree, 2.0)), 100.0, 5);
+  const OpenSky open(sky);
+  const HorizonMap alone(grid);
+  const HorizonSky aloneSky(rays, open, &alone);
+  const PostSky aloneSkies(grid, aloneSky, open, true);
+  const std::vector<HorizonMap::Sight> suns{ alone.sight(2.0, 15.0 * degree) };
+  const PostSunlight aloneSunlight(grid, alone, suns);
+  using Window = WorkSplit::Window;
+  const std::vector<std::vector<Window>> cuts{ { { 0, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } },
+    { { 0, 48, 0, 40 }, { 48, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } } };
+  for (const std::vector<Window>& windows : cuts)
+    for (const bool pointToPoint : { false, true })
+    {
+      ThreadRanks ranks = pointToPoint ? ThreadRanks(windows) : ThreadRanks(static_cast<int>(windows.size()), ny);
+      ranks.run([&](const ThreadRanks::Split& split) {
+        const HorizonMap map(grid, false, &split);
+        const HorizonSky mapped(rays, open, &map);
+        const PostSky skies(grid, mapped, open, true, &split, halo);
+        const PostSunlight sunlight(grid, map, suns, &split, halo);
+        const HeldPosts held(nx, ny, &split, halo);
+        const Window own = split.window(split.part()).clampedTo(nx, ny);
+        EXPECT_EQ(held.own().i0, std::max(0, own.i0 - halo));
+        EXPECT_EQ(held.own().j1, std::min(ny - 1, own.j1 + halo));
+        EXPECT_LT(held.count(), static_cast<std::size_t>(nx) * ny);
+        int differences = 0, heldPosts = 0;
+        for (int j = 0; j < ny; ++j)
+          for (int i = 0; i < nx; ++i)
+          {
+            const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * nx + i };
+            PostSky::Value value, expected;
+            const Vec3 normal = grid.normalAt(i, j, true);
+            ASSERT_TRUE(aloneSkies.found(post, normal, expected));
+            if (!held.holds(i, j))
+            {
+              differences += skies.found(post, normal, value); // none of it kept
+              continue;
+            }
+            ++heldPosts;
+            ASSERT_TRUE(skies.found(post, normal, value));
+            differences += value.irradiance[0] != expected.irradiance[0];
+            differences += value.skyViewFactor != expected.skyViewFactor;
+            differences += sunlight.at(i, j).seen != aloneSunlight.at(i, j).seen;
+            differences += sunlight.at(i, j).hidden != aloneSunlight.at(i, j).hidden;
+          }
+        EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << windows.size();
+        EXPECT_EQ(static_cast<std::size_t>(heldPosts), held.count());
+        // A read outside what the process holds is an error, not a wrong value.
+        const double farRow = own.j0 > 0 ? 0.5 : ny - 1.5;
+        Spectrum irradiance;
+        EXPECT_THROW(skies.interpolate(own.i0 + 0.5, farRow, irradiance), Error);
+        EXPECT_THROW(sunlight.between(own.i0 + 0.5, farRow), Error);
+        EXPECT_TRUE(skies.interpolate(own.i0 + 0.5, own.j0 + 0.5, irradiance));
+      });
+    }
 }
 
 TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
