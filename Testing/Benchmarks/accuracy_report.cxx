@@ -314,6 +314,9 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     radiosity->SetGatherError(std::atof(value));
   if (const char* value = std::getenv("TERRALUX_REPORT_GATHER_RAYS"))
     radiosity->SetMaximumGatherRays(std::atoi(value));
+  // TERRALUX_REPORT_DETAIL_DISTANCE: far gather hits take their leaves' light (m).
+  if (const char* value = std::getenv("TERRALUX_REPORT_DETAIL_DISTANCE"))
+    radiosity->SetDetailDistance(std::atof(value));
   radiosity->SetUseTerrainHierarchy(method != "triangles");
   const auto start = std::chrono::steady_clock::now();
   radiosity->Update();

@@ -5,6 +5,7 @@
 # whole-run wall time, speed-up, each rank's seconds by phase and peak memory, and the
 # GeoTIFFs of 2 ranks compared with 1 rank's.
 # Usage: Testing/Benchmarks/run_mpi_benchmark.sh [BUILD_DIR] [SIZE]   (SIZE: 2049)
+#   TERRALUX_BENCH_DETAIL_DISTANCE  the solvers' DetailDistance, m (default 0: none)
 set -euo pipefail
 repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="$(cd "${1:-${repo_dir}/build}" && pwd)"

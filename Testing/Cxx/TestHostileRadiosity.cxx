@@ -376,6 +376,7 @@ TEST(HostileRadiosity, NaNParametersAreRefused)
     { "ErrorTolerance", [](vtkHierarchicalRadiosity* r) { r->SetErrorTolerance(std::nan("")); } },
     { "ConvergenceTolerance", [](vtkHierarchicalRadiosity* r) { r->SetConvergenceTolerance(std::nan("")); } },
     { "MinimumElementArea", [](vtkHierarchicalRadiosity* r) { r->SetMinimumElementArea(std::nan("")); } },
+    { "DetailDistance", [](vtkHierarchicalRadiosity* r) { r->SetDetailDistance(std::nan("")); } },
   };
   (void)nan;
   for (const auto& [name, set] : cases)

@@ -16,7 +16,10 @@ from vtkmodules.vtkIOXML import vtkXMLPStructuredGridReader
 import terralux
 
 RELATIVE_TOLERANCE = 1e-6
-OUTPUTS = ("instant", "series")
+OUTPUTS = ("instant", "near", "series")
+# A detail distance changes what far gather hits send: the irradiance a little (at
+# most this, relative to the largest), never nothing (the test would then hold no halo).
+NEAR_AGAINST_INSTANT = 0.02
 
 
 def pieces(path):
@@ -94,6 +97,12 @@ def main(reference_dir, other_dirs):
                   % (name, other, len(expected), len(expected_bands), worst))
             if worst > RELATIVE_TOLERANCE:
                 failures.append("%s in %s differs by %.2e relative" % (name, other, worst))
+    near, instant = (pieces(os.path.join(reference_dir, n + ".pvts"))[1] for n in ("near", "instant"))
+    change = relative_difference(near["Irradiance"], instant["Irradiance"]) if "Irradiance" in instant else 0.0
+    print("near against instant (one rank): irradiance differs by at most %.1e relative" % change)
+    if not 0.0 < change <= NEAR_AGAINST_INSTANT:
+        failures.append("DetailDistance changed the irradiance by %.2e relative (expected (0, %g])"
+                        % (change, NEAR_AGAINST_INSTANT))
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK")

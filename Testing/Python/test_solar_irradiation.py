@@ -431,6 +431,8 @@ class Command(unittest.TestCase):
         for arguments in ((OLINDA, "-o", "x.tif", "--start", "2024-06-02", "--end", "2024-06-01"),
                           (OLINDA, "-o", "x.tif", "--day-of-year", "400"),
                           (OLINDA, "-o", "x.tif", "--start", "2024-06-01", "--linke", "3,4"),
+                          (OLINDA, "-o", "x.tif", "--day-of-year", "1", "--detail-distance", "-5"),
+                          (OLINDA, "-o", "x.tif", "--day-of-year", "1", "--detail-distance", "nan"),
                           ("missing.tif", "-o", "x.tif", "--day-of-year", "1")):
             result = self.run_command(*arguments, "--quiet")
             self.assertEqual(result.returncode, 1, arguments)

@@ -63,6 +63,9 @@ def parse_arguments(argv):
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--mpi", action="store_true",
                         help="run under mpirun: each rank evaluates its piece of the DEM, rank 0 writes")
+    parser.add_argument("--detail-distance", type=float, default=0.0, metavar="M",
+                        help="gather hits farther than M metres take their leaf's light, not their posts' skies; "
+                             "with --mpi each rank then holds those only within M of its piece (default 0: none)")
     return parser.parse_args(argv)
 
 
@@ -182,6 +185,8 @@ def run(args):
         raise InputError("--reflectance %g is not in [0, 1)" % args.reflectance)
     if not 1 <= args.sky_type <= 15:
         raise InputError("--sky-type %d is not a CIE standard general sky (1..15)" % args.sky_type)
+    if not 0.0 <= args.detail_distance < float("inf"):
+        raise InputError("--detail-distance %g is not a distance in metres (>= 0; 0: none)" % args.detail_distance)
 
     irradiation = observe(vtkSolarIrradiation())
     irradiation.SetInputConnection(terrain.GetOutputPort())
@@ -193,6 +198,7 @@ def run(args):
     irradiation.SetIrradianceModel(0 if args.model == "esra" else 1)
     irradiation.SetSkyType(args.sky_type)
     irradiation.SetErrorTolerance(args.tolerance)
+    irradiation.SetDetailDistance(args.detail_distance)
     irradiation.SetEvaluateAtPoints(args.points)
     irradiation.SetPostNormalsToHorn()  # as r.slope.aspect and gdaldem
     if args.weather:
