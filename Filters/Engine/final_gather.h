@@ -118,7 +118,6 @@ public:
   /// a process evaluating a piece of the terrain then needs its posts' values only
   /// within this distance of the piece (HeldPosts). 0: every hit reads them.
   void setDetailDistance(double metres) { this->DetailDistance = metres; }
-  double detailDistance() const { return this->DetailDistance; }
   /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
   /// at every hit; more (the sun positions of a day or a year, summed in one solve)
   /// would multiply the gather's rays, so a hit then takes one sun, chosen in

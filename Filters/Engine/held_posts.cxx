@@ -11,11 +11,6 @@
 
 namespace terralux
 {
-HeldPosts::HeldPosts(int nx, int ny, const WorkSplit* split)
-  : HeldPosts(nx, ny, split, -1)
-{
-}
-
 HeldPosts::HeldPosts(int nx, int ny, const WorkSplit* split, int halo)
   : Nx(nx)
   , Ny(ny)

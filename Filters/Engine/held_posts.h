@@ -11,6 +11,8 @@
 #include "work_split.h"
 
 #include <cstring>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace terralux
@@ -20,10 +22,8 @@ class TerrainGrid;
 class HeldPosts
 {
 public:
-  /// Every post of an nx x ny grid, whatever `split` computes (no detail distance).
-  HeldPosts(int nx, int ny, const WorkSplit* split = nullptr);
-  /// With `split`: each process's window grown by `halo` posts each way (halo < 0:
-  /// every post).
+  /// Of an nx x ny grid: with `split`, each process's window grown by `halo` posts each
+  /// way; every post without one, or where halo < 0.
   HeldPosts(int nx, int ny, const WorkSplit* split, int halo);
 
   /// Posts of `terrain` around a window that hold every cell a point within
@@ -37,6 +37,14 @@ public:
   WorkSplit::Window of(int part) const;
   std::size_t count() const { return static_cast<std::size_t>(this->Width) * this->height(); }
   bool holds(int i, int j) const { return this->Own.holds(i, j); }
+  /// Throws unless post (i, j) is held: a gather ray read `what` (the sky, the suns) of
+  /// a post farther than the detail distance's halo reaches.
+  void requireHeld(int i, int j, const char* what) const
+  {
+    if (!this->holds(i, j))
+      throw Error(std::string("a gather ray read the ") + what +
+        " of a post this process does not hold: its detail distance's halo is too narrow for this grid");
+  }
   /// Where post (i, j), held, is in the held values (row by row over own()).
   std::size_t index(int i, int j) const
   {
@@ -46,9 +54,10 @@ public:
   /// Once this process has computed `values` (count() of them, over own()) at the posts
   /// of its window: the others' posts it holds, from their processes, point to point
   /// where the split sends so (each sends another only what that one holds), else by
-  /// a broadcast of each window. `tag` tells this share's messages apart.
+  /// a broadcast of each window. `tag` tells this share's messages apart. Needs the
+  /// split it was made with.
   template <typename Vector>
-  void share(Vector& values, const WorkSplit& split, int tag) const;
+  void share(Vector& values, int tag) const;
 
 private:
   int height() const { return this->Own.empty() ? 0 : this->Own.j1 - this->Own.j0 + 1; }
@@ -75,8 +84,11 @@ private:
 };
 
 template <typename Vector>
-void HeldPosts::share(Vector& values, const WorkSplit& split, int tag) const
+void HeldPosts::share(Vector& values, int tag) const
 {
+  if (!this->Split)
+    throw Error("held posts are shared among the processes of a split: none was given");
+  const WorkSplit& split = *this->Split;
   using T = typename Vector::value_type;
   static_assert(std::is_trivially_copyable<T>::value, "held values travel as bytes");
   const int me = split.part();

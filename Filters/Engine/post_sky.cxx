@@ -1,7 +1,6 @@
 #include "post_sky.h"
 
 #include "angles.h"
-#include "error.h"
 #include "grid_interpolation.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
@@ -55,8 +54,8 @@ PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const O
       });
     },
     [&]() {
-      this->Held.share(this->Values, *split, skyTag);
-      this->Held.share(this->Used, *split, skyTag + 1);
+      this->Held.share(this->Values, skyTag);
+      this->Held.share(this->Used, skyTag + 1);
     });
 }
 
@@ -96,9 +95,7 @@ bool PostSky::interpolate(double u, double v, Spectrum& irradiance) const
   const int nx = this->Terrain.postsX();
   return interpolateNodes(u, v, nx, this->Terrain.postsY(),
     [&](int i, int j, Spectrum& value) {
-      if (!this->Held.holds(i, j))
-        throw Error("a gather ray read the sky of a post this process does not hold: its detail distance's halo "
-                    "is too narrow for this grid");
+      this->Held.requireHeld(i, j, "sky");
       const std::size_t index = this->Held.index(i, j);
       if (!this->Used[index])
         return false;

@@ -52,7 +52,7 @@ PostSunlight::PostSunlight(
         }
       });
     },
-    [&]() { this->Held.share(this->Bits, *split, sunlightTag); });
+    [&]() { this->Held.share(this->Bits, sunlightTag); });
 }
 
 SunsProven PostSunlight::between(double u, double v) const
@@ -63,9 +63,8 @@ SunsProven PostSunlight::between(double u, double v) const
     return {};
   const int i = std::clamp(static_cast<int>(std::floor(u)), 0, nx - 2);
   const int j = std::clamp(static_cast<int>(std::floor(v)), 0, ny - 2);
-  if (!this->Held.holds(i, j) || !this->Held.holds(i + 1, j + 1))
-    throw Error("a gather ray read the suns of a post this process does not hold: its detail distance's halo is "
-                "too narrow for this grid");
+  this->Held.requireHeld(i, j, "suns");
+  this->Held.requireHeld(i + 1, j + 1, "suns");
   const SunsProven a = this->at(i, j), b = this->at(i + 1, j), c = this->at(i, j + 1), d = this->at(i + 1, j + 1);
   return { a.seen & b.seen & c.seen & d.seen, a.hidden & b.hidden & c.hidden & d.hidden };
 }
