@@ -11,9 +11,10 @@
 
 namespace terralux
 {
-HeldPosts::HeldPosts(int nx, int ny, const WorkSplit* split, int halo)
+HeldPosts::HeldPosts(int nx, int ny, const WorkSplit* split, int halo, int step)
   : Nx(nx)
   , Ny(ny)
+  , Step(std::max(1, step))
   , Split(split)
   , Halo(split ? halo : -1)
   , Own(this->of(split ? split->part() : 0))

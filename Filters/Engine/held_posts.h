@@ -7,6 +7,8 @@
 // of its window only: its window grown by a halo. Each process computes its window's
 // values and receives, from each other process, the part of that one's window inside
 // its own halo, so memory and traffic follow the piece and its halo, not the grid.
+// The same holds for a lattice of every step-th post (post_lattice.h): a process
+// computes the lattice posts of its window, and holds those of its window's halo.
 
 #include "work_split.h"
 
@@ -23,8 +25,10 @@ class HeldPosts
 {
 public:
   /// Of an nx x ny grid: with `split`, each process's window grown by `halo` posts each
-  /// way; every post without one, or where halo < 0.
-  HeldPosts(int nx, int ny, const WorkSplit* split, int halo);
+  /// way; every post without one, or where halo < 0. With `step`, the grid is a lattice
+  /// of every step-th post each way of the split's posts (nx x ny lattice posts; the
+  /// split's windows and the halo are counted on it).
+  HeldPosts(int nx, int ny, const WorkSplit* split, int halo, int step = 1);
 
   /// Posts of `terrain` around a window that hold every cell a point within
   /// `distance` (m, horizontally) of a post of the window meets: the distance over
@@ -61,8 +65,16 @@ public:
 
 private:
   int height() const { return this->Own.empty() ? 0 : this->Own.j1 - this->Own.j0 + 1; }
-  /// Process `part`'s window of posts within the grid.
-  WorkSplit::Window windowOf(const WorkSplit& split, int part) const { return split.window(part).clampedTo(this->Nx, this->Ny); }
+  /// Process `part`'s window of posts within the grid (on a lattice: from its first
+  /// step-th post to its last).
+  WorkSplit::Window windowOf(const WorkSplit& split, int part) const
+  {
+    const WorkSplit::Window w = split.window(part);
+    const int s = this->Step;
+    auto first = [s](int post) { return post <= 0 ? 0 : post / s + (post % s != 0); };
+    auto last = [s](int post) { return post < 0 ? -1 : post / s; };
+    return WorkSplit::Window{ first(w.i0), last(w.i1), first(w.j0), last(w.j1) }.clampedTo(this->Nx, this->Ny);
+  }
   static WorkSplit::Window intersection(const WorkSplit::Window& a, const WorkSplit::Window& b)
   {
     return { std::max(a.i0, b.i0), std::min(a.i1, b.i1), std::max(a.j0, b.j0), std::min(a.j1, b.j1) };
@@ -76,7 +88,7 @@ private:
       row(&values[this->index(region.i0, j)], width);
   }
 
-  int Nx, Ny;
+  int Nx, Ny, Step;
   const WorkSplit* Split;
   int Halo; // -1: every post
   WorkSplit::Window Own;

@@ -263,7 +263,10 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
   this->Lattice.reset(); // its own posts gather from the leaves, with pilots
   this->Gather->setPostLattice(nullptr);
   const TerrainGrid& grid = root.grid();
-  auto lattice = std::make_unique<PostLattice>(grid.postsX(), grid.postsY());
+  // With a work split, each process holds the lattice within its posts' halo (the
+  // detail distance's) of its window.
+  auto lattice = std::make_unique<PostLattice>(
+    grid.postsX(), grid.postsY(), PostLattice::defaultStep, this->Split, this->PostsHalo);
   // Every second lattice post first; then the rest of the cells whose corners disagree
   // (see latticeRefineAllowance), decided alike by every process from the shared first
   // pass.
@@ -273,7 +276,7 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
       lattice->refine(latticeRefineAllowance * this->Options.gatherError);
     WorkSplit::partThenShare(
       this->Split, [&]() { this->gatherLatticePosts(root, hornNormals, first, *lattice); },
-      [&]() { lattice->share(*this->Split); });
+      [&]() { lattice->share(); });
   }
   this->Lattice = std::move(lattice);
   this->Gather->setPostLattice(this->Lattice.get());
@@ -288,7 +291,7 @@ void HierarchicalRadiosity::gatherLatticePosts(
     const int j = lj * step;
     for (int i = 0; i < grid.postsX(); i += step)
     {
-      if (!lattice.gatheredInPass(i, j, firstPass) || !PostLattice::gathers(i, j, this->Split))
+      if (!PostLattice::gathers(i, j, this->Split) || !lattice.gatheredInPass(i, j, firstPass))
         continue;
       const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
       if (!leaf)

@@ -1,5 +1,6 @@
 #include "post_lattice.h"
 
+#include "error.h"
 #include "grid_interpolation.h"
 
 #include <algorithm>
@@ -9,19 +10,47 @@
 
 namespace terralux
 {
-PostLattice::PostLattice(int postsX, int postsY, int step)
+namespace
+{
+/// Lattice posts a process holds beyond its window: those within `postsHalo` posts,
+/// and the cells read there (a coarse cell is two lattice cells a side, and its
+/// corners decide whether it is refined).
+int latticeHalo(int postsHalo, int step)
+{
+  return postsHalo < 0 ? -1 : (postsHalo + step - 1) / step + 3;
+}
+} // namespace
+
+PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* split, int postsHalo)
   : Step(std::max(1, step))
   , Nx((std::max(1, postsX) - 1) / Step + 1)
   , Ny((std::max(1, postsY) - 1) / Step + 1)
   , CoarseX(std::max(1, Nx / 2))
   , CoarseY(std::max(1, Ny / 2))
-  , Reflected(static_cast<std::size_t>(Nx) * Ny)
-  , Variance(static_cast<std::size_t>(Nx) * Ny, -1.0)
-  , PerTerrain(static_cast<std::size_t>(Nx) * Ny)
-  , Received(static_cast<std::size_t>(Nx) * Ny, 0.0)
-  , TerrainSeen(static_cast<std::size_t>(Nx) * Ny, 0.0)
-  , Refined(static_cast<std::size_t>(CoarseX) * CoarseY, 1) // every cell fine until refine decides
+  , Held(Nx, Ny, split, latticeHalo(postsHalo, Step), Step)
 {
+  const WorkSplit::Window own = this->Held.own();
+  if (!own.empty())
+    this->HeldCells = WorkSplit::Window{ own.i0 / 2, own.i1 / 2, own.j0 / 2, own.j1 / 2 }.clampedTo(CoarseX, CoarseY);
+  const std::size_t posts = this->Held.count();
+  this->Reflected.resize(posts);
+  this->Variance.assign(posts, -1.0);
+  this->PerTerrain.resize(posts);
+  this->Received.assign(posts, 0.0);
+  this->TerrainSeen.assign(posts, 0.0);
+  const std::size_t cells = this->HeldCells.empty() ? 0
+    : static_cast<std::size_t>(this->HeldCells.i1 - this->HeldCells.i0 + 1) * (this->HeldCells.j1 - this->HeldCells.j0 + 1);
+  this->Refined.assign(cells, CellRefined); // every cell fine until refine decides
+}
+
+std::size_t PostLattice::coarseCell(int li, int lj) const
+{
+  const int ci = std::min(li / 2, this->CoarseX - 1), cj = std::min(lj / 2, this->CoarseY - 1);
+  if (!this->HeldCells.holds(ci, cj))
+    throw Error("a gather ray read the lattice's light beyond what this process holds: its detail distance's "
+                "halo is too narrow for this grid");
+  return static_cast<std::size_t>(cj - this->HeldCells.j0) * (this->HeldCells.i1 - this->HeldCells.i0 + 1) +
+    (ci - this->HeldCells.i0);
 }
 
 bool PostLattice::gatheredInPass(int i, int j, bool first) const
@@ -35,7 +64,7 @@ bool PostLattice::gatheredInPass(int i, int j, bool first) const
   // A corner of a lattice cell (li - 1 or li, lj - 1 or lj) of a refined coarse cell.
   for (int b = std::max(0, lj - 1); b <= std::min(lj, this->Ny - 2); ++b)
     for (int a = std::max(0, li - 1); a <= std::min(li, this->Nx - 2); ++a)
-      if (this->Refined[this->coarseCell(a, b)])
+      if (this->Refined[this->coarseCell(a, b)] != CellCoarse)
         return true;
   return false;
 }
@@ -51,21 +80,27 @@ double PostLattice::largestPerTerrainSeen(std::size_t k) const
 
 void PostLattice::refine(double allowedSpread)
 {
-  for (int cj = 0; cj < this->CoarseY; ++cj)
-    for (int ci = 0; ci < this->CoarseX; ++ci)
+  const WorkSplit::Window& cells = this->HeldCells;
+  for (int cj = cells.j0; cj <= cells.j1; ++cj)
+    for (int ci = cells.i0; ci <= cells.i1; ++ci)
     {
       const Cell coarse{ 2 * ci, 2 * cj, 2 };
-      bool refined = 2 * ci + 2 > this->Nx - 1 || 2 * cj + 2 > this->Ny - 1; // no coarse corner at the far side
-      if (!refined)
+      std::uint8_t& refined = this->Refined[this->coarseCell(coarse.li, coarse.lj)];
+      refined = CellCoarse;
+      if (2 * ci + 2 > this->Nx - 1 || 2 * cj + 2 > this->Ny - 1) // no coarse corner at the far side
+        refined = CellRefined;
+      else if (!this->Held.holds(2 * ci, 2 * cj) || !this->Held.holds(2 * ci + 2, 2 * cj + 2))
+        refined = CellUndecided;
+      else
       {
         const Around corners = this->aroundCell(coarse);
         this->forEachCorner(coarse, [&](std::size_t k) {
-          refined = refined || this->Variance[k] < 0.0 ||
+          if (this->Variance[k] < 0.0 ||
             this->TerrainSeen[k] * (corners.largestPerTerrainSeen - corners.leastPerTerrainSeen) >
-              allowedSpread * this->Received[k];
+              allowedSpread * this->Received[k])
+            refined = CellRefined;
         });
       }
-      this->Refined[static_cast<std::size_t>(cj) * this->CoarseX + ci] = refined;
     }
 }
 
@@ -73,9 +108,16 @@ PostLattice::Cell PostLattice::cellAt(double u, double v) const
 {
   const int li = std::clamp(static_cast<int>(std::floor(u / this->Step)), 0, std::max(0, this->Nx - 2));
   const int lj = std::clamp(static_cast<int>(std::floor(v / this->Step)), 0, std::max(0, this->Ny - 2));
-  if (this->Refined[this->coarseCell(li, lj)])
-    return { li, lj, 1 };
-  return { li - li % 2, lj - lj % 2, 2 };
+  switch (this->Refined[this->coarseCell(li, lj)])
+  {
+    case CellCoarse:
+      return { li - li % 2, lj - lj % 2, 2 };
+    case CellRefined:
+      return { li, lj, 1 };
+    default:
+      throw Error("a gather ray read the lattice's light where this process does not hold the corners that "
+                  "decide it: its detail distance's halo is too narrow for this grid");
+  }
 }
 
 template <class Value, class NodeValue>
@@ -118,13 +160,14 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   this->TerrainSeen[k] = gathered.terrainSeen;
 }
 
-void PostLattice::share(const WorkSplit& split)
+void PostLattice::share()
 {
-  split.shareWindows(this->Reflected, this->Nx, this->Ny, this->Step);
-  split.shareWindows(this->Variance, this->Nx, this->Ny, this->Step);
-  split.shareWindows(this->PerTerrain, this->Nx, this->Ny, this->Step);
-  split.shareWindows(this->Received, this->Nx, this->Ny, this->Step);
-  split.shareWindows(this->TerrainSeen, this->Nx, this->Ny, this->Step);
+  constexpr int latticeTag = 903; // after the posts' skies' and suns' (post_sky.cxx, post_sunlight.cxx)
+  this->Held.share(this->Reflected, latticeTag);
+  this->Held.share(this->Variance, latticeTag + 1);
+  this->Held.share(this->PerTerrain, latticeTag + 2);
+  this->Held.share(this->Received, latticeTag + 3);
+  this->Held.share(this->TerrainSeen, latticeTag + 4);
 }
 
 template <class Corner>

@@ -17,7 +17,11 @@
 // where terrain is smooth per post the first pass tells enough, and the 4097^2 fractal's
 // lattice took a quarter of the rays. A post reads between the corners of the finest
 // cell gathered around it.
+// With a work split and a detail distance, a process holds the lattice posts of its
+// window and its halo only (HeldPosts): gather rays read the lattice at hits within the
+// detail distance, and refine decides the cells whose corners it holds.
 
+#include "held_posts.h"
 #include "radiosity_types.h"
 #include "work_split.h"
 
@@ -32,7 +36,10 @@ class PostLattice
 {
 public:
   static constexpr int defaultStep = 4;
-  PostLattice(int postsX, int postsY, int step = defaultStep);
+  /// With `split` and a `postsHalo` >= 0 (HeldPosts::haloFor a detail distance), the
+  /// lattice posts within that many posts of this process's window, and the margin its
+  /// cells read; every lattice post otherwise.
+  PostLattice(int postsX, int postsY, int step = defaultStep, const WorkSplit* split = nullptr, int postsHalo = -1);
 
   int step() const { return this->Step; }
   bool onLattice(int i, int j) const { return i % this->Step == 0 && j % this->Step == 0; }
@@ -43,7 +50,8 @@ public:
   /// After the first pass (and its share): the coarse cells to refine, those where a
   /// corner's spread of what the corners found per terrain seen exceeds
   /// `allowedSpread` x what that corner receives, or where a corner has no data; and the
-  /// cells at the lattice's far edges, which have no coarse corners there.
+  /// cells at the lattice's far edges, which have no coarse corners there. Cells with a
+  /// corner this process does not hold stay undecided (a read there throws).
   void refine(double allowedSpread);
   /// What a lattice post's gather found beyond the sky of its horizons.
   struct Gathered
@@ -58,13 +66,13 @@ public:
   /// Records a lattice post's gather (from any thread, each post once).
   void set(int i, int j, const Gathered& gathered);
   /// With `split`, whether this process gathers lattice post (i, j): those of its
-  /// window; and, once each has gathered its own, every window's received from its
-  /// process.
+  /// window; and, once each has gathered its own, share receives those it holds of the
+  /// others' windows from their processes.
   static bool gathers(int i, int j, const WorkSplit* split)
   {
     return !split || split->window(split->part()).holds(i, j);
   }
-  void share(const WorkSplit& split);
+  void share();
 
   /// The largest variance at a corner of the lattice cell holding post (i, j) (the
   /// finest gathered there, as for every reading below); -1 where none is known.
@@ -96,12 +104,21 @@ public:
   bool perTerrainSeenAt(double u, double v, PerTerrainSeen& value) const;
 
 private:
-  std::size_t index(int li, int lj) const { return static_cast<std::size_t>(lj) * this->Nx + li; }
-  /// The coarse cell (2 x 2 lattice cells) holding lattice cell (li, lj).
-  std::size_t coarseCell(int li, int lj) const
+  /// Where lattice post (li, lj) is in the held values; throws unless held.
+  std::size_t index(int li, int lj) const
   {
-    return static_cast<std::size_t>(std::min(lj / 2, this->CoarseY - 1)) * this->CoarseX + std::min(li / 2, this->CoarseX - 1);
+    this->Held.requireHeld(li, lj, "lattice's light");
+    return this->Held.index(li, lj);
   }
+  /// The coarse cell (2 x 2 lattice cells) holding lattice cell (li, lj), in Refined;
+  /// throws unless held.
+  std::size_t coarseCell(int li, int lj) const;
+  enum : std::uint8_t
+  {
+    CellCoarse = 0,
+    CellRefined = 1,
+    CellUndecided = 2 // a corner is not held here
+  };
   /// The cell that grid parameters (u, v) read from: its lowest corner and its side, in
   /// lattice posts (1 in a refined coarse cell, else 2).
   struct Cell
@@ -123,10 +140,12 @@ private:
 
   int Step, Nx, Ny; // lattice posts each way
   int CoarseX, CoarseY; // coarse cells each way
-  std::vector<Spectrum> Reflected;
+  HeldPosts Held; // the lattice posts this process holds
+  WorkSplit::Window HeldCells; // the coarse cells over them
+  std::vector<Spectrum> Reflected; // per held lattice post, as the vectors below
   std::vector<double> Variance; // -1: not gathered (no data there, or not asked for)
   std::vector<Scaled> PerTerrain;
   std::vector<double> Received, TerrainSeen;
-  std::vector<std::uint8_t> Refined; // per coarse cell
+  std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells
 };
 } // namespace terralux

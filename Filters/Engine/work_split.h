@@ -1,12 +1,12 @@
 #pragma once
 // How processes that solve the same scene (MPI ranks, each evaluating its own piece of
-// a terrain, its window) split work whose results every one of them needs: the posts'
-// skies and the lattice's gathers, which gather rays read wherever they land, and the
-// horizons' sweeps, which cross the whole grid. Each value is computed the same way
-// whoever computes it, so each process computes its share (its window's posts, its
-// azimuths) and then receives the others' (a broadcast from each share's process): the
-// results equal one process's, bit for bit. The engine knows no MPI; the VTK adapter
-// passes its controller in.
+// a terrain, its window) split work whose results others need: the posts' skies and
+// the lattice's gathers, which gather rays read where they land (each process holds
+// those near its window: held_posts.h), and the horizons' sweeps, which cross the whole
+// grid (handed on: horizon_map.h). Each value is computed the same way whoever computes
+// it, so each process computes its share (its window's posts) and then receives the
+// others' it needs: the results equal one process's, bit for bit. The engine knows no
+// MPI; the VTK adapter passes its controller in.
 
 #include "error.h"
 
@@ -46,38 +46,6 @@ public:
   static Window ownWindow(const WorkSplit* split, int nx, int ny)
   {
     return split ? split->window(split->part()).clampedTo(nx, ny) : Window{ 0, nx - 1, 0, ny - 1 };
-  }
-  /// Once each process has computed `values` at the posts of its window (one value per
-  /// post of an nx x ny grid, in grid order; or, with `step`, per post of a lattice of
-  /// every step-th post each way, nx x ny of them): every window's values, from its
-  /// process. Where windows share posts, each computed them alike.
-  template <typename Vector>
-  void shareWindows(Vector& values, int nx, int ny, int step = 1) const
-  {
-    using T = typename Vector::value_type;
-    std::vector<T> packed;
-    for (int owner = 0; owner < this->parts(); ++owner)
-    {
-      // The window's posts on the lattice: from the first step-th post in it to the last.
-      const Window w = this->window(owner);
-      auto first = [step](int post) { return post <= 0 ? 0 : (post + step - 1) / step; };
-      auto last = [step](int post) { return post < 0 ? -1 : post / step; };
-      const Window lattice = Window{ first(w.i0), last(w.i1), first(w.j0), last(w.j1) }.clampedTo(nx, ny);
-      if (lattice.empty())
-        continue;
-      const int i0 = lattice.i0, j0 = lattice.j0, j1 = lattice.j1;
-      const std::size_t width = static_cast<std::size_t>(lattice.i1 - i0 + 1);
-      packed.resize(width * static_cast<std::size_t>(j1 - j0 + 1));
-      auto row = [&](int j) { return values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(j) * nx + i0); };
-      auto packedRow = [&](int j) { return packed.begin() + static_cast<std::ptrdiff_t>((j - j0) * width); };
-      if (owner == this->part())
-        for (int j = j0; j <= j1; ++j)
-          std::copy_n(row(j), width, packedRow(j));
-      this->share(packed.data(), packed.size() * sizeof(T), owner);
-      if (owner != this->part())
-        for (int j = j0; j <= j1; ++j)
-          std::copy_n(packedRow(j), width, row(j));
-    }
   }
   /// Every process calls it alike: whether every process says `succeeded`.
   virtual bool allSucceeded(bool succeeded) const = 0;

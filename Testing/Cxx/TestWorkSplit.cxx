@@ -9,6 +9,7 @@
 #include "horizon_map.h"
 #include "horizon_sky.h"
 #include "open_sky.h"
+#include "post_lattice.h"
 #include "post_sky.h"
 #include "post_sunlight.h"
 #include "sky_hierarchy.h"
@@ -294,6 +295,81 @@ TEST(WorkSplit, ProcessesHoldThePostsWithinTheDetailDistanceOfTheirWindowsOnly)
         EXPECT_THROW(skies.interpolate(own.i0 + 0.5, farRow, irradiance), Error);
         EXPECT_THROW(sunlight.between(own.i0 + 0.5, farRow), Error);
         EXPECT_TRUE(skies.interpolate(own.i0 + 0.5, own.j0 + 0.5, irradiance));
+      });
+    }
+}
+
+TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly)
+{
+  // Each process gathers the lattice posts of its window in two passes, refining alike
+  // the cells whose corners disagree, and holds what the others gathered within its
+  // halo: there every reading equals one process's, bit for bit; beyond, it throws.
+  const int nx = 97, ny = 81, step = 4, halo = 6;
+  auto gathered = [](int i, int j) {
+    PostLattice::Gathered g;
+    // Smooth in the west, rough in the east: some cells refine, some do not.
+    const double light = 10.0 + (i > 60 ? 8.0 * std::sin(1.7 * i) * std::cos(0.9 * j) : 0.01 * i + 0.02 * j);
+    g.reflected = { light, 0.5 * light, 0.25 * light };
+    g.skyCorrection = { 0.1 * std::sin(0.3 * j), 0.0, 0.0 };
+    g.variance = 0.5 + 0.01 * i;
+    g.terrainSeen = 0.3 + 0.002 * j;
+    g.received = 100.0;
+    return g;
+  };
+  auto gatherLattice = [&](PostLattice& lattice, const WorkSplit* split) {
+    for (const bool first : { true, false })
+    {
+      if (!first)
+        lattice.refine(0.02);
+      for (int j = 0; j < ny; j += step)
+        for (int i = 0; i < nx; i += step)
+          if (PostLattice::gathers(i, j, split) && lattice.gatheredInPass(i, j, first) && !(i == 24 && j == 40))
+            lattice.set(i, j, gathered(i, j)); // (24, 40): a lattice post with no data
+      if (split)
+        lattice.share();
+    }
+  };
+  PostLattice alone(nx, ny, step);
+  gatherLattice(alone, nullptr);
+  using Window = WorkSplit::Window;
+  const std::vector<std::vector<Window>> cuts{ { { 0, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } },
+    { { 0, 48, 0, 40 }, { 48, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } } };
+  for (const std::vector<Window>& windows : cuts)
+    for (const bool pointToPoint : { false, true })
+    {
+      ThreadRanks ranks = pointToPoint ? ThreadRanks(windows) : ThreadRanks(static_cast<int>(windows.size()), ny);
+      ranks.run([&](const ThreadRanks::Split& split) {
+        PostLattice lattice(nx, ny, step, &split, halo);
+        gatherLattice(lattice, &split);
+        // Each share sends to (or broadcasts from) each other process, per vector.
+        EXPECT_EQ(split.Shares + split.Sends, 2 * 5 * (pointToPoint ? static_cast<int>(windows.size()) - 1 : static_cast<int>(windows.size())));
+        const HeldPosts read(nx, ny, &split, halo); // where gather rays read
+        int differences = 0, coarse = 0, refined = 0;
+        for (int j = read.own().j0; j <= read.own().j1; ++j)
+          for (int i = read.own().i0; i <= read.own().i1; ++i)
+          {
+            const PostLattice::Around a = lattice.around(i, j), b = alone.around(i, j);
+            differences += a.variance != b.variance || a.largestPerTerrainSeen != b.largestPerTerrainSeen ||
+              a.leastPerTerrainSeen != b.leastPerTerrainSeen;
+            Spectrum r, s;
+            const bool found = lattice.reflectedAt(i + 0.3, j + 0.6, r);
+            differences += found != alone.reflectedAt(i + 0.3, j + 0.6, s) || (found && r != s);
+            PostLattice::PerTerrainSeen p, q;
+            const bool foundPer = lattice.perTerrainSeenAt(i, j, p);
+            differences += foundPer != alone.perTerrainSeenAt(i, j, q) ||
+              (foundPer && (p.reflected != q.reflected || p.skyCorrection != q.skyCorrection));
+            if (i % (2 * step) == 1 && j % (2 * step) == 1)
+              (alone.gatheredInPass(i - 1 + step, j - 1, false) ? refined : coarse) += 1;
+          }
+        EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << windows.size();
+        EXPECT_GT(coarse, 0);
+        EXPECT_GT(refined, 0);
+        // Beyond the halo: an error, not a wrong value.
+        const Window own = split.window(split.part()).clampedTo(nx, ny);
+        const double farRow = own.j0 > 0 ? 0.5 : ny - 1.5;
+        Spectrum r;
+        EXPECT_THROW(lattice.reflectedAt(own.i0 + 0.5, farRow, r), Error);
+        EXPECT_THROW(lattice.around(own.i0, static_cast<int>(farRow)), Error);
       });
     }
 }
