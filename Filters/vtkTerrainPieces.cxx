@@ -1,13 +1,10 @@
 #include "vtkTerrainPieces.h"
 
-#include "vtkRadiosityOutputs.h"
-
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkMPICommunicator.h"
@@ -18,12 +15,12 @@
 #include "vtkStructuredGrid.h"
 #include "vtkTable.h"
 #include "vtkTerraLuxFieldData.h"
-#include "vtkUnsignedCharArray.h"
 
 #include "geo_transform.h"
 #include "work_split.h"
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cstring>
 #include <deque>
@@ -74,18 +71,27 @@ vtkSmartPointer<vtkTable> packetOf(vtkDataSet* piece, std::vector<vtkDataArray*>
   if (!grid || grid->GetNumberOfPoints() == 0 || !transformOf(grid->GetFieldData(), unused))
     return packet;
   vtkPointData* pointData = grid->GetPointData();
+  // The ghosts first: the root reads the others' values with them.
+  std::vector<vtkDataArray*> ordered;
+  if (vtkDataArray* ghosts = grid->GetPointGhostArray())
+    ordered.push_back(ghosts);
   for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
-    if (vtkDataArray* array = pointData->GetArray(k); array && array->GetName())
-    {
-      vtkSmartPointer<vtkDataArray> column;
-      column.TakeReference(array->NewInstance());
-      column->SetName(array->GetName());
-      column->SetNumberOfComponents(array->GetNumberOfComponents());
-      column->SetNumberOfTuples(1); // the legacy format drops a table without rows
-      column->Fill(0.0);
-      packet->AddColumn(column);
-      arrays.push_back(array);
-    }
+    if (vtkDataArray* array = pointData->GetArray(k);
+        array && array->GetName() && array != static_cast<vtkDataArray*>(grid->GetPointGhostArray()))
+      ordered.push_back(array);
+  for (vtkDataArray* array : ordered)
+  {
+    vtkSmartPointer<vtkDataArray> column;
+    column.TakeReference(array->NewInstance());
+    column->SetName(array->GetName());
+    column->SetNumberOfComponents(array->GetNumberOfComponents());
+    column->SetNumberOfTuples(1); // the legacy format drops a table without rows
+    column->Fill(0.0);
+    if (array->HasInformation()) // units (vtkDataArray::UNITS_LABEL)
+      column->GetInformation()->Copy(array->GetInformation());
+    packet->AddColumn(column);
+    arrays.push_back(array);
+  }
   vtkFieldData* fieldData = grid->GetFieldData();
   for (int k = 0; k < fieldData->GetNumberOfArrays(); ++k)
     if (vtkDataArray* array = fieldData->GetArray(k))
@@ -98,7 +104,35 @@ vtkSmartPointer<vtkTable> packetOf(vtkDataSet* piece, std::vector<vtkDataArray*>
   return packet;
 }
 
-// A piece the root assembles: its extent, its arrays' names and types (the packet's
+// Whether the rectangles (i0, i1, j0, j1, inclusive) cover the whole extent's posts.
+bool coversWhole(const std::vector<std::array<int, 4>>& rectangles, const int whole[6])
+{
+  // On the grid of the rectangles' edges, each elementary cell is covered or not.
+  std::vector<int> xs{ whole[0], whole[1] + 1 }, ys{ whole[2], whole[3] + 1 };
+  for (const auto& r : rectangles)
+  {
+    xs.push_back(r[0]), xs.push_back(r[1] + 1), ys.push_back(r[2]), ys.push_back(r[3] + 1);
+  }
+  for (auto* edges : { &xs, &ys })
+  {
+    std::sort(edges->begin(), edges->end());
+    edges->erase(std::unique(edges->begin(), edges->end()), edges->end());
+  }
+  for (std::size_t b = 0; b + 1 < ys.size(); ++b)
+    for (std::size_t a = 0; a + 1 < xs.size(); ++a)
+    {
+      if (xs[a] < whole[0] || xs[a] > whole[1] || ys[b] < whole[2] || ys[b] > whole[3])
+        continue;
+      const bool covered = std::any_of(rectangles.begin(), rectangles.end(), [&](const std::array<int, 4>& r) {
+        return r[0] <= xs[a] && xs[a + 1] - 1 <= r[1] && r[2] <= ys[b] && ys[b + 1] - 1 <= r[3];
+      });
+      if (!covered)
+        return false;
+    }
+  return true;
+}
+
+// A piece the root writes: its extent, its arrays' names and types (the packet's
 // columns) and the rank that sends their values.
 struct Piece
 {
@@ -108,12 +142,12 @@ struct Piece
 };
 } // namespace
 
-vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
-  vtkMultiProcessController* controller, vtkDataSet* piece, int root)
+bool vtkTerrainPieces::SendToRoot(vtkMultiProcessController* controller, vtkDataSet* piece, int root,
+  const std::function<void(const Layout&)>& begin, const std::function<void(const PieceArray&)>& each)
 {
   // First the small packets, then each piece's arrays, one rank and one array at a
-  // time: the root holds the whole grid and one array in flight, the others nothing
-  // more than their piece.
+  // time (its ghosts first): the root holds its own piece and one array in flight, the
+  // others nothing more than their piece.
   std::vector<vtkDataArray*> ownArrays;
   const vtkSmartPointer<vtkTable> packet = packetOf(piece, ownArrays);
   std::vector<vtkSmartPointer<vtkDataObject>> received;
@@ -123,7 +157,7 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
   {
     for (vtkDataArray* array : ownArrays)
       controller->Send(array, root, valuesTag);
-    return nullptr;
+    return false;
   }
 
   std::vector<Piece> pieces;
@@ -133,59 +167,56 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
     vtkDataArray* extent = table ? table->GetFieldData()->GetArray("PieceExtent") : nullptr;
     if (!extent || extent->GetNumberOfValues() != 6)
       continue;
-    Piece piece{ {}, table, rank };
+    Piece p{ {}, table, rank };
     for (int k = 0; k < 6; ++k)
-      piece.extent[k] = static_cast<int>(extent->GetComponent(k, 0));
-    pieces.push_back(piece);
+      p.extent[k] = static_cast<int>(extent->GetComponent(k, 0));
+    pieces.push_back(p);
   }
   if (pieces.empty())
-    return nullptr;
-  int whole[6] = { VTK_INT_MAX, VTK_INT_MIN, VTK_INT_MAX, VTK_INT_MIN, 0, 0 };
+    return false;
+  Layout layout;
+  std::fill_n(layout.whole, 6, 0);
+  layout.whole[0] = layout.whole[2] = VTK_INT_MAX;
+  layout.whole[1] = layout.whole[3] = VTK_INT_MIN;
+  std::vector<std::array<int, 4>> rectangles;
   for (const Piece& p : pieces)
   {
     const int* e = p.extent;
     for (int axis = 0; axis < 2; ++axis)
     {
-      whole[2 * axis] = std::min(whole[2 * axis], e[2 * axis]);
-      whole[2 * axis + 1] = std::max(whole[2 * axis + 1], e[2 * axis + 1]);
+      layout.whole[2 * axis] = std::min(layout.whole[2 * axis], e[2 * axis]);
+      layout.whole[2 * axis + 1] = std::max(layout.whole[2 * axis + 1], e[2 * axis + 1]);
     }
+    rectangles.push_back({ e[0], e[1], e[2], e[3] });
   }
-  const int nx = whole[1] - whole[0] + 1;
-  const int ny = whole[3] - whole[2] + 1;
-  const vtkIdType count = static_cast<vtkIdType>(nx) * ny;
-
-  auto result = vtkSmartPointer<vtkImageData>::New();
-  result->SetExtent(whole);
-  result->GetFieldData()->DeepCopy(
+  layout.covered = coversWhole(rectangles, layout.whole);
+  const int* w = layout.whole;
+  const int ny = w[3] - w[2] + 1;
+  // The field data of the root's own piece where it has one (the CRS's WKT travels in
+  // no packet), and the whole grid's georeference, from any piece's.
+  layout.fieldData = vtkSmartPointer<vtkFieldData>::New();
+  layout.fieldData->DeepCopy(
     piece && piece->GetNumberOfPoints() > 0 ? piece->GetFieldData() : pieces[0].table->GetFieldData());
-  result->GetFieldData()->RemoveArray("PieceExtent");
-  // Posts no piece holds stay blanked; a piece's duplicate (ghost) marks are dropped.
-  vtkNew<vtkUnsignedCharArray> ghosts;
-  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
-  ghosts->SetNumberOfTuples(count);
-  ghosts->Fill(vtkDataSetAttributes::HIDDENPOINT);
+  layout.fieldData->RemoveArray("PieceExtent");
+  terralux::GeoTransform pieceTransform;
+  transformOf(pieces[0].table->GetFieldData(), pieceTransform); // packetOf sent only georeferenced pieces
+  const int* e0 = pieces[0].extent;
+  const int row0 = pieceTransform.firstRasterRow(e0[2] - w[2], e0[3] - w[2], ny);
+  setGeoreference(layout.fieldData, pieceTransform.window(-(e0[0] - w[0]), -row0, 1), w[1] - w[0] + 1, ny);
   vtkTable* first = pieces[0].table;
   for (vtkIdType a = 0; a < first->GetNumberOfColumns(); ++a)
-  {
-    vtkDataArray* model = vtkDataArray::SafeDownCast(first->GetColumn(a));
-    if (!model || !model->GetName() || std::strcmp(model->GetName(), vtkDataSetAttributes::GhostArrayName()) == 0)
-      continue;
-    vtkSmartPointer<vtkDataArray> array;
-    array.TakeReference(model->NewInstance());
-    array->SetName(model->GetName());
-    array->SetNumberOfComponents(model->GetNumberOfComponents());
-    array->SetNumberOfTuples(count);
-    vtkRadiosityOutputs::FillWithNaN(array);
-    if (vtkInformation* info = model->HasInformation() ? model->GetInformation() : nullptr)
-      array->GetInformation()->Copy(info);
-    result->GetPointData()->AddArray(array);
-  }
+    if (auto* model = vtkDataArray::SafeDownCast(first->GetColumn(a)))
+      if (std::strcmp(model->GetName(), vtkDataSetAttributes::GhostArrayName()) != 0)
+        layout.arrays.push_back(model);
+  begin(layout);
+
   for (const Piece& p : pieces)
   {
-    const int* e = p.extent;
-    const int width = e[1] - e[0] + 1;
-    // The piece's arrays, in its packet's order: the root's own as they are, the others'
-    // as they arrive. Each row of a piece is a run of posts in the whole grid too.
+    // The piece's arrays, in its packet's order (ghosts first): the root's own as they
+    // are, the others' as they arrive.
+    PieceArray current;
+    std::copy_n(p.extent, 6, current.extent);
+    vtkSmartPointer<vtkDataArray> ghosts;
     for (vtkIdType a = 0; a < p.table->GetNumberOfColumns(); ++a)
     {
       auto* model = vtkDataArray::SafeDownCast(p.table->GetColumn(a));
@@ -195,34 +226,18 @@ vtkSmartPointer<vtkImageData> vtkTerrainPieces::GatherToRoot(
         values.TakeReference(model->NewInstance());
         controller->Receive(values, p.rank, valuesTag);
       }
-      const bool ghost = std::strcmp(model->GetName(), vtkDataSetAttributes::GhostArrayName()) == 0;
-      vtkDataArray* target = ghost ? nullptr : result->GetPointData()->GetArray(model->GetName());
-      for (int j = e[2]; j <= e[3]; ++j)
+      values->SetName(model->GetName());
+      if (std::strcmp(model->GetName(), vtkDataSetAttributes::GhostArrayName()) == 0)
       {
-        const vtkIdType from = static_cast<vtkIdType>(j - e[2]) * width;
-        const vtkIdType to = (e[0] - whole[0]) + static_cast<vtkIdType>(j - whole[2]) * nx;
-        if (target && target->GetNumberOfComponents() == values->GetNumberOfComponents())
-          target->InsertTuples(to, width, from, values);
-        if (ghost)
-          for (int i = 0; i < width; ++i)
-            ghosts->SetValue(
-              to + i, static_cast<unsigned char>(values->GetComponent(from + i, 0)) & vtkDataSetAttributes::HIDDENPOINT);
+        ghosts = values;
+        continue;
       }
+      current.ghosts = ghosts;
+      current.values = values;
+      each(current);
     }
-    // Posts of a piece without a ghost array are all shown.
-    if (!p.table->GetColumnByName(vtkDataSetAttributes::GhostArrayName()))
-      for (int j = e[2]; j <= e[3]; ++j)
-        std::fill_n(ghosts->GetPointer((e[0] - whole[0]) + static_cast<vtkIdType>(j - whole[2]) * nx), width, 0);
   }
-  result->GetPointData()->AddArray(ghosts);
-
-  // The whole grid's georeference, from any piece's.
-  terralux::GeoTransform pieceTransform;
-  transformOf(pieces[0].table->GetFieldData(), pieceTransform); // packetOf sent only georeferenced pieces
-  const int* e = pieces[0].extent;
-  const int row0 = pieceTransform.firstRasterRow(e[2] - whole[2], e[3] - whole[2], ny);
-  setGeoreference(result->GetFieldData(), pieceTransform.window(-(e[0] - whole[0]), -row0, 1), nx, ny);
-  return result;
+  return true;
 }
 
 void vtkTerrainPieces::CropToPiece(vtkStructuredGrid* terrain, const int extent[6])

@@ -4,7 +4,6 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
-#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
@@ -21,7 +20,10 @@
 #include "error.h"
 #include "raster_writer.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <limits>
 #include <cstring>
 
@@ -47,6 +49,129 @@ std::string unitOf(vtkDataArray* array, const std::string& name)
     return "1";
   return "";
 }
+
+// The GeoTIFF of a terrain grid written piece by piece: bands from the grid's point
+// arrays, each piece's values into its window, so the writer holds one piece's array
+// at a time, never the whole grid's bands.
+class PieceRaster
+{
+public:
+  // `fieldData`: the whole grid's (GeoTransform, RasterSize, CRS, NoDataValue), of
+  // dimensions `dims`; `arrays`: its point arrays (values unused); `names`: those to
+  // write (empty: what the filters compute, else every one); `uncovered`: whether some
+  // post will get no piece (it is then no data).
+  PieceRaster(const std::string& fileName, vtkFieldData* fieldData, const int dims[3],
+    const std::vector<vtkDataArray*>& arrays, std::vector<std::string> names, double defaultNoData, bool uncovered)
+  {
+    vtkDataArray* geoTransform = fieldData->GetArray(vtkTerraLuxFieldData::GeoTransformName());
+    vtkDataArray* rasterSize = fieldData->GetArray(vtkTerraLuxFieldData::RasterSizeName());
+    if (!geoTransform || geoTransform->GetNumberOfValues() != 6 || !rasterSize ||
+      rasterSize->GetNumberOfValues() != 2)
+    {
+      throw terralux::Error("the input has no raster georeference (field data GeoTransform and "
+                            "RasterSize): write grids that come from vtkTerrainSource");
+    }
+    if (rasterSize->GetComponent(0, 0) != dims[0] || rasterSize->GetComponent(1, 0) != dims[1] || dims[2] != 1)
+    {
+      throw terralux::Error("the grid's dimensions no longer match its RasterSize field data");
+    }
+    this->Raster.width = dims[0];
+    this->Raster.height = dims[1];
+    for (int k = 0; k < 6; ++k)
+      this->Raster.geoTransform.coefficients[k] = geoTransform->GetComponent(k, 0);
+    if (auto* crs = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray(vtkTerraLuxFieldData::CRSName())))
+    {
+      this->Raster.crsWkt = crs->GetNumberOfValues() > 0 ? crs->GetValue(0) : "";
+    }
+    vtkDataArray* noData = fieldData->GetArray(vtkTerraLuxFieldData::NoDataValueName());
+    this->Raster.noData = noData ? noData->GetComponent(0, 0) : defaultNoData;
+    this->Raster.hasNoData = noData != nullptr || uncovered;
+
+    auto find = [&arrays](const std::string& name) -> vtkDataArray* {
+      for (vtkDataArray* array : arrays)
+        if (array->GetName() && name == array->GetName())
+          return array;
+      return nullptr;
+    };
+    if (names.empty())
+    {
+      for (const char* name : vtkRadiosityOutputs::AllNames()) // what the filters compute
+        if (find(name))
+          names.emplace_back(name);
+      if (names.empty())
+        for (vtkDataArray* array : arrays)
+          if (array->GetName() && std::strcmp(array->GetName(), vtkDataSetAttributes::GhostArrayName()) != 0)
+            names.emplace_back(array->GetName());
+    }
+    std::vector<terralux::RasterBand> bands;
+    for (const std::string& name : names)
+    {
+      vtkDataArray* array = find(name);
+      if (!array)
+      {
+        throw terralux::Error("the input has no point array '" + name + "' to write");
+      }
+      this->FirstBand[name] = static_cast<int>(bands.size());
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        terralux::RasterBand band;
+        band.description = array->GetNumberOfComponents() == 1 ? name : name + "[" + std::to_string(c) + "]";
+        band.unit = unitOf(array, name);
+        bands.push_back(std::move(band));
+      }
+    }
+    this->Writer = std::make_unique<terralux::GeoTiffWriter>(fileName, this->Raster, bands);
+  }
+
+  // One point array of the piece whose first post is (i0, j0) of the whole grid and
+  // that has `dims` posts (nothing where the array is not written).
+  void Write(int i0, int j0, const int dims[2], vtkDataArray* ghosts, vtkDataArray* array)
+  {
+    const auto band = this->FirstBand.find(array->GetName() ? array->GetName() : "");
+    if (band == this->FirstBand.end())
+      return;
+    const int width = dims[0], height = dims[1];
+    if (array->GetNumberOfTuples() != static_cast<vtkIdType>(width) * height)
+    {
+      throw terralux::Error(std::string("point array '") + array->GetName() + "' does not have one value per post");
+    }
+    const terralux::GeoTransform& transform = this->Raster.geoTransform;
+    const int row0 = transform.firstRasterRow(j0, j0 + height - 1, this->Raster.height);
+    std::vector<float> window(static_cast<std::size_t>(width) * height);
+    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+    {
+      for (int row = 0; row < height; ++row)
+        for (int col = 0; col < width; ++col)
+        {
+          // Raster row -> grid j as vtkTerrainSource laid it (reversed for north-up).
+          const vtkIdType point = col + static_cast<vtkIdType>(transform.gridRow(row, height)) * width;
+          double value = array->GetComponent(point, c);
+          const bool hidden = ghosts && (static_cast<int>(ghosts->GetComponent(point, 0)) & vtkDataSetAttributes::HIDDENPOINT);
+          // Float32 holds magnitudes up to about 3.4e38; beyond is no data, not inf.
+          if (hidden || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
+          {
+            value = this->Raster.noData;
+            this->NoDataWritten = true;
+          }
+          window[static_cast<std::size_t>(row) * width + col] = static_cast<float>(value);
+        }
+      this->Writer->writeWindow(band->second + c, i0, row0, width, height, window.data());
+    }
+  }
+
+  void Close()
+  {
+    if (this->NoDataWritten && !this->Raster.hasNoData)
+      this->Writer->setNoData(this->Raster.noData);
+    this->Writer->close();
+  }
+
+private:
+  terralux::RasterGrid Raster;
+  std::map<std::string, int> FirstBand; // of each array written
+  std::unique_ptr<terralux::GeoTiffWriter> Writer;
+  bool NoDataWritten = false;
+};
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -141,19 +266,35 @@ void vtkTerrainRasterWriter::WriteData()
     }
     else if (controller && controller->GetNumberOfProcesses() > 1)
     {
-      // Collective: every rank sends its piece, rank 0 writes the whole grid.
-      vtkSmartPointer<vtkImageData> whole =
-        vtkTerrainPieces::GatherToRoot(controller, vtkDataSet::SafeDownCast(this->GetInput()), 0);
+      // Collective: every rank sends its piece, rank 0 writes each into its window.
+      std::unique_ptr<PieceRaster> raster;
+      int whole[6] = { 0, -1, 0, -1, 0, 0 };
+      const bool root = vtkTerrainPieces::SendToRoot(
+        controller, vtkDataSet::SafeDownCast(this->GetInput()), 0,
+        [&](const vtkTerrainPieces::Layout& layout) {
+          std::copy_n(layout.whole, 6, whole);
+          const int dims[3] = { whole[1] - whole[0] + 1, whole[3] - whole[2] + 1, 1 };
+          std::vector<vtkDataArray*> arrays;
+          for (const auto& array : layout.arrays)
+            arrays.push_back(array);
+          raster = std::make_unique<PieceRaster>(
+            this->FileName, layout.fieldData, dims, arrays, this->ArrayNames, this->NoDataValue, !layout.covered);
+        },
+        [&](const vtkTerrainPieces::PieceArray& piece) {
+          const int* e = piece.extent;
+          const int dims[2] = { e[1] - e[0] + 1, e[3] - e[2] + 1 };
+          raster->Write(e[0] - whole[0], e[2] - whole[2], dims, piece.ghosts, piece.values);
+        });
       if (controller->GetLocalProcessId() != 0)
       {
         this->Succeeded = true;
         return;
       }
-      if (!whole)
+      if (!root)
       {
         throw terralux::Error(noPieceToWrite);
       }
-      this->WriteGrid(whole, this->FileName);
+      raster->Close();
     }
     else
     {
@@ -223,90 +364,19 @@ void vtkTerrainRasterWriter::WritePiecesAndMosaic(vtkMultiProcessController* con
 }
 
 //------------------------------------------------------------------------------
-void vtkTerrainRasterWriter::WriteGrid(vtkDataSet* grid, const std::string& fileName)
+void vtkTerrainRasterWriter::WriteGrid(vtkStructuredGrid* grid, const std::string& fileName)
 {
-  vtkFieldData* fieldData = grid->GetFieldData();
-  vtkDataArray* geoTransform = fieldData->GetArray(vtkTerraLuxFieldData::GeoTransformName());
-  vtkDataArray* rasterSize = fieldData->GetArray(vtkTerraLuxFieldData::RasterSizeName());
-  int dims[3] = { 0, 0, 0 };
-  if (auto* structured = vtkStructuredGrid::SafeDownCast(grid))
-    structured->GetDimensions(dims);
-  else if (auto* image = vtkImageData::SafeDownCast(grid))
-    image->GetDimensions(dims);
-  if (!geoTransform || geoTransform->GetNumberOfValues() != 6 || !rasterSize ||
-    rasterSize->GetNumberOfValues() != 2)
-  {
-    throw terralux::Error("the input has no raster georeference (field data GeoTransform and "
-                          "RasterSize): write grids that come from vtkTerrainSource");
-  }
-  if (rasterSize->GetComponent(0, 0) != dims[0] || rasterSize->GetComponent(1, 0) != dims[1] || dims[2] != 1)
-  {
-    throw terralux::Error("the grid's dimensions no longer match its RasterSize field data");
-  }
-  terralux::RasterGrid raster;
-  raster.width = dims[0];
-  raster.height = dims[1];
-  for (int k = 0; k < 6; ++k)
-    raster.geoTransform.coefficients[k] = geoTransform->GetComponent(k, 0);
-  if (auto* crs = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray(vtkTerraLuxFieldData::CRSName())))
-  {
-    raster.crsWkt = crs->GetNumberOfValues() > 0 ? crs->GetValue(0) : "";
-  }
-  vtkDataArray* noData = fieldData->GetArray(vtkTerraLuxFieldData::NoDataValueName());
-  raster.noData = noData ? noData->GetComponent(0, 0) : this->NoDataValue;
-
-  std::vector<std::string> names = this->ArrayNames;
+  int dims[3];
+  grid->GetDimensions(dims);
+  std::vector<vtkDataArray*> arrays;
   vtkPointData* pointData = grid->GetPointData();
-  if (names.empty())
-  {
-    for (const char* name : vtkRadiosityOutputs::AllNames()) // what the filters compute
-      if (pointData->GetArray(name))
-        names.emplace_back(name);
-    if (names.empty())
-    {
-      for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
-      {
-        const char* name = pointData->GetArrayName(k);
-        if (name && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
-          names.emplace_back(name);
-      }
-    }
-  }
-  vtkUnsignedCharArray* ghosts = grid->GetPointGhostArray();
-  std::vector<terralux::RasterBand> bands;
-  for (const std::string& name : names)
-  {
-    vtkDataArray* array = pointData->GetArray(name.c_str());
-    if (!array)
-    {
-      throw terralux::Error("the input has no point array '" + name + "' to write");
-    }
-    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-    {
-      terralux::RasterBand band;
-      band.description = array->GetNumberOfComponents() == 1 ? name : name + "[" + std::to_string(c) + "]";
-      band.unit = unitOf(array, name);
-      band.values.resize(static_cast<std::size_t>(dims[0]) * dims[1]);
-      for (int row = 0; row < dims[1]; ++row)
-        for (int col = 0; col < dims[0]; ++col)
-        {
-          // Raster row -> grid j as vtkTerrainSource laid it (reversed for north-up).
-          const vtkIdType point = col + static_cast<vtkIdType>(raster.geoTransform.gridRow(row, dims[1])) * dims[0];
-          double value = array->GetComponent(point, c);
-          const bool hidden = ghosts && (ghosts->GetValue(point) & vtkDataSetAttributes::HIDDENPOINT);
-          // Float32 holds magnitudes up to about 3.4e38; beyond is no data, not inf.
-          if (hidden || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
-          {
-            value = raster.noData;
-            raster.hasNoData = true;
-          }
-          band.values[static_cast<std::size_t>(row) * dims[0] + col] = static_cast<float>(value);
-        }
-      bands.push_back(std::move(band));
-    }
-  }
-  raster.hasNoData = raster.hasNoData || noData != nullptr;
-  terralux::writeGeoTiff(fileName, raster, bands);
+  for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
+    if (vtkDataArray* array = pointData->GetArray(k))
+      arrays.push_back(array);
+  PieceRaster raster(fileName, grid->GetFieldData(), dims, arrays, this->ArrayNames, this->NoDataValue, false);
+  for (vtkDataArray* array : arrays)
+    raster.Write(0, 0, dims, grid->GetPointGhostArray(), array);
+  raster.Close();
 }
 
 //------------------------------------------------------------------------------

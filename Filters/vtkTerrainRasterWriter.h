@@ -27,6 +27,7 @@
 
 class vtkDataSet;
 class vtkMultiProcessController;
+class vtkStructuredGrid;
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -65,7 +66,8 @@ public:
    * its piece as `<FileName without extension>_<rank>.tif` and rank 0 a GDAL VRT mosaic
    * of them at FileName (give it a .vrt extension), so no rank holds the whole grid and
    * nothing travels but the file names; one process writes its one piece the same way.
-   * Off (default): one GeoTIFF at FileName, assembled on rank 0 under MPI.
+   * Off (default): one GeoTIFF at FileName, written by rank 0 under MPI, each rank's
+   * piece into its window as it arrives (rank 0 holds one piece's array at a time).
    */
   vtkSetMacro(WritePieces, vtkTypeBool);
   vtkGetMacro(WritePieces, vtkTypeBool);
@@ -89,9 +91,8 @@ protected:
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void WriteData() override;
-  // Writes a terrain grid (a vtkStructuredGrid, or pieces assembled as a vtkImageData)
-  // as the GeoTIFF `fileName`; throws terralux::Error.
-  void WriteGrid(vtkDataSet* grid, const std::string& fileName);
+  // Writes a terrain grid as the GeoTIFF `fileName`; throws terralux::Error.
+  void WriteGrid(vtkStructuredGrid* grid, const std::string& fileName);
   // WritePieces: each rank's piece as a GeoTIFF, rank 0 the VRT over them (collective).
   void WritePiecesAndMosaic(vtkMultiProcessController* controller);
 

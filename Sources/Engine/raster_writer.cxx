@@ -13,22 +13,23 @@
 
 namespace terralux
 {
-void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands)
+struct GeoTiffWriter::Dataset
 {
-  const std::size_t posts = static_cast<std::size_t>(grid.width) * grid.height;
+  QuietGdalErrors quiet; // first made, last gone: GDAL's errors in closing are caught too
+  std::unique_ptr<GDALDataset> gdal;
+};
+
+GeoTiffWriter::GeoTiffWriter(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands)
+  : File(std::make_unique<Dataset>())
+  , FileName(fileName)
+  , Width(grid.width)
+  , Height(grid.height)
+{
   if (grid.width <= 0 || grid.height <= 0 || bands.empty())
   {
     throw Error("nothing to write: the grid is empty or no array was chosen");
   }
-  for (const RasterBand& band : bands)
-  {
-    if (band.values.size() != posts)
-    {
-      throw Error("band '" + band.description + "' does not have one value per post");
-    }
-  }
   GDALAllRegister();
-  const QuietGdalErrors quiet;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   const bool tiled = grid.width >= 512 && grid.height >= 512;
   // Compressed by every core, quickly, after the floating-point predictor (TIFF's
@@ -36,11 +37,12 @@ void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std
   // one core, 0.29 s on two at deflate's default level (19.0 MiB), 0.15 s so (16.3 MiB).
   const char* options[] = { "COMPRESS=DEFLATE", "PREDICTOR=3", "ZLEVEL=1", "NUM_THREADS=ALL_CPUS",
     tiled ? "TILED=YES" : nullptr, nullptr };
-  std::unique_ptr<GDALDataset> dataset(driver->Create(fileName.c_str(), grid.width, grid.height,
+  this->File->gdal.reset(driver->Create(fileName.c_str(), grid.width, grid.height,
     static_cast<int>(bands.size()), GDT_Float32, const_cast<char**>(options)));
+  GDALDataset* dataset = this->File->gdal.get();
   if (!dataset)
   {
-    throw Error("cannot create '" + fileName + "' (" + quiet.lastMessage() + "): check the folder and permissions");
+    throw Error("cannot create '" + fileName + "' (" + this->File->quiet.lastMessage() + "): check the folder and permissions");
   }
   std::array<double, 6> coefficients = grid.geoTransform.coefficients;
   dataset->SetGeoTransform(coefficients.data());
@@ -49,7 +51,7 @@ void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std
     OGRSpatialReference crs;
     if (crs.SetFromUserInput(grid.crsWkt.c_str()) != OGRERR_NONE || dataset->SetSpatialRef(&crs) != CE_None)
     {
-      throw Error("cannot set the CRS of '" + fileName + "': " + quiet.lastMessage());
+      throw Error("cannot set the CRS of '" + fileName + "': " + this->File->quiet.lastMessage());
     }
   }
   for (std::size_t k = 0; k < bands.size(); ++k)
@@ -57,17 +59,62 @@ void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std
     GDALRasterBand* band = dataset->GetRasterBand(static_cast<int>(k) + 1);
     band->SetDescription(bands[k].description.c_str());
     band->SetUnitType(bands[k].unit.c_str());
-    if (grid.hasNoData)
+  }
+  // Before any value: blocks GDAL starts then begin as no data, not 0.
+  if (grid.hasNoData)
+    this->setNoData(grid.noData);
+}
+
+GeoTiffWriter::~GeoTiffWriter() = default;
+
+void GeoTiffWriter::setNoData(double noData)
+{
+  GDALDataset& dataset = *this->File->gdal;
+  for (int k = 1; k <= dataset.GetRasterCount(); ++k)
+    dataset.GetRasterBand(k)->SetNoDataValue(noData);
+}
+
+void GeoTiffWriter::writeWindow(int band, int column, int row, int width, int height, const float* values)
+{
+  GDALDataset& dataset = *this->File->gdal;
+  if (band < 0 || band >= dataset.GetRasterCount() || column < 0 || row < 0 || width <= 0 || height <= 0 ||
+    column + width > this->Width || row + height > this->Height)
+  {
+    throw Error("a window of values lies outside the raster '" + this->FileName + "'");
+  }
+  if (dataset.GetRasterBand(band + 1)->RasterIO(GF_Write, column, row, width, height, const_cast<float*>(values),
+        width, height, GDT_Float32, 0, 0, nullptr) != CE_None)
+  {
+    throw Error("writing '" + this->FileName + "' failed: " + this->File->quiet.lastMessage());
+  }
+}
+
+void GeoTiffWriter::close()
+{
+  if (!this->File->gdal)
+    return;
+  this->File->gdal->FlushCache();
+  this->File->gdal.reset(); // GDAL writes the file's last blocks and directory here
+  if (CPLGetLastErrorType() >= CE_Failure)
+  {
+    throw Error("writing '" + this->FileName + "' failed: " + this->File->quiet.lastMessage());
+  }
+}
+
+void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands)
+{
+  const std::size_t posts = static_cast<std::size_t>(grid.width) * grid.height;
+  for (const RasterBand& band : bands)
+  {
+    if (band.values.size() != posts)
     {
-      band->SetNoDataValue(grid.noData);
-    }
-    if (band->RasterIO(GF_Write, 0, 0, grid.width, grid.height, const_cast<float*>(bands[k].values.data()),
-          grid.width, grid.height, GDT_Float32, 0, 0, nullptr) != CE_None)
-    {
-      throw Error("writing '" + fileName + "' failed: " + quiet.lastMessage());
+      throw Error("band '" + band.description + "' does not have one value per post");
     }
   }
-  dataset->FlushCache();
+  GeoTiffWriter writer(fileName, grid, bands);
+  for (std::size_t k = 0; k < bands.size(); ++k)
+    writer.writeWindow(static_cast<int>(k), 0, 0, grid.width, grid.height, bands[k].values.data());
+  writer.close();
 }
 
 void writeVrtMosaic(const std::string& fileName, const std::vector<std::string>& tiles)

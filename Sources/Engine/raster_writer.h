@@ -4,6 +4,7 @@
 
 #include "geo_transform.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,32 @@ struct RasterGrid
 /// Writes a Float32 GeoTIFF (deflate-compressed, tiled when large). Throws Error when
 /// the sizes disagree or GDAL cannot create the file.
 void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands);
+
+/// The same GeoTIFF written a window at a time (the pieces of a grid, as MPI ranks send
+/// them), so that the writer holds a window, not the grid: posts no window covers read
+/// as no data (set grid.hasNoData where some may stay uncovered).
+class GeoTiffWriter
+{
+public:
+  /// Creates the file; `bands` give the descriptions and units (their values unused).
+  GeoTiffWriter(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands);
+  ~GeoTiffWriter();
+  GeoTiffWriter(const GeoTiffWriter&) = delete;
+  GeoTiffWriter& operator=(const GeoTiffWriter&) = delete;
+  /// Writes `values` (width x height, raster order) into band `band` (from 0) at raster
+  /// column `column`, row `row`.
+  void writeWindow(int band, int column, int row, int width, int height, const float* values);
+  /// Marks grid.noData as the bands' no-data value (some written value is no data).
+  void setNoData(double noData);
+  /// Writes what GDAL still caches and closes the file; throws Error where that fails.
+  void close();
+
+private:
+  struct Dataset;
+  std::unique_ptr<Dataset> File;
+  std::string FileName;
+  int Width, Height;
+};
 
 /// Writes a GDAL VRT at `fileName` that mosaics `tiles` (GeoTIFFs of the same CRS and
 /// bands, pieces of one grid, overlapping or not) into one raster, with the first
