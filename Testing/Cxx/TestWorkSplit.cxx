@@ -159,6 +159,22 @@ private:
   long Generation = 0;
 };
 
+/// Runs work(split, pointToPoint, parts) on an nx x ny grid cut in two bands of rows
+/// and in two blocks over a band, broadcasting and sending point to point.
+void runOnBandsAndBlocks(
+  int nx, int ny, const std::function<void(const ThreadRanks::Split&, bool, std::size_t)>& work)
+{
+  using Window = WorkSplit::Window;
+  const std::vector<std::vector<Window>> cuts{ { { 0, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } },
+    { { 0, 48, 0, 40 }, { 48, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } } };
+  for (const std::vector<Window>& windows : cuts)
+    for (const bool pointToPoint : { false, true })
+    {
+      ThreadRanks ranks = pointToPoint ? ThreadRanks(windows) : ThreadRanks(static_cast<int>(windows.size()), ny);
+      ranks.run([&](const ThreadRanks::Split& split) { work(split, pointToPoint, windows.size()); });
+    }
+}
+
 double hills(double x, double y)
 {
   return 60.0 * std::sin(x / 40.0) * std::cos(y / 55.0) + 25.0 * std::sin((x + 2.0 * y) / 23.0);
@@ -250,53 +266,45 @@ TEST(WorkSplit, ProcessesHoldThePostsWithinTheDetailDistanceOfTheirWindowsOnly)
   const PostSky aloneSkies(grid, aloneSky, open, true);
   const std::vector<HorizonMap::Sight> suns{ alone.sight(2.0, 15.0 * degree) };
   const PostSunlight aloneSunlight(grid, alone, suns);
-  using Window = WorkSplit::Window;
-  const std::vector<std::vector<Window>> cuts{ { { 0, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } },
-    { { 0, 48, 0, 40 }, { 48, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } } };
-  for (const std::vector<Window>& windows : cuts)
-    for (const bool pointToPoint : { false, true })
-    {
-      ThreadRanks ranks = pointToPoint ? ThreadRanks(windows) : ThreadRanks(static_cast<int>(windows.size()), ny);
-      ranks.run([&](const ThreadRanks::Split& split) {
-        const HorizonMap map(grid, false, &split);
-        const HorizonSky mapped(rays, open, &map);
-        const PostSky skies(grid, mapped, open, true, &split, halo);
-        const PostSunlight sunlight(grid, map, suns, &split, halo);
-        const HeldPosts held(nx, ny, &split, halo);
-        const Window own = split.window(split.part()).clampedTo(nx, ny);
-        EXPECT_EQ(held.own().i0, std::max(0, own.i0 - halo));
-        EXPECT_EQ(held.own().j1, std::min(ny - 1, own.j1 + halo));
-        EXPECT_LT(held.count(), static_cast<std::size_t>(nx) * ny);
-        int differences = 0, heldPosts = 0;
-        for (int j = 0; j < ny; ++j)
-          for (int i = 0; i < nx; ++i)
-          {
-            const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * nx + i };
-            PostSky::Value value, expected;
-            const Vec3 normal = grid.normalAt(i, j, true);
-            ASSERT_TRUE(aloneSkies.found(post, normal, expected));
-            if (!held.holds(i, j))
-            {
-              differences += skies.found(post, normal, value); // none of it kept
-              continue;
-            }
-            ++heldPosts;
-            ASSERT_TRUE(skies.found(post, normal, value));
-            differences += value.irradiance[0] != expected.irradiance[0];
-            differences += value.skyViewFactor != expected.skyViewFactor;
-            differences += sunlight.at(i, j).seen != aloneSunlight.at(i, j).seen;
-            differences += sunlight.at(i, j).hidden != aloneSunlight.at(i, j).hidden;
-          }
-        EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << windows.size();
-        EXPECT_EQ(static_cast<std::size_t>(heldPosts), held.count());
-        // A read outside what the process holds is an error, not a wrong value.
-        const double farRow = own.j0 > 0 ? 0.5 : ny - 1.5;
-        Spectrum irradiance;
-        EXPECT_THROW(skies.interpolate(own.i0 + 0.5, farRow, irradiance), Error);
-        EXPECT_THROW(sunlight.between(own.i0 + 0.5, farRow), Error);
-        EXPECT_TRUE(skies.interpolate(own.i0 + 0.5, own.j0 + 0.5, irradiance));
-      });
-    }
+  runOnBandsAndBlocks(nx, ny, [&](const ThreadRanks::Split& split, bool pointToPoint, std::size_t parts) {
+    const HorizonMap map(grid, false, &split);
+    const HorizonSky mapped(rays, open, &map);
+    const PostSky skies(grid, mapped, open, true, &split, halo);
+    const PostSunlight sunlight(grid, map, suns, &split, halo);
+    const HeldPosts held(nx, ny, &split, halo);
+    const WorkSplit::Window own = split.window(split.part()).clampedTo(nx, ny);
+    EXPECT_EQ(held.own().i0, std::max(0, own.i0 - halo));
+    EXPECT_EQ(held.own().j1, std::min(ny - 1, own.j1 + halo));
+    EXPECT_LT(held.count(), static_cast<std::size_t>(nx) * ny);
+    int differences = 0, heldPosts = 0;
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+      {
+        const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * nx + i };
+        PostSky::Value value, expected;
+        const Vec3 normal = grid.normalAt(i, j, true);
+        ASSERT_TRUE(aloneSkies.found(post, normal, expected));
+        if (!held.holds(i, j))
+        {
+          differences += skies.found(post, normal, value); // none of it kept
+          continue;
+        }
+        ++heldPosts;
+        ASSERT_TRUE(skies.found(post, normal, value));
+        differences += value.irradiance[0] != expected.irradiance[0];
+        differences += value.skyViewFactor != expected.skyViewFactor;
+        differences += sunlight.at(i, j).seen != aloneSunlight.at(i, j).seen;
+        differences += sunlight.at(i, j).hidden != aloneSunlight.at(i, j).hidden;
+      }
+    EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts;
+    EXPECT_EQ(static_cast<std::size_t>(heldPosts), held.count());
+    // A read outside what the process holds is an error, not a wrong value.
+    const double farRow = own.j0 > 0 ? 0.5 : ny - 1.5;
+    Spectrum irradiance;
+    EXPECT_THROW(skies.interpolate(own.i0 + 0.5, farRow, irradiance), Error);
+    EXPECT_THROW(sunlight.between(own.i0 + 0.5, farRow), Error);
+    EXPECT_TRUE(skies.interpolate(own.i0 + 0.5, own.j0 + 0.5, irradiance));
+  });
 }
 
 TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly)
@@ -331,47 +339,39 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
   };
   PostLattice alone(nx, ny, step);
   gatherLattice(alone, nullptr);
-  using Window = WorkSplit::Window;
-  const std::vector<std::vector<Window>> cuts{ { { 0, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } },
-    { { 0, 48, 0, 40 }, { 48, nx - 1, 0, 40 }, { 0, nx - 1, 40, ny - 1 } } };
-  for (const std::vector<Window>& windows : cuts)
-    for (const bool pointToPoint : { false, true })
-    {
-      ThreadRanks ranks = pointToPoint ? ThreadRanks(windows) : ThreadRanks(static_cast<int>(windows.size()), ny);
-      ranks.run([&](const ThreadRanks::Split& split) {
-        PostLattice lattice(nx, ny, step, &split, halo);
-        gatherLattice(lattice, &split);
-        // Each share sends to (or broadcasts from) each other process, per vector.
-        EXPECT_EQ(split.Shares + split.Sends, 2 * 5 * (pointToPoint ? static_cast<int>(windows.size()) - 1 : static_cast<int>(windows.size())));
-        const HeldPosts read(nx, ny, &split, halo); // where gather rays read
-        int differences = 0, coarse = 0, refined = 0;
-        for (int j = read.own().j0; j <= read.own().j1; ++j)
-          for (int i = read.own().i0; i <= read.own().i1; ++i)
-          {
-            const PostLattice::Around a = lattice.around(i, j), b = alone.around(i, j);
-            differences += a.variance != b.variance || a.largestPerTerrainSeen != b.largestPerTerrainSeen ||
-              a.leastPerTerrainSeen != b.leastPerTerrainSeen;
-            Spectrum r, s;
-            const bool found = lattice.reflectedAt(i + 0.3, j + 0.6, r);
-            differences += found != alone.reflectedAt(i + 0.3, j + 0.6, s) || (found && r != s);
-            PostLattice::PerTerrainSeen p, q;
-            const bool foundPer = lattice.perTerrainSeenAt(i, j, p);
-            differences += foundPer != alone.perTerrainSeenAt(i, j, q) ||
-              (foundPer && (p.reflected != q.reflected || p.skyCorrection != q.skyCorrection));
-            if (i % (2 * step) == 1 && j % (2 * step) == 1)
-              (alone.gatheredInPass(i - 1 + step, j - 1, false) ? refined : coarse) += 1;
-          }
-        EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << windows.size();
-        EXPECT_GT(coarse, 0);
-        EXPECT_GT(refined, 0);
-        // Beyond the halo: an error, not a wrong value.
-        const Window own = split.window(split.part()).clampedTo(nx, ny);
-        const double farRow = own.j0 > 0 ? 0.5 : ny - 1.5;
-        Spectrum r;
-        EXPECT_THROW(lattice.reflectedAt(own.i0 + 0.5, farRow, r), Error);
-        EXPECT_THROW(lattice.around(own.i0, static_cast<int>(farRow)), Error);
-      });
-    }
+  runOnBandsAndBlocks(nx, ny, [&](const ThreadRanks::Split& split, bool pointToPoint, std::size_t parts) {
+    PostLattice lattice(nx, ny, step, &split, halo);
+    gatherLattice(lattice, &split);
+    // Each share sends to (or broadcasts from) each other process, per vector.
+    EXPECT_EQ(split.Shares + split.Sends, 2 * 5 * static_cast<int>(pointToPoint ? parts - 1 : parts));
+    const HeldPosts read(nx, ny, &split, halo); // where gather rays read
+    int differences = 0, coarse = 0, refined = 0;
+    for (int j = read.own().j0; j <= read.own().j1; ++j)
+      for (int i = read.own().i0; i <= read.own().i1; ++i)
+      {
+        const PostLattice::Around a = lattice.around(i, j), b = alone.around(i, j);
+        differences += a.variance != b.variance || a.largestPerTerrainSeen != b.largestPerTerrainSeen ||
+          a.leastPerTerrainSeen != b.leastPerTerrainSeen;
+        Spectrum r, s;
+        const bool found = lattice.reflectedAt(i + 0.3, j + 0.6, r);
+        differences += found != alone.reflectedAt(i + 0.3, j + 0.6, s) || (found && r != s);
+        PostLattice::PerTerrainSeen p, q;
+        const bool foundPer = lattice.perTerrainSeenAt(i, j, p);
+        differences += foundPer != alone.perTerrainSeenAt(i, j, q) ||
+          (foundPer && (p.reflected != q.reflected || p.skyCorrection != q.skyCorrection));
+        if (i % (2 * step) == 1 && j % (2 * step) == 1)
+          (alone.gatheredInPass(i - 1 + step, j - 1, false) ? refined : coarse) += 1;
+      }
+    EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts;
+    EXPECT_GT(coarse, 0);
+    EXPECT_GT(refined, 0);
+    // Beyond the halo: an error, not a wrong value.
+    const WorkSplit::Window own = split.window(split.part()).clampedTo(nx, ny);
+    const double farRow = own.j0 > 0 ? 0.5 : ny - 1.5;
+    Spectrum r;
+    EXPECT_THROW(lattice.reflectedAt(own.i0 + 0.5, farRow, r), Error);
+    EXPECT_THROW(lattice.around(own.i0, static_cast<int>(farRow)), Error);
+  });
 }
 
 TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
