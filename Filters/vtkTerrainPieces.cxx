@@ -24,6 +24,7 @@
 #include <climits>
 #include <cstring>
 #include <deque>
+#include <exception>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -208,7 +209,22 @@ bool vtkTerrainPieces::SendToRoot(vtkMultiProcessController* controller, vtkData
     if (auto* model = vtkDataArray::SafeDownCast(first->GetColumn(a)))
       if (std::strcmp(model->GetName(), vtkDataSetAttributes::GhostArrayName()) != 0)
         layout.arrays.push_back(model);
-  begin(layout);
+  // A writer's error (a missing array, a full disk) must not leave the other ranks
+  // waiting to send: the root takes every array still, and throws at the end.
+  std::exception_ptr failure;
+  auto guarded = [&failure](const auto& call) {
+    if (failure)
+      return;
+    try
+    {
+      call();
+    }
+    catch (...)
+    {
+      failure = std::current_exception();
+    }
+  };
+  guarded([&]() { begin(layout); });
 
   for (const Piece& p : pieces)
   {
@@ -234,9 +250,11 @@ bool vtkTerrainPieces::SendToRoot(vtkMultiProcessController* controller, vtkData
       }
       current.ghosts = ghosts;
       current.values = values;
-      each(current);
+      guarded([&]() { each(current); });
     }
   }
+  if (failure)
+    std::rethrow_exception(failure);
   return true;
 }
 

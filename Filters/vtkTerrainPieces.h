@@ -42,6 +42,7 @@ struct vtkTerrainPieces
   /// `root`, calls `begin` with the layout, then `each` for every point array of every
   /// piece as it arrives (one at a time: the root never holds the whole grid), and
   /// returns true; false elsewhere, and on root when no rank had a georeferenced piece.
+  /// What `begin` or `each` throws, the root throws once every piece has arrived.
   static bool SendToRoot(vtkMultiProcessController* controller, vtkDataSet* piece, int root,
     const std::function<void(const Layout&)>& begin, const std::function<void(const PieceArray&)>& each);
   /// Crops a terrain to the piece `extent` (grid indices) and makes its georeference

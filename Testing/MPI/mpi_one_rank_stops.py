@@ -8,8 +8,13 @@ observer sets AbortExecute, as a GUI's cancel button would), so it never reaches
 broadcasts of the horizons the ranks share: every rank must come back with an empty
 output (the others with an error naming the stopped rank), not hang. A second update,
 with no abort, must then give every rank its piece: no collective was left unmatched.
+Then the one GeoTIFF rank 0 writes of the pieces: asked for an array the pieces lack,
+rank 0 fails with an error once every rank has sent its piece (none waits), and the
+next write succeeds.
 """
+import os
 import sys
+import tempfile
 
 import terralux
 from mpi_pipeline import instant_solver
@@ -52,6 +57,33 @@ def main(dem):
     second = solver.GetOutputDataObject(0)
     if second.GetNumberOfPoints() == 0 or not second.GetPointData().GetArray("Irradiance"):
         problems.append("the next update gave no piece (%d posts)" % second.GetNumberOfPoints())
+
+    folder = MPI.COMM_WORLD.bcast(tempfile.mkdtemp() if rank == 0 else None, root=0)
+    tif = os.path.join(folder, "pieces.tif")
+    writer = terralux.vtkTerrainRasterWriter()
+    writer.SetInputConnection(solver.GetOutputPort(0))
+    writer.SetFileName(tif)
+    writer.AddArrayName("NoSuchArray")
+    writer_errors = []
+    writer.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: writer_errors.append(event))
+    writer.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda caller, event: writer_errors.append(event))
+    if writer.Write() != (0 if rank == 0 else 1) or (rank == 0 and not writer_errors):
+        problems.append("a write of a missing array did not fail on rank 0 alone")
+    writer.RemoveAllArrayNames()
+    writer.AddArrayName("Irradiance")
+    writer.Modified()
+    if writer.Write() != 1:
+        problems.append("the next write failed")
+    if rank == 0:
+        written, dem_posts = terralux.vtkTerrainSource(), terralux.vtkTerrainSource()
+        written.SetFileName(tif)
+        dem_posts.SetFileName(dem)
+        written.Update()
+        dem_posts.Update()
+        if written.GetOutput().GetNumberOfPoints() != dem_posts.GetOutput().GetNumberOfPoints():
+            problems.append("the GeoTIFF written after the failed one is not the whole DEM's")
+        os.remove(tif)
+        os.rmdir(folder)
 
     results = MPI.COMM_WORLD.gather((rank, problems), root=0)
     if rank == 0:
