@@ -35,7 +35,9 @@ GeoTiffWriter::GeoTiffWriter(const std::string& fileName, const RasterGrid& grid
   // Compressed by every core, quickly, after the floating-point predictor (TIFF's
   // PREDICTOR=3, which GDAL and GIS read alike): a 1025^2 DEM's six bands took 0.57 s on
   // one core, 0.29 s on two at deflate's default level (19.0 MiB), 0.15 s so (16.3 MiB).
-  const char* options[] = { "COMPRESS=DEFLATE", "PREDICTOR=3", "ZLEVEL=1", "NUM_THREADS=ALL_CPUS",
+  // BigTIFF where the file might pass 4 GiB: GDAL's default decides on the size before
+  // compression only when uncompressed, and a compressed file past 4 GiB then fails.
+  const char* options[] = { "COMPRESS=DEFLATE", "PREDICTOR=3", "ZLEVEL=1", "NUM_THREADS=ALL_CPUS", "BIGTIFF=IF_SAFER",
     tiled ? "TILED=YES" : nullptr, nullptr };
   this->File->gdal.reset(driver->Create(fileName.c_str(), grid.width, grid.height,
     static_cast<int>(bands.size()), GDT_Float32, const_cast<char**>(options)));

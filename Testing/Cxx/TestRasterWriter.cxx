@@ -107,6 +107,40 @@ TEST(GeoTiffWriter, WindowsInAnyOrderHoldWhatOneWholeWriteHolds)
   std::remove(windows.c_str());
 }
 
+TEST(GeoTiffWriter, RastersThatMayPassFourGibibytesAreBigTiff)
+{
+  // 33,000^2 Float32 posts are 4.4 GB before compression: a classic TIFF could not hold
+  // them once the values do not compress well. Only a window is written (the rest is
+  // no data, and compresses to little).
+  RasterGrid huge = grid(true);
+  huge.width = huge.height = 33000;
+  const std::string file = testing::TempDir() + "huge.tif";
+  GeoTiffWriter writer(file, huge, std::vector<RasterBand>(1));
+  const std::vector<float> values(64 * 64, 1.0f);
+  writer.writeWindow(0, 1000, 2000, 64, 64, values.data());
+  writer.close();
+  char magic[4] = {};
+  std::FILE* f = std::fopen(file.c_str(), "rb");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(std::fread(magic, 1, 4, f), 4u);
+  std::fclose(f);
+  EXPECT_EQ(magic[2], 43) << "BigTIFF's version is 43, classic TIFF's 42";
+  std::vector<float> read(64 * 64);
+  DemRaster(file, 1).read(PixelWindow{ 1000, 2000, 64, 64 }, 1, read.data());
+  EXPECT_EQ(read, values);
+  std::remove(file.c_str());
+
+  // A small raster stays a classic TIFF, which every reader takes.
+  const std::string small = testing::TempDir() + "small.tif";
+  GeoTiffWriter(small, grid(false), describedBands()).close();
+  f = std::fopen(small.c_str(), "rb");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(std::fread(magic, 1, 4, f), 4u);
+  std::fclose(f);
+  EXPECT_EQ(magic[2], 42);
+  std::remove(small.c_str());
+}
+
 TEST(GeoTiffWriter, RefusesWhatItCannotWrite)
 {
   EXPECT_THROW(GeoTiffWriter(testing::TempDir() + "none.tif", grid(false), {}), Error);

@@ -63,6 +63,10 @@ def parse_arguments(argv):
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--mpi", action="store_true",
                         help="run under mpirun: each rank evaluates its piece of the DEM, rank 0 writes")
+    parser.add_argument("--pieces", action="store_true",
+                        help="each rank writes its own GeoTIFF (OUTPUT's name without .vrt, then _RANK.tif) and "
+                             "rank 0 a GDAL VRT over them at OUTPUT (give it a .vrt name): for grids too large "
+                             "for one file")
     parser.add_argument("--detail-distance", type=float, default=0.0, metavar="M",
                         help="gather hits farther than M metres take their leaf's light, not their posts' skies; "
                              "with --mpi each rank then holds those only within M of its piece (default 0: none)")
@@ -185,6 +189,9 @@ def run(args):
         raise InputError("--reflectance %g is not in [0, 1)" % args.reflectance)
     if not 1 <= args.sky_type <= 15:
         raise InputError("--sky-type %d is not a CIE standard general sky (1..15)" % args.sky_type)
+    if args.pieces and not args.output.lower().endswith(".vrt"):
+        raise InputError("--pieces writes a VRT over the ranks' GeoTIFFs at -o: give it a .vrt name, not %s"
+                         % args.output)
     if not 0.0 <= args.detail_distance < float("inf"):
         raise InputError("--detail-distance %g is not a distance in metres (>= 0; 0: none)" % args.detail_distance)
 
@@ -235,10 +242,11 @@ def run(args):
     writer = observe(vtkTerrainRasterWriter())
     writer.SetInputData(result)
     writer.SetFileName(args.output)
+    writer.SetWritePieces(args.pieces)
     for name in BANDS:
         if point_data.GetArray(name) is not None:
             writer.AddArrayName(name)
-    if not writer.Write():  # collective under MPI: rank 0 writes the pieces as one file
+    if not writer.Write():  # collective under MPI: rank 0 writes the pieces as one file, or the VRT
         raise InputError("could not write %s: %s" % (args.output, messages[-1] if messages else ""))
 
     field = result.GetFieldData()
