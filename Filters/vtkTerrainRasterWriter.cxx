@@ -111,6 +111,8 @@ public:
       {
         throw terralux::Error("the input has no point array '" + name + "' to write");
       }
+      if (this->FirstBand.count(name))
+        continue; // named twice: its bands once
       this->FirstBand[name] = static_cast<int>(bands.size());
       for (int c = 0; c < array->GetNumberOfComponents(); ++c)
       {

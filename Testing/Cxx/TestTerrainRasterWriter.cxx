@@ -144,7 +144,13 @@ TEST(TerrainRasterWriter, BadInput)
   EXPECT_NE(messages->Errors.find("no point array 'Irradiance'"), std::string::npos);
   writer->RemoveAllArrayNames();
   writer->AddArrayName("Elevation");
+  writer->AddArrayName("Elevation"); // named twice: written once, every post of it
   EXPECT_EQ(writer->Write(), 1);
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> written(
+    GDALDataset::Open((terralux_test::scratchDir() + "/plain.tif").c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(written);
+  EXPECT_EQ(written->GetRasterCount(), 1);
 }
 
 TEST(TerrainRasterWriter, PiecesWithAVrtOverThem)
