@@ -159,6 +159,7 @@ public:
         }
       this->Writer->writeWindow(band->second + c, i0, row0, width, height, window.data());
     }
+    this->Writer->flush(); // the array's blocks leave GDAL's cache: it holds one array's at most
   }
 
   void Close()

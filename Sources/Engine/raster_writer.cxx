@@ -24,6 +24,7 @@ GeoTiffWriter::GeoTiffWriter(const std::string& fileName, const RasterGrid& grid
   , FileName(fileName)
   , Width(grid.width)
   , Height(grid.height)
+  , Large(4.0 * grid.width * grid.height * bands.size() > 64.0 * (1 << 20))
 {
   if (grid.width <= 0 || grid.height <= 0 || bands.empty())
   {
@@ -38,6 +39,7 @@ GeoTiffWriter::GeoTiffWriter(const std::string& fileName, const RasterGrid& grid
   // BigTIFF where the file might pass 4 GiB: GDAL's default decides on the size before
   // compression only when uncompressed, and a compressed file past 4 GiB then fails.
   const char* options[] = { "COMPRESS=DEFLATE", "PREDICTOR=3", "ZLEVEL=1", "NUM_THREADS=ALL_CPUS", "BIGTIFF=IF_SAFER",
+    "INTERLEAVE=BAND",
     tiled ? "TILED=YES" : nullptr, nullptr };
   this->File->gdal.reset(driver->Create(fileName.c_str(), grid.width, grid.height,
     static_cast<int>(bands.size()), GDT_Float32, const_cast<char**>(options)));
@@ -86,6 +88,17 @@ void GeoTiffWriter::writeWindow(int band, int column, int row, int width, int he
   }
   if (dataset.GetRasterBand(band + 1)->RasterIO(GF_Write, column, row, width, height, const_cast<float*>(values),
         width, height, GDT_Float32, 0, 0, nullptr) != CE_None)
+  {
+    throw Error("writing '" + this->FileName + "' failed: " + this->File->quiet.lastMessage());
+  }
+}
+
+void GeoTiffWriter::flush()
+{
+  if (!this->Large)
+    return;
+  this->File->gdal->FlushCache();
+  if (CPLGetLastErrorType() >= CE_Failure)
   {
     throw Error("writing '" + this->FileName + "' failed: " + this->File->quiet.lastMessage());
   }

@@ -45,6 +45,12 @@ public:
   /// Writes `values` (width x height, raster order) into band `band` (from 0) at raster
   /// column `column`, row `row`.
   void writeWindow(int band, int column, int row, int width, int height, const float* values);
+  /// For a raster of more than 64 MiB of values: writes out the blocks GDAL caches
+  /// (compressed), so that they do not pile up in its cache (5 % of the memory by
+  /// default) while windows keep coming; call it after each window or piece. A block
+  /// written again later (one two windows share) is stored again, at the end of the
+  /// file. Smaller rasters stay in the cache until close(), each block written once.
+  void flush();
   /// Marks grid.noData as the bands' no-data value (some written value is no data).
   void setNoData(double noData);
   /// Writes what GDAL still caches and closes the file; throws Error where that fails.
@@ -55,6 +61,7 @@ private:
   std::unique_ptr<Dataset> File;
   std::string FileName;
   int Width, Height;
+  bool Large; // more than 64 MiB of values
 };
 
 /// Writes a GDAL VRT at `fileName` that mosaics `tiles` (GeoTIFFs of the same CRS and
