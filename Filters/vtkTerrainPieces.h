@@ -28,7 +28,7 @@ struct vtkTerrainPieces
     int whole[6];                          ///< the union of the pieces' extents
     bool covered = true;                   ///< whether the pieces cover every post of it
     vtkSmartPointer<vtkFieldData> fieldData; ///< a piece's, with the whole's GeoTransform and RasterSize
-    std::vector<vtkSmartPointer<vtkDataArray>> arrays; ///< the point arrays' names, types and information, no values
+    std::vector<vtkDataArray*> arrays; ///< the point arrays' names, types and information, no values
   };
   /// One point array of one piece, with the piece's ghosts (null where it has none).
   struct PieceArray

@@ -277,11 +277,8 @@ void vtkTerrainRasterWriter::WriteData()
         [&](const vtkTerrainPieces::Layout& layout) {
           std::copy_n(layout.whole, 6, whole);
           const int dims[3] = { whole[1] - whole[0] + 1, whole[3] - whole[2] + 1, 1 };
-          std::vector<vtkDataArray*> arrays;
-          for (const auto& array : layout.arrays)
-            arrays.push_back(array);
           raster = std::make_unique<PieceRaster>(
-            this->FileName, layout.fieldData, dims, arrays, this->ArrayNames, this->NoDataValue, !layout.covered);
+            this->FileName, layout.fieldData, dims, layout.arrays, this->ArrayNames, this->NoDataValue, !layout.covered);
         },
         [&](const vtkTerrainPieces::PieceArray& piece) {
           const int* e = piece.extent;

@@ -88,9 +88,12 @@ void GeoTiffWriter::writeWindow(int band, int column, int row, int width, int he
   }
   if (dataset.GetRasterBand(band + 1)->RasterIO(GF_Write, column, row, width, height, const_cast<float*>(values),
         width, height, GDT_Float32, 0, 0, nullptr) != CE_None)
-  {
-    throw Error("writing '" + this->FileName + "' failed: " + this->File->quiet.lastMessage());
-  }
+    this->failed();
+}
+
+void GeoTiffWriter::failed() const
+{
+  throw Error("writing '" + this->FileName + "' failed: " + this->File->quiet.lastMessage());
 }
 
 void GeoTiffWriter::flush()
@@ -99,9 +102,7 @@ void GeoTiffWriter::flush()
     return;
   this->File->gdal->FlushCache();
   if (CPLGetLastErrorType() >= CE_Failure)
-  {
-    throw Error("writing '" + this->FileName + "' failed: " + this->File->quiet.lastMessage());
-  }
+    this->failed();
 }
 
 void GeoTiffWriter::close()
@@ -111,25 +112,7 @@ void GeoTiffWriter::close()
   this->File->gdal->FlushCache();
   this->File->gdal.reset(); // GDAL writes the file's last blocks and directory here
   if (CPLGetLastErrorType() >= CE_Failure)
-  {
-    throw Error("writing '" + this->FileName + "' failed: " + this->File->quiet.lastMessage());
-  }
-}
-
-void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands)
-{
-  const std::size_t posts = static_cast<std::size_t>(grid.width) * grid.height;
-  for (const RasterBand& band : bands)
-  {
-    if (band.values.size() != posts)
-    {
-      throw Error("band '" + band.description + "' does not have one value per post");
-    }
-  }
-  GeoTiffWriter writer(fileName, grid, bands);
-  for (std::size_t k = 0; k < bands.size(); ++k)
-    writer.writeWindow(static_cast<int>(k), 0, 0, grid.width, grid.height, bands[k].values.data());
-  writer.close();
+    this->failed();
 }
 
 void writeVrtMosaic(const std::string& fileName, const std::vector<std::string>& tiles)

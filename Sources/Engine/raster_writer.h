@@ -14,7 +14,6 @@ struct RasterBand
 {
   std::string description; ///< e.g. the array name
   std::string unit;        ///< e.g. "W/m^2"
-  std::vector<float> values; ///< width x height, raster order (row 0 first)
 };
 
 struct RasterGrid
@@ -27,17 +26,15 @@ struct RasterGrid
   double noData = -9999.0;
 };
 
-/// Writes a Float32 GeoTIFF (deflate-compressed, tiled when large). Throws Error when
-/// the sizes disagree or GDAL cannot create the file.
-void writeGeoTiff(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands);
-
-/// The same GeoTIFF written a window at a time (the pieces of a grid, as MPI ranks send
-/// them), so that the writer holds a window, not the grid: posts no window covers read
-/// as no data (set grid.hasNoData where some may stay uncovered).
+/// A Float32 GeoTIFF (deflate-compressed, bands one after another, tiled when large,
+/// BigTIFF where it might pass 4 GiB) written a window at a time: the whole grid, or
+/// the pieces of a grid as MPI ranks send them, so that the writer holds a window, not
+/// the grid. Posts no window covers read as no data (set grid.hasNoData where some may
+/// stay uncovered). Throws Error where GDAL cannot create or write the file.
 class GeoTiffWriter
 {
 public:
-  /// Creates the file; `bands` give the descriptions and units (their values unused).
+  /// Creates the file, a band per element of `bands` (its description and unit).
   GeoTiffWriter(const std::string& fileName, const RasterGrid& grid, const std::vector<RasterBand>& bands);
   ~GeoTiffWriter();
   GeoTiffWriter(const GeoTiffWriter&) = delete;
@@ -57,6 +54,9 @@ public:
   void close();
 
 private:
+  /// Throws that writing the file failed, with GDAL's last message.
+  [[noreturn]] void failed() const;
+
   struct Dataset;
   std::unique_ptr<Dataset> File;
   std::string FileName;

@@ -58,12 +58,18 @@ std::vector<float> readBand(const std::string& file, int band)
 TEST(GeoTiffWriter, WindowsInAnyOrderHoldWhatOneWholeWriteHolds)
 {
   const std::string whole = testing::TempDir() + "whole.tif", windows = testing::TempDir() + "windows.tif";
-  std::vector<RasterBand> bands = describedBands();
-  for (int b = 0; b < 2; ++b)
-    for (int row = 0; row < height; ++row)
-      for (int col = 0; col < width; ++col)
-        bands[b].values.push_back(valueAt(b, col, row));
-  writeGeoTiff(whole, grid(false), bands);
+  {
+    GeoTiffWriter writer(whole, grid(false), describedBands());
+    for (int b = 0; b < 2; ++b)
+    {
+      std::vector<float> values;
+      for (int row = 0; row < height; ++row)
+        for (int col = 0; col < width; ++col)
+          values.push_back(valueAt(b, col, row));
+      writer.writeWindow(b, 0, 0, width, height, values.data());
+    }
+    writer.close();
+  }
 
   // Pieces as VTK cuts them (blocks sharing their border posts), written out of order;
   // rows 400 to 449 of the west half stay uncovered.
