@@ -22,7 +22,7 @@ struct Visibility::RayCounters
 
 std::uint64_t Visibility::raysCast() const
 {
-  std::uint64_t total = 0;
+  std::uint64_t total = this->Far ? this->Far->raysCast() : 0;
   for (std::uint64_t count : this->Rays->perThread)
     total += count;
   return total;
@@ -41,8 +41,30 @@ RTCDevice processDevice()
 }
 } // namespace
 
-Visibility::Visibility(const RadiosityScene& scene)
+Visibility::Visibility(const RadiosityScene& scene, const FarSight& far)
   : Rays(std::make_unique<RayCounters>())
+{
+  this->build(scene);
+  if (far.active() && scene.terrains.size() == 1 && scene.polygons.empty())
+  {
+    this->Coarse = std::make_unique<FarTerrain>(*scene.terrains.front(), far.stride);
+    this->Far = std::unique_ptr<Visibility>(new Visibility(*this->Coarse, this->Offset));
+    this->DetailDistance = far.detailDistance;
+  }
+}
+
+Visibility::Visibility(const FarTerrain& far, double sceneOffset)
+  : MapsTo(&far)
+  , PassBackFaces(true)
+  , Rays(std::make_unique<RayCounters>())
+{
+  RadiosityScene scene;
+  scene.terrains.push_back(&far.grid());
+  this->build(scene);
+  this->Offset = sceneOffset; // the fine scene's: the far grid's box is the same but for a few posts
+}
+
+void Visibility::build(const RadiosityScene& scene)
 {
   this->Device = processDevice();
   if (!this->Device)
@@ -87,6 +109,26 @@ Visibility::Visibility(const RadiosityScene& scene)
     throw Error("Embree failed to build the visibility structure (out of memory?)");
   }
 }
+
+namespace
+{
+// A hit on a grid's back face does not count. Embree's geometric normal of a grid
+// cell, counter-clockwise seen from above, points up: a ray meets a front face going
+// against it.
+void passBackFaces(const RTCFilterFunctionNArguments* args)
+{
+  for (unsigned i = 0; i < args->N; ++i)
+  {
+    if (args->valid[i] != -1)
+      continue;
+    const float dot = RTCHitN_Ng_x(args->hit, args->N, i) * RTCRayN_dir_x(args->ray, args->N, i) +
+      RTCHitN_Ng_y(args->hit, args->N, i) * RTCRayN_dir_y(args->ray, args->N, i) +
+      RTCHitN_Ng_z(args->hit, args->N, i) * RTCRayN_dir_z(args->ray, args->N, i);
+    if (dot > 0.0f)
+      args->valid[i] = 0;
+  }
+}
+} // namespace
 
 void Visibility::addTerrain(const TerrainGrid& terrain, int terrainIndex)
 {
@@ -154,6 +196,11 @@ void Visibility::addTerrain(const TerrainGrid& terrain, int terrainIndex)
     for (std::size_t k = 0; k < posts; ++k)
       for (int c = 0; c < 3; ++c)
         vertices[3 * k + c] = static_cast<float>(terrain.vertices()[3 * k + c] + shift[c]);
+  }
+  if (this->PassBackFaces)
+  {
+    rtcSetGeometryIntersectFilterFunction(geometry, passBackFaces);
+    rtcSetGeometryOccludedFilterFunction(geometry, passBackFaces);
   }
   GeometryOrigin origin;
   origin.terrain = terrainIndex;
@@ -264,6 +311,62 @@ bool castOcclusion(RTCScene scene, const Vec3& origin, const Vec3& direction, do
 }
 } // namespace
 
+double Visibility::detailEnd(const Vec3& d) const
+{
+  const double across = std::hypot(d.x, d.y);
+  return this->Far && across > 0.0 ? this->DetailDistance / across : std::numeric_limits<double>::infinity();
+}
+
+bool Visibility::blocked(const Vec3& origin, const Vec3& d, double tnear, double tfar) const
+{
+  if (!(tnear < tfar))
+    return false;
+  return castOcclusion(this->Scene, origin - this->Centre, d, tnear, tfar);
+}
+
+bool Visibility::intersect(const Vec3& origin, const Vec3& d, double tnear, double tfar, SurfaceHit& hit) const
+{
+  if (!(tnear < tfar))
+    return false;
+  const Vec3 from = origin - this->Centre;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit query;
+  query.ray = embreeRay(from, d, tnear, tfar);
+  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(this->Scene, &context, &query);
+  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID || query.hit.geomID >= this->Origins.size())
+    return false;
+  const GeometryOrigin& source = this->Origins[query.hit.geomID];
+  hit = SurfaceHit{};
+  hit.point = from + static_cast<double>(query.ray.tfar) * d + this->Centre;
+  const Vec3 ng(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
+  const double length = glm::length(ng);
+  if (length > 0.0)
+    hit.normal = ng / length;
+  if (source.terrain >= 0)
+  {
+    // Grid u, v run over [0, 1] across the whole grid of posts.
+    const auto [i0, j0] = source.gridStarts[query.hit.primID];
+    const auto [cellsU, cellsV] = source.gridSizes[query.hit.primID];
+    hit.terrain = source.terrain;
+    hit.u = i0 + std::clamp(static_cast<double>(query.hit.u), 0.0, 1.0) * cellsU;
+    hit.v = j0 + std::clamp(static_cast<double>(query.hit.v), 0.0, 1.0) * cellsV;
+    if (this->MapsTo)
+    {
+      hit.u = this->MapsTo->fineU(hit.u);
+      hit.v = this->MapsTo->fineV(hit.v);
+      hit.far = true;
+    }
+  }
+  else
+  {
+    hit.polygon = this->TrianglePolygon[query.hit.primID];
+  }
+  return true;
+}
+
 bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, const Vec3& bNormal) const
 {
   ++this->Rays->perThread.local();
@@ -277,46 +380,23 @@ bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, con
   }
   // The ray also starts one offset along itself: a point where two surfaces meet (the
   // foot of a wall) lifted off one of them may still lie on the other.
-  return castOcclusion(this->Scene, from - this->Centre, d / length, this->Offset, length - this->Offset);
+  const Vec3 unit = d / length;
+  const double end = length - this->Offset, detail = this->detailEnd(unit);
+  return this->blocked(from, unit, this->Offset, std::min(end, detail)) ||
+    (detail < end && this->Far->blocked(from, unit, detail, end));
 }
 
 bool Visibility::firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, SurfaceHit& hit) const
 {
   ++this->Rays->perThread.local();
-  const Vec3 origin = a + this->Offset * aNormal - this->Centre;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit query;
   // From the lifted origin on: a scene-relative offset can exceed small objects (a 1 m
   // box on 100 km of ground lifts rays by 1.4 m), and skipping it would miss the
   // ground just below a wall.
-  query.ray = embreeRay(origin, d, 0.0, std::numeric_limits<float>::infinity());
-  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(this->Scene, &context, &query);
-  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID || query.hit.geomID >= this->Origins.size())
-    return false;
-  const GeometryOrigin& source = this->Origins[query.hit.geomID];
-  hit = SurfaceHit{};
-  hit.point = origin + static_cast<double>(query.ray.tfar) * d + this->Centre;
-  const Vec3 ng(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
-  const double length = glm::length(ng);
-  if (length > 0.0)
-    hit.normal = ng / length;
-  if (source.terrain >= 0)
-  {
-    // Grid u, v run over [0, 1] across the whole grid of posts.
-    const auto [i0, j0] = source.gridStarts[query.hit.primID];
-    const auto [cellsU, cellsV] = source.gridSizes[query.hit.primID];
-    hit.terrain = source.terrain;
-    hit.u = i0 + std::clamp(static_cast<double>(query.hit.u), 0.0, 1.0) * cellsU;
-    hit.v = j0 + std::clamp(static_cast<double>(query.hit.v), 0.0, 1.0) * cellsV;
-  }
-  else
-  {
-    hit.polygon = this->TrianglePolygon[query.hit.primID];
-  }
-  return true;
+  const Vec3 origin = a + this->Offset * aNormal;
+  const double detail = this->detailEnd(d);
+  return this->intersect(origin, d, 0.0, detail, hit) ||
+    (detail < std::numeric_limits<double>::infinity() &&
+      this->Far->intersect(origin, d, detail, std::numeric_limits<double>::infinity(), hit));
 }
 
 std::uint64_t Visibility::seedOf(const Vec3& p) const
@@ -328,7 +408,9 @@ std::uint64_t Visibility::seedOf(const Vec3& p) const
 bool Visibility::occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& d) const
 {
   ++this->Rays->perThread.local();
-  return castOcclusion(this->Scene, a + this->Offset * aNormal - this->Centre, d, this->Offset,
-    std::numeric_limits<float>::infinity());
+  const Vec3 origin = a + this->Offset * aNormal;
+  const double detail = this->detailEnd(d), infinity = std::numeric_limits<double>::infinity();
+  return this->blocked(origin, d, this->Offset, std::min(infinity, detail)) ||
+    (detail < infinity && this->Far->blocked(origin, d, detail, infinity));
 }
 } // namespace terralux

@@ -1,8 +1,11 @@
 #pragma once
 // Visibility queries against the full-resolution scene with Embree 3: occlusion
 // rays between two points or from a point toward infinity. Ray ends are pulled in
-// by an offset that scales with the scene, never a fixed epsilon.
+// by an offset that scales with the scene, never a fixed epsilon. Beyond the detail
+// distance of its origin, a ray may see the terrain at a coarser resolution
+// (far_terrain.h).
 
+#include "far_terrain.h"
 #include "radiosity_types.h"
 
 #include <cstdint>
@@ -25,6 +28,8 @@ struct SurfaceHit
   double u = 0.0, v = 0.0;
   Vec3 point{ 0.0 };
   Vec3 normal{ 0.0, 0.0, 1.0 }; ///< unit normal of the triangle met, either side
+  /// On the far terrain (u, v still the full grid's): rays from it take farRays().
+  bool far = false;
 };
 
 class Visibility
@@ -34,7 +39,12 @@ public:
   /// terrain grid (Embree grid geometry over its valid cells, sharing the grid's own
   /// vertices: no triangle mesh of the terrain is ever made). Throws Error when Embree
   /// fails.
-  explicit Visibility(const RadiosityScene& scene);
+  /// With `far` active, in a scene of one terrain alone, a ray that leaves the vertical
+  /// cylinder of radius far.detailDistance around its origin meets, beyond it, the
+  /// terrain's every far.stride-th post (FarTerrain) instead, whose back faces it
+  /// passes through (it may start below the coarse surface where that cuts across a
+  /// valley). Each ray's answer then depends on its origin alone, not on who traces it.
+  explicit Visibility(const RadiosityScene& scene, const FarSight& far = {});
   ~Visibility();
   Visibility(const Visibility&) = delete;
   Visibility& operator=(const Visibility&) = delete;
@@ -49,6 +59,11 @@ public:
   /// The first surface the ray from surface point a (unit normal aNormal) along unit
   /// direction d meets, from a lifted by offset() along aNormal; false when it escapes.
   bool firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, SurfaceHit& hit) const;
+  /// The rays from a point on the far terrain (a far hit's shadow rays): that terrain
+  /// alone, whose coarse surface the point lies on. Without one, these rays.
+  const Visibility& farRays() const { return this->Far ? *this->Far : *this; }
+  /// What the far terrain is, or none.
+  const FarTerrain* farTerrain() const { return this->Coarse.get(); }
   /// Offset (metres) of ray ends: 1e-5 of the scene's bounding diagonal.
   double offset() const { return this->Offset; }
   /// A seed for samples that belong to a point: its position relative to the scene,
@@ -59,6 +74,16 @@ public:
   std::uint64_t raysCast() const;
 
 private:
+  /// The far terrain's own rays: its grid alone, back faces passed through, hits mapped
+  /// to the fine grid's parameters.
+  Visibility(const FarTerrain& far, double sceneOffset);
+  void build(const RadiosityScene& scene);
+  /// Where a ray along unit d leaves its origin's cylinder of detail (infinity
+  /// without a far terrain, or straight up or down).
+  double detailEnd(const Vec3& d) const;
+  // One stretch [tnear, tfar] of a ray from `origin` (absolute), uncounted.
+  bool intersect(const Vec3& origin, const Vec3& d, double tnear, double tfar, SurfaceHit& hit) const;
+  bool blocked(const Vec3& origin, const Vec3& d, double tnear, double tfar) const;
   void addTerrain(const TerrainGrid& terrain, int terrainIndex);
   void addPolygons(const RadiosityScene& scene);
 
@@ -76,6 +101,11 @@ private:
   RTCDeviceTy* Device = nullptr;
   RTCSceneTy* Scene = nullptr;
   double Offset = 1e-6;
+  std::unique_ptr<FarTerrain> Coarse;  // the far terrain (with a far sight)
+  std::unique_ptr<Visibility> Far;     // and its rays
+  double DetailDistance = 0.0;
+  const FarTerrain* MapsTo = nullptr;  // in the far terrain's rays: the map of its hits
+  bool PassBackFaces = false;          // in the far terrain's rays
   Vec3 Centre{ 0.0 }; // Embree's float vertices are stored relative to it
   // One counter per thread: a shared atomic would bounce between cores on every ray.
   struct RayCounters;

@@ -1,6 +1,7 @@
 // Visibility (visibility.h) on its own: occlusion between points and toward infinity,
 // the first surface met, ray offsets that follow the scene's size, seeds that do not
 // move with the scene, and the ray counter.
+#include "error.h"
 #include "radiosity_scenes.h"
 #include "visibility.h"
 
@@ -93,4 +94,110 @@ TEST(Visibility, CountsEveryRay)
   rays.firstHit(Vec3(3.0, 0.0, 2.0), up, down, hit);
   rays.occluded(Vec3(0.0, 0.0, 0.0), up, Vec3(0.0, 0.0, 3.0), down);
   EXPECT_EQ(rays.raysCast() - before, 12u);
+}
+
+namespace
+{
+// 2 km of flat ground, 201 x 201 posts 10 m apart, with a 100 m wall one post thick
+// along row 133 and a 50 m deep valley one post wide along row 102: neither lies on a
+// row of every 4th post, so the far terrain at stride 4 has no wall and no valley.
+TerrainGrid wallAndValley()
+{
+  TerrainGrid grid(201, 201, Vec3(0.0));
+  for (int j = 0; j < 201; ++j)
+    for (int i = 0; i < 201; ++i)
+      grid.setPost(i, j, Vec3(10.0 * i, 10.0 * j, j == 133 ? 100.0 : j == 102 ? -50.0 : 0.0));
+  return grid;
+}
+RadiosityScene sceneOf(const TerrainGrid& grid)
+{
+  RadiosityScene scene;
+  scene.terrains.push_back(&grid);
+  return scene;
+}
+Vec3 atElevation(double degrees, const Vec3& horizontal)
+{
+  const double e = degrees * 3.14159265358979 / 180.0;
+  return glm::normalize(std::cos(e) * glm::normalize(horizontal) + Vec3(0.0, 0.0, std::sin(e)));
+}
+} // namespace
+
+TEST(Visibility, BeyondTheDetailDistanceRaysSeeTheFarTerrain)
+{
+  const TerrainGrid grid = wallAndValley();
+  const Visibility fine(sceneOf(grid));
+  const Visibility near(sceneOf(grid), FarSight{ 4, 1500.0 });
+  const Visibility farFromWall(sceneOf(grid), FarSight{ 4, 300.0 });
+  ASSERT_NE(near.farTerrain(), nullptr);
+  EXPECT_EQ(near.farTerrain()->grid().postsX(), 51);
+  // No far terrain for stride 1 or without a distance.
+  EXPECT_EQ(Visibility(sceneOf(grid), FarSight{ 1, 300.0 }).farTerrain(), nullptr);
+  EXPECT_EQ(Visibility(sceneOf(grid), FarSight{ 4, 0.0 }).farTerrain(), nullptr);
+
+  // From post (100, 80), 530 m from the wall, 5 degrees up toward it: within 1.5 km the
+  // wall is the fine one and blocks; beyond 300 m the far terrain has none.
+  const Vec3 post(1000.0, 800.0, 0.0), towardWall = atElevation(5.0, Vec3(0.0, 1.0, 0.0));
+  EXPECT_TRUE(fine.occludedToward(post, up, towardWall));
+  EXPECT_TRUE(near.occludedToward(post, up, towardWall));
+  EXPECT_FALSE(farFromWall.occludedToward(post, up, towardWall));
+  const Vec3 beyondWall = post + 1000.0 * towardWall;
+  EXPECT_TRUE(near.occluded(post, up, beyondWall, down));
+  EXPECT_FALSE(farFromWall.occluded(post, up, beyondWall, down));
+  SurfaceHit hit;
+  ASSERT_TRUE(near.firstHit(post, up, towardWall, hit));
+  EXPECT_FALSE(hit.far);
+  EXPECT_NEAR(hit.v, 133.0, 1.0);
+
+  // Down onto the ground 1 km away (tan 0.2 from 200 m up): a far hit, its parameters
+  // the fine grid's at the point met, facing up.
+  const Vec3 high(1000.0, 200.0, 200.0), down20 = glm::normalize(Vec3(0.0, 1.0, -0.2));
+  ASSERT_TRUE(farFromWall.firstHit(high, up, down20, hit));
+  EXPECT_TRUE(hit.far);
+  EXPECT_EQ(hit.terrain, 0);
+  EXPECT_NEAR(hit.point.y, 1200.0, 0.2); // from 200 m and one offset up
+  EXPECT_NEAR(hit.u, hit.point.x / 10.0, 1e-3);
+  EXPECT_NEAR(hit.v, hit.point.y / 10.0, 1e-3);
+  EXPECT_NEAR(std::abs(hit.normal.z), 1.0, 1e-6);
+  // The same ray within the detail distance is a fine hit at the same place.
+  SurfaceHit fineHit;
+  ASSERT_TRUE(near.firstHit(high, up, down20, fineHit));
+  EXPECT_FALSE(fineHit.far);
+  EXPECT_NEAR(fineHit.v, hit.v, 1e-3);
+  // A far hit's own rays see the far terrain alone: from the ground beside the wall,
+  // straight over it, nothing is in the way.
+  EXPECT_TRUE(near.occludedToward(Vec3(1000.0, 1300.0, 0.0), up, towardWall));
+  EXPECT_FALSE(near.farRays().occludedToward(Vec3(1000.0, 1300.0, 0.0), up, towardWall));
+  EXPECT_EQ(&fine.farRays(), &fine);
+
+  // Along the valley floor, 3 degrees up: the ray leaves the detail distance below the
+  // far terrain's surface (which spans the valley at 0 m) and passes out through its
+  // back, as it rises out of the fine valley.
+  const Vec3 floor(200.0, 1020.0, -50.0), alongValley = atElevation(3.0, Vec3(1.0, 0.0, 0.0));
+  EXPECT_FALSE(fine.occludedToward(floor, up, alongValley));
+  EXPECT_FALSE(farFromWall.occludedToward(floor, up, alongValley));
+  EXPECT_FALSE(farFromWall.firstHit(floor, up, alongValley, hit));
+
+  // A ray is one ray, whichever terrains it meets.
+  const std::uint64_t before = farFromWall.raysCast();
+  farFromWall.occludedToward(post, up, towardWall);
+  farFromWall.firstHit(high, up, down20, hit);
+  farFromWall.farRays().occludedToward(hit.point, hit.normal, up);
+  EXPECT_EQ(farFromWall.raysCast() - before, 3u);
+}
+
+TEST(Visibility, TheFarTerrainHasNoCellOverAHole)
+{
+  TerrainGrid grid = wallAndValley();
+  grid.setCellValid(57, 21, false);
+  const FarTerrain far(grid, 4);
+  EXPECT_EQ(far.grid().postsX(), 51);
+  EXPECT_FALSE(far.grid().cellValid(14, 5)); // spans fine cells 56..59 x 20..23
+  EXPECT_TRUE(far.grid().cellValid(13, 5));
+  EXPECT_TRUE(far.grid().cellValid(14, 6));
+  // 7 posts at stride 4: 0, 4, 6 (the last kept); parameters map back linearly.
+  const FarTerrain odd(TerrainGrid(7, 7, Vec3(0.0)), 4);
+  EXPECT_EQ(odd.grid().postsX(), 3);
+  EXPECT_DOUBLE_EQ(odd.fineU(1.5), 5.0);
+  EXPECT_DOUBLE_EQ(odd.fineU(0.25), 1.0);
+  EXPECT_THROW(FarTerrain(grid, 1), Error);
 }
