@@ -176,6 +176,7 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , MaximumGatherRays(4096)
   , GatherError(0.003)
   , DetailDistance(0.0)
+  , FarTerrainStride(1)
   , MaximumIterations(30)
   , ConvergenceTolerance(1e-3)
   , MaximumNumberOfElements(1000000)
@@ -414,6 +415,7 @@ terralux::HierarchicalRadiosity& vtkHierarchicalRadiosity::PrepareSolver(std::un
   options.gatherSamples = this->MaximumGatherRays;
   options.gatherError = this->GatherError;
   options.gatherDetailDistance = this->DetailDistance;
+  options.farTerrainStride = this->FarTerrainStride;
   options.skyFromHorizons = this->SkyFromHorizons != 0;
   options.maximumIterations = this->MaximumIterations;
   options.convergenceTolerance = this->ConvergenceTolerance;
@@ -431,7 +433,7 @@ terralux::HierarchicalRadiosity& vtkHierarchicalRadiosity::PrepareSolver(std::un
   // A new hierarchy, over the kept rays and horizons if the shape is the same.
   std::shared_ptr<terralux::SceneGeometry> geometry;
   std::unique_ptr<vtkRadiosityScene> geometryScene;
-  if (kept && kept->Solver->geometry()->sameShape(scene->Scene))
+  if (kept && kept->Solver->geometry()->sameShape(scene->Scene, options.farSight()))
   {
     geometry = kept->Solver->geometry();
     geometryScene = std::move(kept->GeometryScene);
@@ -608,6 +610,7 @@ void vtkHierarchicalRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumGatherRays: " << this->MaximumGatherRays << "\n";
   os << indent << "GatherError: " << this->GatherError << "\n";
   os << indent << "DetailDistance: " << this->DetailDistance << "\n";
+  os << indent << "FarTerrainStride: " << this->FarTerrainStride << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";

@@ -173,6 +173,20 @@ public:
 
   ///@{
   /**
+   * Set/Get the stride of the far terrain: with a DetailDistance, in a scene of one
+   * terrain alone, a ray that goes farther than DetailDistance (horizontally) from
+   * where it starts sees, beyond it, the terrain's every FarTerrainStride-th post (its
+   * last row and column kept), as horizon tools trace far terrain at a coarser
+   * resolution: near every point the full resolution decides shadows and what it sees,
+   * far away a coarse copy of 1/FarTerrainStride^2 the posts. Horizons stay the full
+   * grid's. 1 (the default): the full resolution everywhere.
+   */
+  vtkSetClampMacro(FarTerrainStride, int, 1, VTK_INT_MAX);
+  vtkGetMacro(FarTerrainStride, int);
+  ///@}
+
+  ///@{
+  /**
    * Set/Get the most gather / push-pull iterations. Default is 30.
    */
   vtkSetClampMacro(MaximumIterations, int, 1, 100000);
@@ -427,6 +441,7 @@ protected:
   int MaximumGatherRays;
   double GatherError;
   double DetailDistance;
+  int FarTerrainStride;
   int MaximumIterations;
   double ConvergenceTolerance;
   vtkIdType MaximumNumberOfElements;

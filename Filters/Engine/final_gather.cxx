@@ -64,17 +64,20 @@ Spectrum FinalGather::radiosityAt(
   const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front, double sunSample, const Vec3& from) const
 {
   const auto& e = leaf.Irradiance;
-  // Whether the hit reads the posts of the scene's one terrain around it.
-  const bool nearPosts = hit.terrain == 0 &&
+  // Whether the hit reads the posts of the scene's one terrain around it (a hit on the
+  // far terrain lies beyond the detail distance).
+  const bool nearPosts = hit.terrain == 0 && !hit.far &&
     (!(this->DetailDistance > 0.0) ||
       std::hypot(hit.point.x - from.x, hit.point.y - from.y) <= this->DetailDistance);
+  // A far hit lies on the far terrain's coarse surface: its shadow rays see that alone.
+  const Visibility& rays = hit.far ? this->Rays.farRays() : this->Rays;
   Spectrum sun{};
   if (this->SunCumulative.empty())
   {
     // On the scene's one terrain, where the hit's cell's posts all prove a sun seen or
     // hidden, it takes their answer (see PostSunlight).
     const SunsProven proven = nearPosts && this->PostSuns ? this->PostSuns->between(hit.u, hit.v) : SunsProven{};
-    sun = directSunlight(hit.point, front, this->Suns, this->Rays, nullptr, proven);
+    sun = directSunlight(hit.point, front, this->Suns, rays, nullptr, proven);
   }
   else
   {
@@ -83,7 +86,7 @@ Spectrum FinalGather::radiosityAt(
                           sunSample * total) - this->SunCumulative.begin();
     HElement& chosen = *this->Suns[static_cast<std::size_t>(picked)];
     const double chance = (this->SunCumulative[picked] - (picked > 0 ? this->SunCumulative[picked - 1] : 0.0)) / total;
-    const double transport = transportToPoint(hit.point, front, chosen, this->Rays, 1, 0) / chance;
+    const double transport = transportToPoint(hit.point, front, chosen, rays, 1, 0) / chance;
     const Spectrum flux = chosen.emittance();
     for (int band = 0; band < maxBands; ++band)
       sun[band] = transport * flux[band];

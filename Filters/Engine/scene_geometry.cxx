@@ -6,11 +6,12 @@
 
 namespace terralux
 {
-SceneGeometry::SceneGeometry(const RadiosityScene& scene)
+SceneGeometry::SceneGeometry(const RadiosityScene& scene, const FarSight& far)
   : Points(scene.points)
   , Polygons(scene.polygons)
   , Terrains(scene.terrains)
-  , Rays(std::make_unique<Visibility>(scene))
+  , Far(far)
+  , Rays(std::make_unique<Visibility>(scene, far))
   , Horizons(scene.terrains.size())
   , DenseHorizons(scene.terrains.size())
 {
@@ -32,9 +33,9 @@ const HorizonMap& SceneGeometry::horizons(std::size_t index, bool dense, const W
   return *this->Horizons[index];
 }
 
-bool SceneGeometry::sameShape(const RadiosityScene& scene) const
+bool SceneGeometry::sameShape(const RadiosityScene& scene, const FarSight& far) const
 {
-  if (scene.points != this->Points || scene.polygons.size() != this->Polygons.size() ||
+  if (!(far == this->Far) || scene.points != this->Points || scene.polygons.size() != this->Polygons.size() ||
     scene.terrains.size() != this->Terrains.size())
     return false;
   for (std::size_t k = 0; k < scene.polygons.size(); ++k)

@@ -5,6 +5,7 @@
 // sun re-solves over the same SceneGeometry without rebuilding either (on the 1025^2
 // fractal DEM the horizons alone take a fifth of an instant's time).
 
+#include "far_terrain.h"
 #include "radiosity_types.h"
 
 #include <memory>
@@ -22,8 +23,9 @@ class SceneGeometry
 {
 public:
   /// The rays of `scene` (see Visibility). The scene's terrain grids must outlive
-  /// this: the ray tracer shares their vertices.
-  explicit SceneGeometry(const RadiosityScene& scene);
+  /// this: the ray tracer shares their vertices. `far`: the terrain rays see beyond
+  /// the detail distance of their origins (Visibility).
+  SceneGeometry(const RadiosityScene& scene, const FarSight& far);
   ~SceneGeometry();
   SceneGeometry(const SceneGeometry&) = delete;
   SceneGeometry& operator=(const SceneGeometry&) = delete;
@@ -38,13 +40,15 @@ public:
   const HorizonMap& horizons(std::size_t index, bool dense = false, const WorkSplit* split = nullptr);
 
   /// Whether `scene` has this one's shape: the same polygons over the same points and
-  /// terrains with the same posts and valid cells (materials may differ).
-  bool sameShape(const RadiosityScene& scene) const;
+  /// terrains with the same posts and valid cells (materials may differ), seen from
+  /// afar alike.
+  bool sameShape(const RadiosityScene& scene, const FarSight& far) const;
 
 private:
   std::vector<Vec3> Points;                 // the scene's polygon corners, to compare
   std::vector<ScenePolygon> Polygons;       // (their vertex indices count)
   std::vector<const TerrainGrid*> Terrains; // the grids rays and horizons are built on
+  FarSight Far;
   std::unique_ptr<Visibility> Rays;
   std::vector<std::unique_ptr<HorizonMap>> Horizons, DenseHorizons; // per terrain, built on demand
   std::mutex HorizonsMutex;

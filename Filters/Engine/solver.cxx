@@ -50,11 +50,12 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   , Sources(std::make_unique<ElementStore>(firstSourceId))
 {
   if (options.visibilitySamples < 1 || options.maximumIterations < 1 || !(options.errorTolerance > 0.0) ||
-    options.gatherSamples < 0 || !(options.gatherError > 0.0) ||
+    options.gatherSamples < 0 || !(options.gatherError > 0.0) || options.farTerrainStride < 1 ||
     !(options.gatherDetailDistance >= 0.0 && options.gatherDetailDistance <= std::numeric_limits<double>::max()))
   {
     throw Error("radiosity options: VisibilitySamples and MaximumIterations must be >= 1, "
-                "ErrorTolerance > 0, MaximumGatherRays >= 0, GatherError > 0 and DetailDistance finite and >= 0");
+                "ErrorTolerance > 0, MaximumGatherRays >= 0, GatherError > 0, FarTerrainStride >= 1 and "
+                "DetailDistance finite and >= 0");
   }
   const auto hierarchyStart = std::chrono::steady_clock::now();
   std::vector<PolygonElement*>& polygons = this->TopSurfaces;
@@ -105,8 +106,8 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   this->Stats.secondsHierarchyBuild = secondsSince(hierarchyStart);
 
   const auto start = std::chrono::steady_clock::now();
-  const bool reused = geometry && geometry->sameShape(scene);
-  this->Geometry = reused ? std::move(geometry) : std::make_shared<SceneGeometry>(scene);
+  const bool reused = geometry && geometry->sameShape(scene, options.farSight());
+  this->Geometry = reused ? std::move(geometry) : std::make_shared<SceneGeometry>(scene, options.farSight());
   this->Rays = &this->Geometry->rays();
   this->RaysBefore = this->Rays->raysCast();
   this->PointCount = scene.points.size();
@@ -125,13 +126,13 @@ HierarchicalRadiosity::~HierarchicalRadiosity() = default;
 
 bool operator==(const RadiosityOptions& a, const RadiosityOptions& b)
 {
-  static_assert(sizeof(RadiosityOptions) == 80, "an option was added: compare it here");
+  static_assert(sizeof(RadiosityOptions) == 88, "an option was added: compare it here");
   return a.errorTolerance == b.errorTolerance && a.minimumElementArea == b.minimumElementArea &&
     a.visibilitySamples == b.visibilitySamples && a.maximumIterations == b.maximumIterations &&
     a.convergenceTolerance == b.convergenceTolerance && a.maximumSkyLevel == b.maximumSkyLevel &&
     a.maximumElements == b.maximumElements && a.gatherSamples == b.gatherSamples &&
     a.gatherError == b.gatherError && a.skyFromHorizons == b.skyFromHorizons &&
-    a.gatherDetailDistance == b.gatherDetailDistance;
+    a.gatherDetailDistance == b.gatherDetailDistance && a.farTerrainStride == b.farTerrainStride;
 }
 
 bool HierarchicalRadiosity::serves(const RadiosityScene& scene, const RadiosityOptions& options) const
@@ -150,7 +151,7 @@ bool HierarchicalRadiosity::serves(const RadiosityScene& scene, const RadiosityO
   for (std::size_t k = 0; k < scene.terrains.size(); ++k)
     if (this->TerrainRoots[k] && !this->TerrainRoots[k]->grid().sameMaterials(*scene.terrains[k]))
       return false;
-  return this->Geometry->sameShape(scene);
+  return this->Geometry->sameShape(scene, options.farSight());
 }
 
 std::size_t HierarchicalRadiosity::elementCount() const

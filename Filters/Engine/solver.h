@@ -8,6 +8,7 @@
 // push-pull), point_evaluation.cxx (values at the points users read).
 
 #include "bf_oracle.h"
+#include "far_terrain.h"
 #include "helement.h"
 #include "horizon_map.h"
 #include "post_lattice.h"
@@ -64,6 +65,11 @@ struct RadiosityOptions
   /// with a work split each process holds the posts' skies and suns only within it of
   /// its window (HeldPosts). 0: every hit reads the posts.
   double gatherDetailDistance = 0.0;
+  /// > 1, with a gatherDetailDistance, in a scene of one terrain alone: beyond that
+  /// distance from its origin a ray sees the terrain's every farTerrainStride-th post
+  /// (FarTerrain), as horizon tools see far terrain. 1: the full resolution everywhere.
+  int farTerrainStride = 1;
+  FarSight farSight() const { return FarSight{ this->farTerrainStride, this->gatherDetailDistance }; }
 };
 
 bool operator==(const RadiosityOptions& a, const RadiosityOptions& b);

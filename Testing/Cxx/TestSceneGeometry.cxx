@@ -93,8 +93,10 @@ TEST(SceneGeometry, AnotherShapeGetsGeometryOfItsOwn)
   const Solved first = solve(*grid, 1.0, nullptr);
   auto raised = hills(0.2);
   raised->setPost(20, 20, raised->post(20, 20) + Vec3(0.0, 0.0, 5.0));
-  EXPECT_FALSE(first.solver->geometry()->sameShape(sceneOf(*raised)));
-  EXPECT_TRUE(first.solver->geometry()->sameShape(sceneOf(*hills(0.5))));
+  EXPECT_FALSE(first.solver->geometry()->sameShape(sceneOf(*raised), FarSight{}));
+  EXPECT_TRUE(first.solver->geometry()->sameShape(sceneOf(*hills(0.5)), FarSight{}));
+  // Seen from afar otherwise, its rays are others.
+  EXPECT_FALSE(first.solver->geometry()->sameShape(sceneOf(*hills(0.5)), FarSight{ 4, 100.0 }));
   const Solved other = solve(*raised, 1.0, first.solver->geometry());
   EXPECT_NE(other.solver->geometry(), first.solver->geometry());
   EXPECT_GT(other.solver->statistics().secondsVisibilityBuild, 0.0);
