@@ -55,7 +55,6 @@ Visibility::Visibility(const RadiosityScene& scene, const FarSight& far)
 
 Visibility::Visibility(const FarTerrain& far, double sceneOffset)
   : MapsTo(&far)
-  , PassBackFaces(true)
   , Rays(std::make_unique<RayCounters>())
 {
   RadiosityScene scene;
@@ -109,26 +108,6 @@ void Visibility::build(const RadiosityScene& scene)
     throw Error("Embree failed to build the visibility structure (out of memory?)");
   }
 }
-
-namespace
-{
-// A hit on a grid's back face does not count. Embree's geometric normal of a grid
-// cell, counter-clockwise seen from above, points up: a ray meets a front face going
-// against it.
-void passBackFaces(const RTCFilterFunctionNArguments* args)
-{
-  for (unsigned i = 0; i < args->N; ++i)
-  {
-    if (args->valid[i] != -1)
-      continue;
-    const float dot = RTCHitN_Ng_x(args->hit, args->N, i) * RTCRayN_dir_x(args->ray, args->N, i) +
-      RTCHitN_Ng_y(args->hit, args->N, i) * RTCRayN_dir_y(args->ray, args->N, i) +
-      RTCHitN_Ng_z(args->hit, args->N, i) * RTCRayN_dir_z(args->ray, args->N, i);
-    if (dot > 0.0f)
-      args->valid[i] = 0;
-  }
-}
-} // namespace
 
 void Visibility::addTerrain(const TerrainGrid& terrain, int terrainIndex)
 {
@@ -196,11 +175,6 @@ void Visibility::addTerrain(const TerrainGrid& terrain, int terrainIndex)
     for (std::size_t k = 0; k < posts; ++k)
       for (int c = 0; c < 3; ++c)
         vertices[3 * k + c] = static_cast<float>(terrain.vertices()[3 * k + c] + shift[c]);
-  }
-  if (this->PassBackFaces)
-  {
-    rtcSetGeometryIntersectFilterFunction(geometry, passBackFaces);
-    rtcSetGeometryOccludedFilterFunction(geometry, passBackFaces);
   }
   GeometryOrigin origin;
   origin.terrain = terrainIndex;
@@ -324,6 +298,12 @@ bool Visibility::blocked(const Vec3& origin, const Vec3& d, double tnear, double
   return castOcclusion(this->Scene, origin - this->Centre, d, tnear, tfar);
 }
 
+bool Visibility::under(const Vec3& point, SurfaceHit& hit) const
+{
+  // Straight up from a point under a height field, the first surface met is a back face.
+  return this->intersect(point, Vec3(0.0, 0.0, 1.0), 0.0, std::numeric_limits<double>::infinity(), hit);
+}
+
 bool Visibility::intersect(const Vec3& origin, const Vec3& d, double tnear, double tfar, SurfaceHit& hit) const
 {
   if (!(tnear < tfar))
@@ -367,6 +347,22 @@ bool Visibility::intersect(const Vec3& origin, const Vec3& d, double tnear, doub
   return true;
 }
 
+// A ray that reaches its detail distance below the far terrain's surface (where that
+// spans a hollow the fine terrain dips into, or the ray runs along a valley the far
+// terrain does not have) is inside the far terrain: it stops there, as a ray under a
+// height field would, at the surface above it.
+bool Visibility::farBlocked(const Vec3& origin, const Vec3& d, double detail, double tfar) const
+{
+  SurfaceHit above;
+  return this->Far->under(origin + detail * d, above) || this->Far->blocked(origin, d, detail, tfar);
+}
+
+bool Visibility::farHit(const Vec3& origin, const Vec3& d, double detail, SurfaceHit& hit) const
+{
+  return this->Far->under(origin + detail * d, hit) ||
+    this->Far->intersect(origin, d, detail, std::numeric_limits<double>::infinity(), hit);
+}
+
 bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, const Vec3& bNormal) const
 {
   ++this->Rays->perThread.local();
@@ -383,7 +379,7 @@ bool Visibility::occluded(const Vec3& a, const Vec3& aNormal, const Vec3& b, con
   const Vec3 unit = d / length;
   const double end = length - this->Offset, detail = this->detailEnd(unit);
   return this->blocked(from, unit, this->Offset, std::min(end, detail)) ||
-    (detail < end && this->Far->blocked(from, unit, detail, end));
+    (detail < end && this->farBlocked(from, unit, detail, end));
 }
 
 bool Visibility::firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, SurfaceHit& hit) const
@@ -396,7 +392,7 @@ bool Visibility::firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, Sur
   const double detail = this->detailEnd(d);
   return this->intersect(origin, d, 0.0, detail, hit) ||
     (detail < std::numeric_limits<double>::infinity() &&
-      this->Far->intersect(origin, d, detail, std::numeric_limits<double>::infinity(), hit));
+      this->farHit(origin, d, detail, hit));
 }
 
 std::uint64_t Visibility::seedOf(const Vec3& p) const
@@ -411,6 +407,6 @@ bool Visibility::occludedToward(const Vec3& a, const Vec3& aNormal, const Vec3& 
   const Vec3 origin = a + this->Offset * aNormal;
   const double detail = this->detailEnd(d), infinity = std::numeric_limits<double>::infinity();
   return this->blocked(origin, d, this->Offset, std::min(infinity, detail)) ||
-    (detail < infinity && this->Far->blocked(origin, d, detail, infinity));
+    (detail < infinity && this->farBlocked(origin, d, detail, infinity));
 }
 } // namespace terralux

@@ -41,9 +41,10 @@ public:
   /// fails.
   /// With `far` active, in a scene of one terrain alone, a ray that leaves the vertical
   /// cylinder of radius far.detailDistance around its origin meets, beyond it, the
-  /// terrain's every far.stride-th post (FarTerrain) instead, whose back faces it
-  /// passes through (it may start below the coarse surface where that cuts across a
-  /// valley). Each ray's answer then depends on its origin alone, not on who traces it.
+  /// terrain's every far.stride-th post (FarTerrain) instead. A ray that leaves the
+  /// cylinder below the coarse surface (which spans hollows and valleys) stops there,
+  /// at the surface above it: it is inside the far terrain. Each ray's answer then
+  /// depends on its origin alone, not on who traces it.
   explicit Visibility(const RadiosityScene& scene, const FarSight& far = {});
   ~Visibility();
   Visibility(const Visibility&) = delete;
@@ -74,8 +75,8 @@ public:
   std::uint64_t raysCast() const;
 
 private:
-  /// The far terrain's own rays: its grid alone, back faces passed through, hits mapped
-  /// to the fine grid's parameters.
+  /// The far terrain's own rays: its grid alone, hits mapped to the fine grid's
+  /// parameters.
   Visibility(const FarTerrain& far, double sceneOffset);
   void build(const RadiosityScene& scene);
   /// Where a ray along unit d leaves its origin's cylinder of detail (infinity
@@ -84,6 +85,12 @@ private:
   // One stretch [tnear, tfar] of a ray from `origin` (absolute), uncounted.
   bool intersect(const Vec3& origin, const Vec3& d, double tnear, double tfar, SurfaceHit& hit) const;
   bool blocked(const Vec3& origin, const Vec3& d, double tnear, double tfar) const;
+  /// In the far terrain's rays: whether `point` lies under its surface, and the
+  /// surface above it.
+  bool under(const Vec3& point, SurfaceHit& above) const;
+  // A ray's stretch beyond its detail distance, on the far terrain.
+  bool farBlocked(const Vec3& origin, const Vec3& d, double detail, double tfar) const;
+  bool farHit(const Vec3& origin, const Vec3& d, double detail, SurfaceHit& hit) const;
   void addTerrain(const TerrainGrid& terrain, int terrainIndex);
   void addPolygons(const RadiosityScene& scene);
 
@@ -105,7 +112,6 @@ private:
   std::unique_ptr<Visibility> Far;     // and its rays
   double DetailDistance = 0.0;
   const FarTerrain* MapsTo = nullptr;  // in the far terrain's rays: the map of its hits
-  bool PassBackFaces = false;          // in the far terrain's rays
   Vec3 Centre{ 0.0 }; // Embree's float vertices are stored relative to it
   // One counter per thread: a shared atomic would bounce between cores on every ray.
   struct RayCounters;

@@ -317,6 +317,9 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   // TERRALUX_REPORT_DETAIL_DISTANCE: far gather hits take their leaves' light (m).
   if (const char* value = std::getenv("TERRALUX_REPORT_DETAIL_DISTANCE"))
     radiosity->SetDetailDistance(std::atof(value));
+  // TERRALUX_REPORT_FAR_STRIDE: beyond the DetailDistance rays see every Nth post.
+  if (const char* value = std::getenv("TERRALUX_REPORT_FAR_STRIDE"))
+    radiosity->SetFarTerrainStride(std::atoi(value));
   radiosity->SetUseTerrainHierarchy(method != "triangles");
   const auto start = std::chrono::steady_clock::now();
   radiosity->Update();

@@ -7,6 +7,7 @@
 # Usage: Testing/Benchmarks/run_accuracy_report.sh [BUILD_DIR] [OUT_DIR] [SCENES...]
 #   TERRALUX_REFERENCE_SAMPLES  directions per point for the reference (default 32768)
 #   TERRALUX_REPORT_DETAIL_DISTANCE  DetailDistance (m) of every solve (default 0)
+#   TERRALUX_REPORT_FAR_STRIDE  FarTerrainStride of every solve (default 1)
 #   TERRALUX_REPORT_PREVIOUS    the build folder of a previous release: its solves at
 #                               points join the report as "previous release", the
 #                               new curve beside the old

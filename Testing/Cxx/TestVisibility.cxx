@@ -169,13 +169,19 @@ TEST(Visibility, BeyondTheDetailDistanceRaysSeeTheFarTerrain)
   EXPECT_FALSE(near.farRays().occludedToward(Vec3(1000.0, 1300.0, 0.0), up, towardWall));
   EXPECT_EQ(&fine.farRays(), &fine);
 
-  // Along the valley floor, 3 degrees up: the ray leaves the detail distance below the
-  // far terrain's surface (which spans the valley at 0 m) and passes out through its
-  // back, as it rises out of the fine valley.
+  // Along the valley floor, 3 degrees up: within 1.5 km the ray rises out of the fine
+  // valley; beyond 300 m it is under the far terrain (which spans the valley at 0 m),
+  // inside it, and stops at its surface above.
   const Vec3 floor(200.0, 1020.0, -50.0), alongValley = atElevation(3.0, Vec3(1.0, 0.0, 0.0));
   EXPECT_FALSE(fine.occludedToward(floor, up, alongValley));
-  EXPECT_FALSE(farFromWall.occludedToward(floor, up, alongValley));
-  EXPECT_FALSE(farFromWall.firstHit(floor, up, alongValley, hit));
+  EXPECT_FALSE(near.occludedToward(floor, up, alongValley));
+  EXPECT_FALSE(near.firstHit(floor, up, alongValley, hit));
+  EXPECT_TRUE(farFromWall.occludedToward(floor, up, alongValley));
+  ASSERT_TRUE(farFromWall.firstHit(floor, up, alongValley, hit));
+  EXPECT_TRUE(hit.far);
+  EXPECT_NEAR(hit.point.x, 200.0 + 300.0, 0.1);
+  EXPECT_NEAR(hit.point.z, 0.0, 1e-3);
+  EXPECT_NEAR(hit.v, 102.0, 1e-3);
 
   // A ray is one ray, whichever terrains it meets.
   const std::uint64_t before = farFromWall.raysCast();
