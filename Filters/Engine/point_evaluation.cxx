@@ -93,7 +93,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
       // leaf holds the point; form factors need the point inside its leaf.
       const Vec3& from = source ? point : inside;
       const double transport = transportToPoint(
-        from, normal, *link.sender, *this->Rays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
+        from, normal, *link.sender, *this->PointRays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
       const Spectrum e = link.sender->emittance();
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)
@@ -224,7 +224,7 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
 {
   const HorizonMap::Post post = this->SunHorizons ? this->SunHorizons->find(point) : HorizonMap::Post{};
   if (!post)
-    return directSunlight(point, normal, this->PointSuns, *this->Rays, sunlitHours);
+    return directSunlight(point, normal, this->PointSuns, *this->PointRays, sunlitHours);
   // A sun the post's horizons prove open or hidden takes no ray. Every point sun is a
   // parallel SunElement: its kernel and flux, kept beside its sight, need no virtual
   // call on this path (a year of hours tests 5 G suns at the posts of a 1025^2 DEM).
@@ -243,7 +243,7 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
       continue;
     const bool seen = this->PostSuns ? proven.seenAt(s) : horizons.clearlyAbove(sun.sight);
     const bool hidden = !seen && (this->PostSuns ? proven.hiddenAt(s) : horizons.clearlyBelow(sun.sight));
-    const bool open = seen || (!hidden && !this->Rays->occludedToward(point, normal, sun.direction));
+    const bool open = seen || (!hidden && !this->PointRays->occludedToward(point, normal, sun.direction));
     if (open)
       addSunlight(kernel, sun.flux, sun.duration, result, sunlitHours);
   }

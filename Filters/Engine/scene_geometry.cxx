@@ -12,6 +12,7 @@ SceneGeometry::SceneGeometry(const RadiosityScene& scene, const FarSight& far)
   , Terrains(scene.terrains)
   , Far(far)
   , Rays(std::make_unique<Visibility>(scene, far))
+  , HierarchyRays(Rays->farTerrain() ? Rays->withoutFarTerrain() : nullptr)
   , Horizons(scene.terrains.size())
   , DenseHorizons(scene.terrains.size())
 {

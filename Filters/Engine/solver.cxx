@@ -109,11 +109,12 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   const bool reused = geometry && geometry->sameShape(scene, options.farSight());
   this->Geometry = reused ? std::move(geometry) : std::make_shared<SceneGeometry>(scene, options.farSight());
   this->Rays = &this->Geometry->rays();
+  this->PointRays = &this->Geometry->pointRays();
   this->RaysBefore = this->Rays->raysCast();
   this->PointCount = scene.points.size();
   for (const TerrainGrid* terrain : scene.terrains)
     this->PointCount += static_cast<std::size_t>(terrain->postsX()) * terrain->postsY();
-  this->Gather = std::make_unique<FinalGather>(*this->Rays, this->Roots, this->TerrainRoots, this->Suns);
+  this->Gather = std::make_unique<FinalGather>(*this->PointRays, this->Roots, this->TerrainRoots, this->Suns);
   this->Gather->setDetailDistance(options.gatherDetailDistance);
   this->HeightField = options.skyFromHorizons && scene.polygons.empty() &&
     std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
@@ -192,7 +193,7 @@ void HierarchicalRadiosity::resetHorizons()
   this->forgetMappedSuns();
   this->Gather->setHorizons(nullptr);
   this->Horizons = this->SkyAtPoints && this->HeightField
-    ? std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, nullptr)
+    ? std::make_unique<HorizonSky>(*this->PointRays, *this->SkyAtPoints, nullptr)
     : nullptr;
   this->Gather->setHorizons(this->Horizons.get());
 }
@@ -248,7 +249,7 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   // The one terrain's horizons: built by the first solve over this geometry, reused by
   // the next ones.
   this->PostHorizons = &this->Geometry->horizons(0, this->wantsDenseHorizons(), this->Split);
-  this->Horizons = std::make_unique<HorizonSky>(*this->Rays, *this->SkyAtPoints, this->PostHorizons);
+  this->Horizons = std::make_unique<HorizonSky>(*this->PointRays, *this->SkyAtPoints, this->PostHorizons);
   this->Gather->setHorizons(this->Horizons.get());
   // With a split and a detail distance, each process holds the posts' skies and suns
   // within it of its window only.

@@ -66,8 +66,10 @@ struct RadiosityOptions
   /// its window (HeldPosts). 0: every hit reads the posts.
   double gatherDetailDistance = 0.0;
   /// > 1, with a gatherDetailDistance, in a scene of one terrain alone: beyond that
-  /// distance from its origin a ray sees the terrain's every farTerrainStride-th post
-  /// (FarTerrain), as horizon tools see far terrain. 1: the full resolution everywhere.
+  /// distance from its origin a ray from a point the outputs read (its gather, sun and
+  /// sky) sees the terrain's every farTerrainStride-th post (FarTerrain), as horizon
+  /// tools see far terrain. The hierarchy's own rays keep the full resolution. 1: the
+  /// full resolution everywhere.
   int farTerrainStride = 1;
   FarSight farSight() const { return FarSight{ this->farTerrainStride, this->gatherDetailDistance }; }
 };
@@ -327,7 +329,8 @@ private:
   static constexpr std::uint64_t firstMergedSunId = std::uint64_t(1) << 41;
   bool Solved = false; // a solve has run since the solver was built
   std::shared_ptr<SceneGeometry> Geometry;
-  const Visibility* Rays = nullptr; // the geometry's
+  const Visibility* Rays = nullptr; // the geometry's: the hierarchy's
+  const Visibility* PointRays = nullptr; // and the points' (SceneGeometry::pointRays), one count with Rays
   std::uint64_t RaysBefore = 0;     // what the geometry's rays had cast before this solver
   std::unique_ptr<FinalGather> Gather;
   std::unique_ptr<OpenSky> SkyAtPoints;

@@ -22,7 +22,7 @@ struct Visibility::RayCounters
 
 std::uint64_t Visibility::raysCast() const
 {
-  std::uint64_t total = this->Far ? this->Far->raysCast() : 0;
+  std::uint64_t total = 0;
   for (std::uint64_t count : this->Rays->perThread)
     total += count;
   return total;
@@ -42,25 +42,42 @@ RTCDevice processDevice()
 } // namespace
 
 Visibility::Visibility(const RadiosityScene& scene, const FarSight& far)
-  : Rays(std::make_unique<RayCounters>())
+  : Rays(std::make_shared<RayCounters>())
 {
   this->build(scene);
   if (far.active() && scene.terrains.size() == 1 && scene.polygons.empty())
   {
     this->Coarse = std::make_unique<FarTerrain>(*scene.terrains.front(), far.stride);
-    this->Far = std::unique_ptr<Visibility>(new Visibility(*this->Coarse, this->Offset));
+    this->Far = std::unique_ptr<Visibility>(new Visibility(*this->Coarse, this->Offset, this->Rays));
     this->DetailDistance = far.detailDistance;
   }
 }
 
-Visibility::Visibility(const FarTerrain& far, double sceneOffset)
+Visibility::Visibility(const FarTerrain& far, double sceneOffset, std::shared_ptr<RayCounters> counters)
   : MapsTo(&far)
-  , Rays(std::make_unique<RayCounters>())
+  , Rays(std::move(counters))
 {
   RadiosityScene scene;
   scene.terrains.push_back(&far.grid());
   this->build(scene);
   this->Offset = sceneOffset; // the fine scene's: the far grid's box is the same but for a few posts
+}
+
+Visibility::Visibility(const Visibility& whole, std::shared_ptr<RayCounters> counters)
+  : Origins(whole.Origins)
+  , TrianglePolygon(whole.TrianglePolygon)
+  , Device(whole.Device)
+  , Scene(whole.Scene)
+  , Offset(whole.Offset)
+  , Centre(whole.Centre)
+  , Rays(std::move(counters))
+{
+  rtcRetainScene(this->Scene);
+}
+
+std::unique_ptr<Visibility> Visibility::withoutFarTerrain() const
+{
+  return std::unique_ptr<Visibility>(new Visibility(*this, this->Rays));
 }
 
 void Visibility::build(const RadiosityScene& scene)

@@ -60,6 +60,11 @@ public:
   /// The first surface the ray from surface point a (unit normal aNormal) along unit
   /// direction d meets, from a lifted by offset() along aNormal; false when it escapes.
   bool firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, SurfaceHit& hit) const;
+  /// The same scene at full resolution everywhere, sharing this one's Embree scene and
+  /// its count of rays: for rays between points of the hierarchy's surfaces, which lie
+  /// on the full-resolution terrain (under the far terrain where that spans a hollow,
+  /// so that a far stretch would stop short of them).
+  std::unique_ptr<Visibility> withoutFarTerrain() const;
   /// The rays from a point on the far terrain (a far hit's shadow rays): that terrain
   /// alone, whose coarse surface the point lies on. Without one, these rays.
   const Visibility& farRays() const { return this->Far ? *this->Far : *this; }
@@ -77,7 +82,9 @@ public:
 private:
   /// The far terrain's own rays: its grid alone, hits mapped to the fine grid's
   /// parameters.
-  Visibility(const FarTerrain& far, double sceneOffset);
+  struct RayCounters;
+  Visibility(const FarTerrain& far, double sceneOffset, std::shared_ptr<RayCounters> counters);
+  Visibility(const Visibility& whole, std::shared_ptr<RayCounters> counters); // withoutFarTerrain
   void build(const RadiosityScene& scene);
   /// Where a ray along unit d leaves its origin's cylinder of detail (infinity
   /// without a far terrain, or straight up or down).
@@ -114,7 +121,7 @@ private:
   const FarTerrain* MapsTo = nullptr;  // in the far terrain's rays: the map of its hits
   Vec3 Centre{ 0.0 }; // Embree's float vertices are stored relative to it
   // One counter per thread: a shared atomic would bounce between cores on every ray.
-  struct RayCounters;
-  std::unique_ptr<RayCounters> Rays;
+  // Shared with the far terrain's rays and the view without it: one count of all.
+  std::shared_ptr<RayCounters> Rays;
 };
 } // namespace terralux

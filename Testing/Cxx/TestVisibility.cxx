@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 using namespace terralux;
 using namespace terralux_test;
 
@@ -183,12 +185,20 @@ TEST(Visibility, BeyondTheDetailDistanceRaysSeeTheFarTerrain)
   EXPECT_NEAR(hit.point.z, 0.0, 1e-3);
   EXPECT_NEAR(hit.v, 102.0, 1e-3);
 
-  // A ray is one ray, whichever terrains it meets.
+  // Without the far terrain (the hierarchy's rays): the fine wall and valley again.
+  const auto whole = farFromWall.withoutFarTerrain();
+  EXPECT_EQ(whole->farTerrain(), nullptr);
+  EXPECT_TRUE(whole->occludedToward(post, up, towardWall));
+  EXPECT_FALSE(whole->occludedToward(floor, up, alongValley));
+
+  // A ray is one ray, whichever terrains it meets, counted once for all three.
   const std::uint64_t before = farFromWall.raysCast();
   farFromWall.occludedToward(post, up, towardWall);
   farFromWall.firstHit(high, up, down20, hit);
   farFromWall.farRays().occludedToward(hit.point, hit.normal, up);
-  EXPECT_EQ(farFromWall.raysCast() - before, 3u);
+  whole->occludedToward(post, up, towardWall);
+  EXPECT_EQ(farFromWall.raysCast() - before, 4u);
+  EXPECT_EQ(whole->raysCast(), farFromWall.raysCast());
 }
 
 TEST(Visibility, TheFarTerrainHasNoCellOverAHole)
@@ -206,4 +216,8 @@ TEST(Visibility, TheFarTerrainHasNoCellOverAHole)
   EXPECT_DOUBLE_EQ(odd.fineU(1.5), 5.0);
   EXPECT_DOUBLE_EQ(odd.fineU(0.25), 1.0);
   EXPECT_THROW(FarTerrain(grid, 1), Error);
+  // A stride past the grid keeps its corners: one cell.
+  const FarTerrain corners(grid, std::numeric_limits<int>::max());
+  EXPECT_EQ(corners.grid().postsX(), 2);
+  EXPECT_DOUBLE_EQ(corners.fineU(0.5), 100.0);
 }

@@ -70,6 +70,9 @@ def parse_arguments(argv):
     parser.add_argument("--detail-distance", type=float, default=0.0, metavar="M",
                         help="gather hits farther than M metres take their leaf's light, not their posts' skies; "
                              "with --mpi each rank then holds those only within M of its piece (default 0: none)")
+    parser.add_argument("--far-stride", type=int, default=1, metavar="N",
+                        help="with --detail-distance, rays beyond it see every Nth post of the DEM, as horizon "
+                             "tools see far terrain (default 1: the full resolution everywhere)")
     return parser.parse_args(argv)
 
 
@@ -194,6 +197,8 @@ def run(args):
                          % args.output)
     if not 0.0 <= args.detail_distance < float("inf"):
         raise InputError("--detail-distance %g is not a distance in metres (>= 0; 0: none)" % args.detail_distance)
+    if args.far_stride < 1:
+        raise InputError("--far-stride %d is not a stride of posts (>= 1; 1: none)" % args.far_stride)
 
     irradiation = observe(vtkSolarIrradiation())
     irradiation.SetInputConnection(terrain.GetOutputPort())
@@ -206,6 +211,7 @@ def run(args):
     irradiation.SetSkyType(args.sky_type)
     irradiation.SetErrorTolerance(args.tolerance)
     irradiation.SetDetailDistance(args.detail_distance)
+    irradiation.SetFarTerrainStride(args.far_stride)
     irradiation.SetEvaluateAtPoints(args.points)
     irradiation.SetPostNormalsToHorn()  # as r.slope.aspect and gdaldem
     if args.weather:
