@@ -6,7 +6,8 @@ instant: sun + CIE clear sky + interreflection at every post (vtkHierarchicalRad
 EvaluateAtPoints on, the paper's August morning); day: vtkSolarIrradiation over
 2024-06-21 at 30-minute steps. Each rank evaluates its piece; rank 0 writes the GeoTIFF
 and prints, per rank, the posts it evaluated, its seconds (pipeline update and write)
-and its peak memory. TERRALUX_BENCH_DETAIL_DISTANCE (m) sets the solvers' DetailDistance.
+and its peak memory. TERRALUX_BENCH_DETAIL_DISTANCE (m) sets the solvers' DetailDistance,
+TERRALUX_BENCH_FAR_STRIDE their FarTerrainStride.
 """
 import os
 import resource
@@ -33,6 +34,7 @@ if mode == "instant":
 else:
     solver = series_solver(terrain, "2024-06-21T00:00:00+00:00", "2024-06-22T00:00:00+00:00", 30.0)
 solver.SetDetailDistance(float(os.environ.get("TERRALUX_BENCH_DETAIL_DISTANCE", "0")))
+solver.SetFarTerrainStride(int(os.environ.get("TERRALUX_BENCH_FAR_STRIDE", "1")))
 writer = terralux.vtkTerrainRasterWriter()
 writer.SetInputConnection(solver.GetOutputPort(0))
 writer.SetFileName(output)

@@ -6,6 +6,7 @@
 # GeoTIFFs of 2 ranks compared with 1 rank's.
 # Usage: Testing/Benchmarks/run_mpi_benchmark.sh [BUILD_DIR] [SIZE]   (SIZE: 2049)
 #   TERRALUX_BENCH_DETAIL_DISTANCE  the solvers' DetailDistance, m (default 0: none)
+#   TERRALUX_BENCH_FAR_STRIDE       their FarTerrainStride (default 1: none)
 set -euo pipefail
 repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="$(cd "${1:-${repo_dir}/build}" && pwd)"
