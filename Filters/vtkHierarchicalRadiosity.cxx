@@ -23,6 +23,7 @@
 #include "finite_parameters.h"
 #include "scene_geometry.h"
 #include "solver.h"
+#include "visibility.h"
 #include "work_split.h"
 
 #include <chrono>
@@ -468,6 +469,13 @@ bool vtkHierarchicalRadiosity::SolveHierarchy(vtkInformationVector** inputVector
   if (solver.degeneratePolygons() > 0)
   {
     vtkWarningMacro("Skipped " << solver.degeneratePolygons() << " degenerate polygon(s) with zero area.");
+  }
+  if (this->FarTerrainStride > 1 && !solver.geometry()->pointRays().farTerrain())
+  {
+    vtkWarningMacro("FarTerrainStride " << this->FarTerrainStride << " is ignored: it needs a DetailDistance > 0 "
+      "and a scene of one terrain alone (this one has " << hierarchy.Scene->Scene.terrains.size()
+      << " terrain(s) and " << hierarchy.Scene->Scene.polygons.size()
+      << " polygon(s)); rays see the full resolution everywhere.");
   }
   for (const vtkRadiosityScene::SunLight& sun : hierarchy.Scene->Suns)
   {

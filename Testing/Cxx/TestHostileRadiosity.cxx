@@ -390,6 +390,30 @@ TEST(HostileRadiosity, NaNParametersAreRefused)
   }
 }
 
+TEST(HostileRadiosity, AFarTerrainStrideItCannotUseIsIgnoredWithAWarning)
+{
+  // Polygons only, then no DetailDistance: rays keep the full resolution, and say so.
+  auto sky = uniformSky(100.0);
+  for (const double detail : { 100.0, 0.0 })
+  {
+    SCOPED_TRACE(detail);
+    vtkNew<vtkHierarchicalRadiosity> radiosity;
+    radiosity->SetInputData(square(10.0));
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    radiosity->SetDetailDistance(detail);
+    radiosity->SetFarTerrainStride(4);
+    vtkNew<MessageCatcher> messages;
+    ASSERT_EQ(runPipeline(radiosity, messages), 1) << messages->Errors;
+    EXPECT_NE(messages->Warnings.find("FarTerrainStride 4 is ignored"), std::string::npos) << messages->Warnings;
+    EXPECT_NE(messages->Warnings.find("1 polygon(s)"), std::string::npos) << messages->Warnings;
+    auto* out = vtkDataSet::SafeDownCast(radiosity->GetOutput());
+    ASSERT_NE(out, nullptr);
+    vtkDataArray* skyIrradiance = out->GetPointData()->GetArray("SkyIrradiance");
+    ASSERT_NE(skyIrradiance, nullptr);
+    EXPECT_NEAR(skyIrradiance->GetComponent(0, 0), 100.0, 1.0); // open flat ground under the uniform sky
+  }
+}
+
 TEST(HostileRadiosity, SmallBoxOnHugeGroundGetsTheSameLightOnEveryWall)
 {
   // A 1 m cube on a 100 km square ground of 10 x 10 quads under a uniform sky: by
