@@ -135,8 +135,9 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   {
     if (const terralux::TerrainPatch* root = solver.terrainRoots()[input.terrain])
     {
-      const int nx = root->grid().postsX();
-      const int all[4] = { 0, nx - 1, 0, root->grid().postsY() - 1 };
+      const terralux::TerrainGrid& grid = solver.postGrid(*root);
+      const int nx = grid.postsX();
+      const int all[4] = { 0, nx - 1, 0, grid.postsY() - 1 };
       const int* posts = options.allPosts() ? all : options.posts;
       const std::size_t pieceX = static_cast<std::size_t>(posts[1] - posts[0] + 1);
       auto pointOf = [&](std::size_t post) {

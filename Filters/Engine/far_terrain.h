@@ -20,6 +20,11 @@ struct FarSight
   int stride = 1;
   double detailDistance = 0.0;
   bool active() const { return this->stride > 1 && this->detailDistance > 0.0; }
+  /// Whether it applies to `scene`: active, over a scene of one terrain alone.
+  bool appliesTo(const RadiosityScene& scene) const
+  {
+    return this->active() && scene.terrains.size() == 1 && scene.polygons.empty();
+  }
   bool operator==(const FarSight& other) const
   {
     return this->stride == other.stride && this->detailDistance == other.detailDistance;
@@ -31,7 +36,7 @@ class FarTerrain
 public:
   /// Every stride-th post of `fine` (stride >= 2), with its last row and column. A
   /// coarse cell is valid only where all the fine cells it spans are (no terrain is
-  /// made up over a hole), and it shares fine's origin.
+  /// made up over a hole), takes their mean materials, and shares fine's origin.
   FarTerrain(const TerrainGrid& fine, int stride);
 
   const TerrainGrid& grid() const { return this->Coarse; }
@@ -39,10 +44,15 @@ public:
   /// maps to the fine grid's leaves and posts.
   double fineU(double u) const { return fineParameter(this->ColumnPosts, u); }
   double fineV(double v) const { return fineParameter(this->RowPosts, v); }
+  /// The coarse grid's parameters of the fine grid's (u, v): where a fine post or hit
+  /// lies among the coarse grid's leaves.
+  double coarseU(double u) const { return coarseParameter(this->ColumnPosts, u); }
+  double coarseV(double v) const { return coarseParameter(this->RowPosts, v); }
 
 private:
   static std::vector<int> coarsePosts(int finePosts, int stride);
   static double fineParameter(const std::vector<int>& posts, double coarse);
+  static double coarseParameter(const std::vector<int>& posts, double fine);
 
   std::vector<int> ColumnPosts, RowPosts; // the fine post of each coarse column and row
   TerrainGrid Coarse;

@@ -1,6 +1,7 @@
 #include "final_gather.h"
 
 #include "angles.h"
+#include "far_terrain.h"
 #include "horizon_sky.h"
 #include "leaf_light.h"
 #include "sky_importance.h"
@@ -130,7 +131,11 @@ const PolygonElement* FinalGather::leafAt(const SurfaceHit& hit) const
   if (hit.terrain >= 0)
   {
     const auto t = static_cast<std::size_t>(hit.terrain);
-    return t < this->Terrains.size() && this->Terrains[t] ? this->Terrains[t]->leafHolding(hit.u, hit.v) : nullptr;
+    if (!(t < this->Terrains.size() && this->Terrains[t]))
+      return nullptr;
+    if (this->HierarchyTerrain)
+      return this->Terrains[t]->leafHolding(this->HierarchyTerrain->coarseU(hit.u), this->HierarchyTerrain->coarseV(hit.v));
+    return this->Terrains[t]->leafHolding(hit.u, hit.v);
   }
   const auto p = static_cast<std::size_t>(hit.polygon);
   return p < this->Polygons.size() && this->Polygons[p] ? this->Polygons[p]->leafHolding(hit.point) : nullptr;

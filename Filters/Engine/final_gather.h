@@ -13,6 +13,7 @@
 
 namespace terralux
 {
+class FarTerrain;
 class HElement;
 class HorizonSky;
 class LeafLight;
@@ -118,6 +119,9 @@ public:
   /// a process evaluating a piece of the terrain then needs its posts' values only
   /// within this distance of the piece (HeldPosts). 0: every hit reads them.
   void setDetailDistance(double metres) { this->DetailDistance = metres; }
+  /// The far terrain the hierarchy's terrain leaves are built on (null: the scene's
+  /// own grid): a hit's parameters, the scene grid's, map to its leaves.
+  void setHierarchyTerrain(const FarTerrain* terrain) { this->HierarchyTerrain = terrain; }
   /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
   /// at every hit; more (the sun positions of a day or a year, summed in one solve)
   /// would multiply the gather's rays, so a hit then takes one sun, chosen in
@@ -158,6 +162,7 @@ private:
   const PostSunlight* PostSuns = nullptr;
   const LeafLight* Leaves = nullptr;
   double DetailDistance = 0.0;
+  const FarTerrain* HierarchyTerrain = nullptr;
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };

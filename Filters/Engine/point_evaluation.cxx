@@ -146,8 +146,10 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // uses, so it keeps the estimate unbiased. Where the sky comes from rays instead
     // (scenes with buildings), a pilot stays: a leaf's few links miss a tree 20 m away
     // that hides 3 % of the sky, and 64 rays without one left those posts' sky 2-3 %
-    // off (house scene, 0.58 -> 0.33 % RMS with the pilot and skyMinimum).
-    if (leafLooksOpen(leaf) && this->Horizons)
+    // off (house scene, 0.58 -> 0.33 % RMS with the pilot and skyMinimum). A leaf of
+    // the far terrain (a hierarchy solved on it) is smoother than the posts it holds:
+    // its openness tells theirs too little (the fractal's sky 0.78 % RMS instead of 0.56).
+    if (leafLooksOpen(leaf) && this->Horizons && !this->HierarchyTerrain)
       budget.pilot = 0, budget.maximum = budget.minimum, budget.coarseHorizon = true;
     const Spectrum& sun = irradiance[SunLight];
     // Its rays start two more offsets above (three in all): on rough terrain the move
@@ -258,11 +260,11 @@ bool HierarchicalRadiosity::gathersAtPoints() const
 
 void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hornNormals)
 {
-  if (!this->gathersAtPoints() || !this->PostHorizons || &root.grid() != this->HeightFieldGrid)
+  if (!this->gathersAtPoints() || !this->PostHorizons || &this->postGrid(root) != this->HeightFieldGrid)
     return;
   this->Lattice.reset(); // its own posts gather from the leaves, with pilots
   this->Gather->setPostLattice(nullptr);
-  const TerrainGrid& grid = root.grid();
+  const TerrainGrid& grid = this->postGrid(root);
   // With a work split, each process holds the lattice within its posts' halo (the
   // detail distance's) of its window.
   auto lattice = std::make_unique<PostLattice>(
@@ -285,7 +287,7 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
 void HierarchicalRadiosity::gatherLatticePosts(
   const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const
 {
-  const TerrainGrid& grid = root.grid();
+  const TerrainGrid& grid = this->postGrid(root);
   const int step = lattice.step();
   tbb::parallel_for(0, (grid.postsY() - 1) / step + 1, [&](int lj) {
     const int j = lj * step;
@@ -293,7 +295,7 @@ void HierarchicalRadiosity::gatherLatticePosts(
     {
       if (!PostLattice::gathers(i, j, this->Split) || !lattice.gatheredInPass(i, j, firstPass))
         continue;
-      const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
+      const TerrainPatch* leaf = grid.postUsed(i, j) ? this->leafAtPost(root, i, j) : nullptr;
       if (!leaf)
         continue;
       const Vec3 normal = grid.normalAt(i, j, hornNormals);
@@ -329,7 +331,7 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
     auto& surface = static_cast<PolygonElement&>(*element);
     const auto* patch = dynamic_cast<const TerrainPatch*>(&surface);
     if (!surface.hasChildren() &&
-      !(patch && (!terrains || (this->PostSkies && &patch->grid() == this->HeightFieldGrid))))
+      !(patch && (!terrains || (this->PostSkies && this->HeightFieldGrid && patch->terrain() == 0))))
       leaves.push_back(&surface);
   }
   if (leaves.empty())

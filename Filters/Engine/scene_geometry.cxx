@@ -12,13 +12,17 @@ SceneGeometry::SceneGeometry(const RadiosityScene& scene, const FarSight& far)
   , Terrains(scene.terrains)
   , Far(far)
   , Rays(std::make_unique<Visibility>(scene, far))
-  , HierarchyRays(Rays->farTerrain() ? Rays->withoutFarTerrain() : nullptr)
   , Horizons(scene.terrains.size())
   , DenseHorizons(scene.terrains.size())
 {
 }
 
 SceneGeometry::~SceneGeometry() = default;
+
+const Visibility& SceneGeometry::hierarchyRays() const
+{
+  return this->Rays->farRays();
+}
 
 const HorizonMap& SceneGeometry::horizons(std::size_t index, bool dense, const WorkSplit* split)
 {

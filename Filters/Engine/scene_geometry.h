@@ -30,12 +30,13 @@ public:
   SceneGeometry(const SceneGeometry&) = delete;
   SceneGeometry& operator=(const SceneGeometry&) = delete;
 
-  /// The hierarchy's rays, between points of its surfaces: the full resolution everywhere.
-  const Visibility& rays() const { return this->HierarchyRays ? *this->HierarchyRays : *this->Rays; }
   /// The rays from the points the outputs read (their gathers, suns and skies): with
-  /// the far sight, the far terrain beyond the detail distance. One count of rays with
-  /// rays().
+  /// the far sight, the far terrain beyond the detail distance.
   const Visibility& pointRays() const { return *this->Rays; }
+  /// The hierarchy's rays, between points of its surfaces: with the far sight, the far
+  /// terrain alone, on which the hierarchy is then solved (one count of rays with
+  /// pointRays()); else the same as pointRays().
+  const Visibility& hierarchyRays() const;
 
   /// The horizons of the posts of terrain `index` (a height field alone in its scene),
   /// built on the first call (64 bytes a post) and kept; `dense`: toward 64 azimuths
@@ -55,7 +56,6 @@ private:
   std::vector<const TerrainGrid*> Terrains; // the grids rays and horizons are built on
   FarSight Far;
   std::unique_ptr<Visibility> Rays;
-  std::unique_ptr<Visibility> HierarchyRays; // Rays without their far terrain, if they have one
   std::vector<std::unique_ptr<HorizonMap>> Horizons, DenseHorizons; // per terrain, built on demand
   std::mutex HorizonsMutex;
 };

@@ -83,11 +83,16 @@ HierarchicalRadiosity::HierarchicalRadiosity(
     polygons.push_back(element);
     this->SceneArea += area;
   }
+  // With a far sight, the hierarchy is solved on the far terrain: light from surfaces
+  // varies slowly, and points gather near them at the full resolution.
+  this->PostGrids = scene.terrains;
+  if (options.farSight().appliesTo(scene))
+    this->HierarchyTerrain = std::make_unique<FarTerrain>(*scene.terrains.front(), options.farTerrainStride);
   for (std::size_t k = 0; k < scene.terrains.size(); ++k)
   {
     std::vector<TerrainPatch*> complete;
-    this->TerrainRoots.push_back(
-      TerrainPatch::buildTree(*this->Store, *scene.terrains[k], static_cast<int>(k), complete));
+    const TerrainGrid& grid = this->HierarchyTerrain ? this->HierarchyTerrain->grid() : *scene.terrains[k];
+    this->TerrainRoots.push_back(TerrainPatch::buildTree(*this->Store, grid, static_cast<int>(k), complete));
     for (TerrainPatch* patch : complete)
     {
       polygons.push_back(patch);
@@ -108,7 +113,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   const auto start = std::chrono::steady_clock::now();
   const bool reused = geometry && geometry->sameShape(scene, options.farSight());
   this->Geometry = reused ? std::move(geometry) : std::make_shared<SceneGeometry>(scene, options.farSight());
-  this->Rays = &this->Geometry->rays();
+  this->Rays = &this->Geometry->hierarchyRays();
   this->PointRays = &this->Geometry->pointRays();
   this->RaysBefore = this->Rays->raysCast();
   this->PointCount = scene.points.size();
@@ -116,6 +121,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(
     this->PointCount += static_cast<std::size_t>(terrain->postsX()) * terrain->postsY();
   this->Gather = std::make_unique<FinalGather>(*this->PointRays, this->Roots, this->TerrainRoots, this->Suns);
   this->Gather->setDetailDistance(options.gatherDetailDistance);
+  this->Gather->setHierarchyTerrain(this->HierarchyTerrain.get());
   this->HeightField = options.skyFromHorizons && scene.polygons.empty() &&
     std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
   if (this->HeightField && scene.terrains.size() == 1)
@@ -124,6 +130,23 @@ HierarchicalRadiosity::HierarchicalRadiosity(
 }
 
 HierarchicalRadiosity::~HierarchicalRadiosity() = default;
+
+const TerrainGrid& HierarchicalRadiosity::postGrid(const TerrainPatch& root) const
+{
+  return *this->PostGrids[static_cast<std::size_t>(root.terrain())];
+}
+
+const TerrainPatch* HierarchicalRadiosity::leafAtPost(const TerrainPatch& root, int i, int j) const
+{
+  if (!this->HierarchyTerrain)
+    return root.mostLitLeafAt(i, j);
+  // A post of the far terrain's takes the most lit leaf around it, as there; others
+  // lie inside one of its cells.
+  const double u = this->HierarchyTerrain->coarseU(i), v = this->HierarchyTerrain->coarseV(j);
+  if (u == std::floor(u) && v == std::floor(v))
+    return root.mostLitLeafAt(static_cast<int>(u), static_cast<int>(v));
+  return root.leafHolding(u, v);
+}
 
 bool operator==(const RadiosityOptions& a, const RadiosityOptions& b)
 {
@@ -150,7 +173,7 @@ bool HierarchicalRadiosity::serves(const RadiosityScene& scene, const RadiosityO
       return false;
   }
   for (std::size_t k = 0; k < scene.terrains.size(); ++k)
-    if (this->TerrainRoots[k] && !this->TerrainRoots[k]->grid().sameMaterials(*scene.terrains[k]))
+    if (!this->PostGrids[k]->sameMaterials(*scene.terrains[k]))
       return false;
   return this->Geometry->sameShape(scene, options.farSight());
 }

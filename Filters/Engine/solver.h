@@ -197,6 +197,15 @@ public:
   const std::vector<PolygonElement*>& polygonRoots() const { return this->Roots; }
   /// Root of each terrain's patch tree (null for a terrain without a valid cell).
   const std::vector<TerrainPatch*>& terrainRoots() const { return this->TerrainRoots; }
+  /// The grid of posts of a terrain root, whose posts the outputs read: the scene's
+  /// grid, also where the hierarchy is solved on the far terrain (root.grid()).
+  const TerrainGrid& postGrid(const TerrainPatch& root) const;
+  /// The leaf post (i, j) of postGrid(root) takes its light from: of the leaves around
+  /// it, the most lit (TerrainPatch::mostLitLeafAt); null where no cell is valid.
+  const TerrainPatch* leafAtPost(const TerrainPatch& root, int i, int j) const;
+  /// With a far sight, the far terrain the hierarchy is built on (its grid is the
+  /// roots' grid(), its maps lead between that and postGrid's parameters); else null.
+  const FarTerrain* hierarchyTerrain() const { return this->HierarchyTerrain.get(); }
   /// Every surface and cluster with its links, for the links output (senders may be
   /// sources too).
   const ElementStore& elements() const { return *this->Store; }
@@ -355,6 +364,8 @@ private:
   std::unique_ptr<LeafLight> Leaves;             // what leaves receive, gathered (gatherLeaves)
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
+  std::vector<const TerrainGrid*> PostGrids;    // the scene's terrains: what outputs read
+  std::unique_ptr<FarTerrain> HierarchyTerrain; // with a far sight: the grid the hierarchy is built on
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on
   Cluster* RootCluster = nullptr;
   std::vector<HElement*> PointSuns; // every sun added: direct sunlight at points

@@ -53,6 +53,8 @@ public:
   void setUniformMaterial(const Spectrum& reflectance, const Spectrum& emission);
   void setCellMaterial(int i, int j, const Spectrum& reflectance, const Spectrum& emission);
   Spectrum cellReflectance(int i, int j) const;
+  /// Whether materials were set per cell (else every cell has the uniform ones).
+  bool hasCellMaterials() const { return !this->CellReflectance.empty(); }
   Spectrum cellEmission(int i, int j) const;
 
   using Triangle = std::array<Vec3, 3>;

@@ -1,6 +1,7 @@
 // Per-post values of a terrain (see point_values.h).
 #include "point_values.h"
 
+#include "far_terrain.h"
 #include "solver.h"
 #include "terrain_grid.h"
 #include "terrain_mesh.h"
@@ -16,7 +17,10 @@ namespace terralux
 void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& root, const int posts[4],
   const PointEvaluation& how, const std::function<void(std::size_t, const PointValues&)>& sink)
 {
-  const TerrainGrid& grid = root.grid();
+  // Posts of the scene's grid; the hierarchy's may be the far terrain's (its
+  // parameters then mapped between the two).
+  const TerrainGrid& grid = solver.postGrid(root);
+  const FarTerrain* far = solver.hierarchyTerrain();
   const int nx = grid.postsX(), ny = grid.postsY();
   const int i0 = std::max(0, posts[0]), i1 = std::min(nx - 1, posts[1]);
   const int j0 = std::max(0, posts[2]), j1 = std::min(ny - 1, posts[3]);
@@ -30,7 +34,7 @@ void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& 
     tbb::parallel_for(j0, j1 + 1, [&](int j) {
       for (int i = i0; i <= i1; ++i)
       {
-        const TerrainPatch* leaf = grid.postUsed(i, j) ? root.mostLitLeafAt(i, j) : nullptr;
+        const TerrainPatch* leaf = grid.postUsed(i, j) ? solver.leafAtPost(root, i, j) : nullptr;
         if (leaf)
           sink(index(i, j),
             PointValues::atPoint(solver.irradianceAt(*leaf, grid.post(i, j), grid.normalAt(i, j, how.hornNormals)), *leaf));
@@ -47,15 +51,19 @@ void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& 
     double flat[PointValues::flatComponents];
     const TerrainPatch& leaf = *mesh.leaves()[k];
     const ParameterRange& r = leaf.range();
+    // The leaf's range in posts of the scene's grid.
+    const double u0 = far ? far->fineU(r.u0) : r.u0, u1 = far ? far->fineU(r.u1) : r.u1;
+    const double v0 = far ? far->fineV(r.v0) : r.v0, v1 = far ? far->fineV(r.v1) : r.v1;
     // A post on the range's border is written by the leaf that leafHolding finds for it,
     // so each post is written once (values agree anyway: the mesh is continuous).
-    for (int j = std::max(j0, static_cast<int>(std::ceil(r.v0))); j <= std::min(j1, static_cast<int>(std::floor(r.v1))); ++j)
-      for (int i = std::max(i0, static_cast<int>(std::ceil(r.u0))); i <= std::min(i1, static_cast<int>(std::floor(r.u1))); ++i)
+    for (int j = std::max(j0, static_cast<int>(std::ceil(v0))); j <= std::min(j1, static_cast<int>(std::floor(v1))); ++j)
+      for (int i = std::max(i0, static_cast<int>(std::ceil(u0))); i <= std::min(i1, static_cast<int>(std::floor(u1))); ++i)
       {
-        const bool border = i == r.u0 || i == r.u1 || j == r.v0 || j == r.v1;
-        if (!grid.postUsed(i, j) || (border && root.leafHolding(i, j) != &leaf))
+        const double leafU = far ? far->coarseU(i) : i, leafV = far ? far->coarseV(j) : j;
+        const bool border = leafU <= r.u0 || leafU >= r.u1 || leafV <= r.v0 || leafV >= r.v1;
+        if (!grid.postUsed(i, j) || (border && root.leafHolding(leafU, leafV) != &leaf))
           continue;
-        mesh.interpolate(k, vertexValues, PointValues::flatComponents, i, j, flat);
+        mesh.interpolate(k, vertexValues, PointValues::flatComponents, leafU, leafV, flat);
         PointValues v = PointValues::unflatten(flat);
         v.irradiance[SunLight] = solver.directSunAt(grid.post(i, j), grid.normalAt(i, j, how.hornNormals), &v.sunlitHours);
         v.radiosity = radiosityOf(leaf.emission(), leaf.reflectance(), v.globalIrradiance());

@@ -63,23 +63,6 @@ Visibility::Visibility(const FarTerrain& far, double sceneOffset, std::shared_pt
   this->Offset = sceneOffset; // the fine scene's: the far grid's box is the same but for a few posts
 }
 
-Visibility::Visibility(const Visibility& whole, std::shared_ptr<RayCounters> counters)
-  : Origins(whole.Origins)
-  , TrianglePolygon(whole.TrianglePolygon)
-  , Device(whole.Device)
-  , Scene(whole.Scene)
-  , Offset(whole.Offset)
-  , Centre(whole.Centre)
-  , Rays(std::move(counters))
-{
-  rtcRetainScene(this->Scene);
-}
-
-std::unique_ptr<Visibility> Visibility::withoutFarTerrain() const
-{
-  return std::unique_ptr<Visibility>(new Visibility(*this, this->Rays));
-}
-
 void Visibility::build(const RadiosityScene& scene)
 {
   this->Device = processDevice();

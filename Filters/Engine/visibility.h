@@ -60,13 +60,9 @@ public:
   /// The first surface the ray from surface point a (unit normal aNormal) along unit
   /// direction d meets, from a lifted by offset() along aNormal; false when it escapes.
   bool firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, SurfaceHit& hit) const;
-  /// The same scene at full resolution everywhere, sharing this one's Embree scene and
-  /// its count of rays: for rays between points of the hierarchy's surfaces, which lie
-  /// on the full-resolution terrain (under the far terrain where that spans a hollow,
-  /// so that a far stretch would stop short of them).
-  std::unique_ptr<Visibility> withoutFarTerrain() const;
-  /// The rays from a point on the far terrain (a far hit's shadow rays): that terrain
-  /// alone, whose coarse surface the point lies on. Without one, these rays.
+  /// The rays from a point on the far terrain (a far hit's shadow rays, and the
+  /// hierarchy's, which is solved on it): that terrain alone, whose coarse surface the
+  /// point lies on; one count of rays with these. Without one, these rays.
   const Visibility& farRays() const { return this->Far ? *this->Far : *this; }
   /// What the far terrain is, or none.
   const FarTerrain* farTerrain() const { return this->Coarse.get(); }
@@ -84,7 +80,6 @@ private:
   /// parameters.
   struct RayCounters;
   Visibility(const FarTerrain& far, double sceneOffset, std::shared_ptr<RayCounters> counters);
-  Visibility(const Visibility& whole, std::shared_ptr<RayCounters> counters); // withoutFarTerrain
   void build(const RadiosityScene& scene);
   /// Where a ray along unit d leaves its origin's cylinder of detail (infinity
   /// without a far terrain, or straight up or down).
@@ -121,7 +116,7 @@ private:
   const FarTerrain* MapsTo = nullptr;  // in the far terrain's rays: the map of its hits
   Vec3 Centre{ 0.0 }; // Embree's float vertices are stored relative to it
   // One counter per thread: a shared atomic would bounce between cores on every ray.
-  // Shared with the far terrain's rays and the view without it: one count of all.
+  // Shared with the far terrain's rays: one count of all.
   std::shared_ptr<RayCounters> Rays;
 };
 } // namespace terralux
