@@ -331,7 +331,7 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
     auto& surface = static_cast<PolygonElement&>(*element);
     const auto* patch = dynamic_cast<const TerrainPatch*>(&surface);
     if (!surface.hasChildren() &&
-      !(patch && (!terrains || (this->PostSkies && this->HeightFieldGrid && patch->terrain() == 0))))
+      !(patch && (!terrains || this->HierarchyTerrain || (this->PostSkies && this->HeightFieldGrid && patch->terrain() == 0))))
       leaves.push_back(&surface);
   }
   if (leaves.empty())
