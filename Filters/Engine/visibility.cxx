@@ -45,7 +45,7 @@ Visibility::Visibility(const RadiosityScene& scene, const FarSight& far)
   : Rays(std::make_shared<RayCounters>())
 {
   this->build(scene);
-  if (far.active() && scene.terrains.size() == 1 && scene.polygons.empty())
+  if (far.appliesTo(scene))
   {
     this->Coarse = std::make_unique<FarTerrain>(*scene.terrains.front(), far.stride);
     this->Far = std::unique_ptr<Visibility>(new Visibility(*this->Coarse, this->Offset, this->Rays));
@@ -391,8 +391,7 @@ bool Visibility::firstHit(const Vec3& a, const Vec3& aNormal, const Vec3& d, Sur
   const Vec3 origin = a + this->Offset * aNormal;
   const double detail = this->detailEnd(d);
   return this->intersect(origin, d, 0.0, detail, hit) ||
-    (detail < std::numeric_limits<double>::infinity() &&
-      this->farHit(origin, d, detail, hit));
+    (detail < std::numeric_limits<double>::infinity() && this->farHit(origin, d, detail, hit));
 }
 
 std::uint64_t Visibility::seedOf(const Vec3& p) const
