@@ -43,10 +43,9 @@ FarTerrain::FarTerrain(const TerrainGrid& fine, int stride)
   for (int l = 0; l < ny; ++l)
     for (int k = 0; k < nx; ++k)
       this->Coarse.setPost(k, l, fine.post(this->ColumnPosts[k], this->RowPosts[l]));
-  this->Coarse.setUniformMaterial(fine.cellReflectance(0, 0), fine.cellEmission(0, 0));
   const bool uniform = !fine.hasCellMaterials();
-  if (!uniform)
-    this->Coarse.setUniformMaterial(Spectrum{}, Spectrum{});
+  if (uniform)
+    this->Coarse.setUniformMaterial(fine.cellReflectance(0, 0), fine.cellEmission(0, 0));
   for (int l = 0; l + 1 < ny; ++l)
     for (int k = 0; k + 1 < nx; ++k)
     {

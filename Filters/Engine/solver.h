@@ -68,8 +68,9 @@ struct RadiosityOptions
   /// > 1, with a gatherDetailDistance, in a scene of one terrain alone: beyond that
   /// distance from its origin a ray from a point the outputs read (its gather, sun and
   /// sky) sees the terrain's every farTerrainStride-th post (FarTerrain), as horizon
-  /// tools see far terrain. The hierarchy's own rays keep the full resolution. 1: the
-  /// full resolution everywhere.
+  /// tools see far terrain; the hierarchy is solved on those posts alone (its rays see
+  /// them alone), while every post of the scene's grid is still evaluated. 1: the full
+  /// resolution everywhere.
   int farTerrainStride = 1;
   FarSight farSight() const { return FarSight{ this->farTerrainStride, this->gatherDetailDistance }; }
 };

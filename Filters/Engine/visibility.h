@@ -76,9 +76,9 @@ public:
   std::uint64_t raysCast() const;
 
 private:
+  struct RayCounters;
   /// The far terrain's own rays: its grid alone, hits mapped to the fine grid's
   /// parameters.
-  struct RayCounters;
   Visibility(const FarTerrain& far, double sceneOffset, std::shared_ptr<RayCounters> counters);
   void build(const RadiosityScene& scene);
   /// Where a ray along unit d leaves its origin's cylinder of detail (infinity
