@@ -26,10 +26,39 @@ double FarTerrain::fineParameter(const std::vector<int>& posts, double coarse)
 
 double FarTerrain::coarseParameter(const std::vector<int>& posts, double fine)
 {
-  // Every cell but the last spans posts[1] fine cells.
+  // Every cell but the last spans posts[1] - posts[0] fine cells.
   const int cells = static_cast<int>(posts.size()) - 1;
-  const int k = std::clamp(static_cast<int>(std::floor(fine / posts[1])), 0, cells - 1);
+  const int k = std::clamp(static_cast<int>(std::floor((fine - posts[0]) / (posts[1] - posts[0]))), 0, cells - 1);
   return k + std::clamp((fine - posts[k]) / (posts[k + 1] - posts[k]), 0.0, 1.0);
+}
+
+namespace
+{
+std::vector<int> givenPosts(int coarsePosts, int stride, int firstFine)
+{
+  std::vector<int> posts(static_cast<std::size_t>(coarsePosts));
+  for (int k = 0; k < coarsePosts; ++k)
+    posts[static_cast<std::size_t>(k)] = k * stride - firstFine;
+  return posts;
+}
+} // namespace
+
+FarTerrain::FarTerrain(const GivenFarTerrain& given)
+  : ColumnPosts(givenPosts(given.grid->postsX(), given.stride, given.i0))
+  , RowPosts(givenPosts(given.grid->postsY(), given.stride, given.j0))
+  , Coarse(*given.grid)
+{
+  if (given.stride < 2 || given.grid->postsX() < 2 || given.grid->postsY() < 2)
+    throw Error("a given far terrain needs a stride of at least 2 and at least 2 x 2 posts");
+}
+
+std::unique_ptr<FarTerrain> FarTerrain::of(const RadiosityScene& scene, const FarSight& sight)
+{
+  if (!sight.appliesTo(scene))
+    return nullptr;
+  if (scene.farTerrain.grid)
+    return std::make_unique<FarTerrain>(scene.farTerrain);
+  return std::make_unique<FarTerrain>(*scene.terrains.front(), sight.stride);
 }
 
 FarTerrain::FarTerrain(const TerrainGrid& fine, int stride)

@@ -9,6 +9,7 @@
 
 #include "terrain_grid.h"
 
+#include <memory>
 #include <vector>
 
 namespace terralux
@@ -20,10 +21,12 @@ struct FarSight
   int stride = 1;
   double detailDistance = 0.0;
   bool active() const { return this->stride > 1 && this->detailDistance > 0.0; }
-  /// Whether it applies to `scene`: active, over a scene of one terrain alone.
+  /// Whether it applies to `scene`: active (or the scene gives its far terrain, with a
+  /// detail distance), over a scene of one terrain alone.
   bool appliesTo(const RadiosityScene& scene) const
   {
-    return this->active() && scene.terrains.size() == 1 && scene.polygons.empty();
+    const bool given = scene.farTerrain.grid && this->detailDistance > 0.0;
+    return (this->active() || given) && scene.terrains.size() == 1 && scene.polygons.empty();
   }
   bool operator==(const FarSight& other) const
   {
@@ -38,6 +41,13 @@ public:
   /// coarse cell is valid only where all the fine cells it spans are (no terrain is
   /// made up over a hole), takes their mean materials, and shares fine's origin.
   FarTerrain(const TerrainGrid& fine, int stride);
+  /// A far terrain given whole (a copy of given.grid, with its own materials) for a
+  /// fine grid that is a window of the full one (GivenFarTerrain). Fine posts past its
+  /// last row or column (a strip narrower than the stride) map to its edge.
+  explicit FarTerrain(const GivenFarTerrain& given);
+  /// The far terrain of `scene` (FarSight::appliesTo): the given one, or built from
+  /// its terrain.
+  static std::unique_ptr<FarTerrain> of(const RadiosityScene& scene, const FarSight& sight);
 
   const TerrainGrid& grid() const { return this->Coarse; }
   /// The fine grid's parameters of the coarse grid's (u, v): a hit on the far terrain

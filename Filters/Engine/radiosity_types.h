@@ -94,6 +94,18 @@ struct ScenePolygon
 
 class TerrainGrid;
 
+/// A terrain's far terrain given whole, for a scene whose one terrain is a window of
+/// the full-resolution grid (an MPI process's piece and its halo): the far terrain's
+/// post (k, l) is the full grid's post (k stride, l stride), the window's post (0, 0)
+/// the full grid's (i0, j0). Rays beyond the detail distance and the hierarchy then
+/// see the same terrain on every process, whatever window it holds.
+struct GivenFarTerrain
+{
+  const TerrainGrid* grid = nullptr;
+  int stride = 1;
+  int i0 = 0, j0 = 0;
+};
+
 /// Everything the engine needs about the geometry: polygons, and terrain grids that
 /// enter the hierarchy as terrain patches (owned by the caller, who keeps them alive
 /// while the solver exists).
@@ -102,5 +114,6 @@ struct RadiosityScene
   std::vector<Vec3> points;
   std::vector<ScenePolygon> polygons;
   std::vector<const TerrainGrid*> terrains;
+  GivenFarTerrain farTerrain; ///< optional: with a detail distance, see FarSight
 };
 } // namespace terralux

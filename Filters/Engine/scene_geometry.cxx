@@ -11,6 +11,7 @@ SceneGeometry::SceneGeometry(const RadiosityScene& scene, const FarSight& far)
   , Polygons(scene.polygons)
   , Terrains(scene.terrains)
   , Far(far)
+  , GivenFar(scene.farTerrain)
   , Rays(std::make_unique<Visibility>(scene, far))
   , Horizons(scene.terrains.size())
   , DenseHorizons(scene.terrains.size())
@@ -52,6 +53,9 @@ bool SceneGeometry::sameShape(const RadiosityScene& scene, const FarSight& far) 
   for (std::size_t k = 0; k < scene.terrains.size(); ++k)
     if (!scene.terrains[k]->sameSurface(*this->Terrains[k]))
       return false;
-  return true;
+  const GivenFarTerrain &a = scene.farTerrain, &b = this->GivenFar;
+  if (!a.grid || !b.grid)
+    return !a.grid && !b.grid;
+  return a.stride == b.stride && a.i0 == b.i0 && a.j0 == b.j0 && a.grid->sameSurface(*b.grid);
 }
 } // namespace terralux

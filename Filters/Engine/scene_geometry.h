@@ -55,6 +55,7 @@ private:
   std::vector<ScenePolygon> Polygons;       // (their vertex indices count)
   std::vector<const TerrainGrid*> Terrains; // the grids rays and horizons are built on
   FarSight Far;
+  GivenFarTerrain GivenFar; // its grid, like Terrains, outlives this
   std::unique_ptr<Visibility> Rays;
   std::vector<std::unique_ptr<HorizonMap>> Horizons, DenseHorizons; // per terrain, built on demand
   std::mutex HorizonsMutex;

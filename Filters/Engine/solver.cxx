@@ -86,8 +86,8 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   // With a far sight, the hierarchy is solved on the far terrain: light from surfaces
   // varies slowly, and points gather near them at the full resolution.
   this->PostGrids = scene.terrains;
-  if (options.farSight().appliesTo(scene))
-    this->HierarchyTerrain = std::make_unique<FarTerrain>(*scene.terrains.front(), options.farTerrainStride);
+  this->HierarchyTerrain = FarTerrain::of(scene, options.farSight());
+  this->Window = this->HierarchyTerrain && scene.farTerrain.grid;
   for (std::size_t k = 0; k < scene.terrains.size(); ++k)
   {
     std::vector<TerrainPatch*> complete;
@@ -122,8 +122,11 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   this->Gather = std::make_unique<FinalGather>(*this->PointRays, this->Roots, this->TerrainRoots, this->Suns);
   this->Gather->setDetailDistance(options.gatherDetailDistance);
   this->Gather->setHierarchyTerrain(this->HierarchyTerrain.get());
+  // A window decides by the far terrain, the same on every process.
   this->HeightField = options.skyFromHorizons && scene.polygons.empty() &&
-    std::all_of(scene.terrains.begin(), scene.terrains.end(), [](const TerrainGrid* t) { return t->facesUp(); });
+    (this->Window ? this->HierarchyTerrain->grid().facesUp()
+                  : std::all_of(scene.terrains.begin(), scene.terrains.end(),
+                      [](const TerrainGrid* t) { return t->facesUp(); }));
   if (this->HeightField && scene.terrains.size() == 1)
     this->HeightFieldGrid = scene.terrains.front();
   this->Stats.secondsVisibilityBuild = reused ? 0.0 : secondsSince(start);
@@ -265,8 +268,9 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   if (!this->Horizons || !this->HeightFieldGrid || this->PostSkies)
     return;
   // Beyond the map's memory the posts keep the rays' horizons, slower but within the
-  // memory the rest of the solve needs.
-  if (!HorizonMap::fits(*this->HeightFieldGrid))
+  // memory the rest of the solve needs; so do a window's, whose map would end at its
+  // edges.
+  if (this->Window || !HorizonMap::fits(*this->HeightFieldGrid))
     return;
   const auto start = std::chrono::steady_clock::now();
   // The one terrain's horizons: built by the first solve over this geometry, reused by
@@ -303,7 +307,7 @@ void HierarchicalRadiosity::findSunHorizons()
   if (!grid || this->PointSuns.empty())
     return;
   const HorizonMap* map = this->PostHorizons;
-  if (!map && this->PointSuns.size() >= sunsForHorizonMap && HorizonMap::fits(*grid))
+  if (!map && !this->Window && this->PointSuns.size() >= sunsForHorizonMap && HorizonMap::fits(*grid))
   {
     const auto start = std::chrono::steady_clock::now();
     map = &this->Geometry->horizons(0, this->wantsDenseHorizons(), this->Split);

@@ -174,7 +174,7 @@ public:
   /// process must then make these calls alike. A process whose share throws makes all
   /// of them throw (WorkSplit::partThenShare), none is left waiting. Null (the
   /// default): this one alone.
-  void setWorkSplit(const WorkSplit* split) { this->Split = split; }
+  void setWorkSplit(const WorkSplit* split) { this->Split = this->Window ? nullptr : split; } // a window: alone
   static constexpr std::size_t sunsForHorizonMap = 48;
   /// From this many suns on (a few months of hours), the map is dense (64 azimuths):
   /// at 1025^2 its sweep and the posts' skies take 5.7 s instead of 2.9 s, and the suns
@@ -368,6 +368,7 @@ private:
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<const TerrainGrid*> PostGrids;    // the scene's terrains: what outputs read
+  bool Window = false; // the terrain is a window of a grid whose far terrain is given (no horizon map)
   std::unique_ptr<FarTerrain> HierarchyTerrain; // with a far sight: the grid the hierarchy is built on
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on
   Cluster* RootCluster = nullptr;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -30,6 +31,47 @@ std::uint64_t Visibility::raysCast() const
 
 namespace
 {
+// Ray ends are pulled in by 1e-5 of the scene's bounding diagonal.
+double offsetOf(const Vec3& low, const Vec3& high)
+{
+  return std::max(1e-9, 1e-5 * glm::length(high - low));
+}
+
+// The parameters (fu, fv) within cell (i, j) of a point on (or within rounding of) its
+// lower or upper triangle (TerrainGrid::cellTriangles), by least squares in 3-D: the
+// two triangles agree on their shared diagonal, and neighbouring cells on their edge.
+std::array<double, 2> cellParameters(
+  const TerrainGrid& terrain, int i, int j, const Vec3& origin, const Vec3& d, const Vec3& hitPoint, bool upper)
+{
+  // Lower: p00 + fu (p10 - p00) + fv (p01 - p00); upper: p11 + (1 - fu)(p01 - p11)
+  // + (1 - fv)(p10 - p11).
+  const Vec3 base = upper ? terrain.post(i + 1, j + 1) : terrain.post(i, j);
+  const Vec3 a = upper ? terrain.post(i, j + 1) - base : terrain.post(i + 1, j) - base;
+  const Vec3 b = upper ? terrain.post(i + 1, j) - base : terrain.post(i, j + 1) - base;
+  // Where the ray meets the triangle's plane, in double (Embree's float distance
+  // leaves the point 1e-7 of the ray's length off the plane); the hit point itself
+  // for rays that graze it.
+  const Vec3 normal = glm::cross(a, b);
+  const double across = glm::dot(normal, d);
+  const double length = glm::dot(normal, base - origin) / across;
+  const Vec3 point = std::abs(across) > 1e-3 * glm::length(normal) && std::isfinite(length) ? origin + length * d : hitPoint;
+  const Vec3 r = point - base;
+  const double aa = glm::dot(a, a), ab = glm::dot(a, b), bb = glm::dot(b, b);
+  const double ra = glm::dot(r, a), rb = glm::dot(r, b);
+  const double det = aa * bb - ab * ab;
+  if (!(det > 0.0))
+    return { 0.0, 0.0 };
+  const double x = (ra * bb - rb * ab) / det, y = (rb * aa - ra * ab) / det;
+  // Upper: x runs along -u from p11, y along -v.
+  return upper ? std::array<double, 2>{ 1.0 - x, 1.0 - y } : std::array<double, 2>{ x, y };
+}
+
+double offsetFor(const TerrainGrid& terrain)
+{
+  const TerrainRangeSummary all = terrain.summarize(0, 0, terrain.cellsX(), terrain.cellsY());
+  return all.validCells > 0 ? offsetOf(all.low, all.high) : 1e-9;
+}
+
 // One Embree device for the process, created on first use and never released. A
 // Visibility may outlive main (a filter keeping its geometry, destroyed with ParaView's
 // process module among the static destructors at exit); releasing a device then waits
@@ -45,9 +87,13 @@ Visibility::Visibility(const RadiosityScene& scene, const FarSight& far)
   : Rays(std::make_shared<RayCounters>())
 {
   this->build(scene);
-  if (far.appliesTo(scene))
+  this->Coarse = FarTerrain::of(scene, far);
+  if (this->Coarse)
   {
-    this->Coarse = std::make_unique<FarTerrain>(*scene.terrains.front(), far.stride);
+    // A window of the grid takes its ray offset from the far terrain, the whole grid's
+    // box: every process's rays then start alike, whatever window it holds.
+    if (scene.farTerrain.grid)
+      this->Offset = offsetFor(this->Coarse->grid());
     this->Far = std::unique_ptr<Visibility>(new Visibility(*this->Coarse, this->Offset, this->Rays));
     this->DetailDistance = far.detailDistance;
   }
@@ -70,6 +116,7 @@ void Visibility::build(const RadiosityScene& scene)
   {
     throw Error("Embree could not create a device");
   }
+  this->Grids = scene.terrains;
   this->Scene = rtcNewScene(this->Device);
   rtcSetSceneBuildQuality(this->Scene, RTC_BUILD_QUALITY_HIGH);
   // Watertight intersection: rays must not slip between triangles that share an edge.
@@ -92,7 +139,7 @@ void Visibility::build(const RadiosityScene& scene)
       high = glm::max(high, all.high);
     }
   }
-  this->Offset = std::max(1e-9, 1e-5 * glm::length(high - low));
+  this->Offset = offsetOf(low, high);
   this->Centre = scene.terrains.empty() ? 0.5 * (low + high) : scene.terrains.front()->origin();
   for (std::size_t t = 0; t < scene.terrains.size(); ++t)
   {
@@ -327,12 +374,21 @@ bool Visibility::intersect(const Vec3& origin, const Vec3& d, double tnear, doub
     hit.normal = ng / length;
   if (source.terrain >= 0)
   {
-    // Grid u, v run over [0, 1] across the whole grid of posts.
+    // Grid u, v run over [0, 1] across the whole Embree grid, in float: they pick the
+    // cell, and the parameters within it are found again in double from the hit point,
+    // so that they do not depend on how the valid cells were cut into grids (a
+    // window's cut differs from the whole grid's) nor lose precision on wide ones.
     const auto [i0, j0] = source.gridStarts[query.hit.primID];
     const auto [cellsU, cellsV] = source.gridSizes[query.hit.primID];
     hit.terrain = source.terrain;
-    hit.u = i0 + std::clamp(static_cast<double>(query.hit.u), 0.0, 1.0) * cellsU;
-    hit.v = j0 + std::clamp(static_cast<double>(query.hit.v), 0.0, 1.0) * cellsV;
+    const double u = std::clamp(static_cast<double>(query.hit.u), 0.0, 1.0) * cellsU;
+    const double v = std::clamp(static_cast<double>(query.hit.v), 0.0, 1.0) * cellsV;
+    const int ci = std::min(static_cast<int>(u), cellsU - 1), cj = std::min(static_cast<int>(v), cellsV - 1);
+    const std::array<double, 2> within =
+      cellParameters(*this->Grids[static_cast<std::size_t>(source.terrain)], i0 + ci, j0 + cj, origin, d,
+        hit.point, (u - ci) + (v - cj) > 1.0);
+    hit.u = i0 + std::clamp(ci + within[0], 0.0, static_cast<double>(cellsU));
+    hit.v = j0 + std::clamp(cj + within[1], 0.0, static_cast<double>(cellsV));
     if (this->MapsTo)
     {
       hit.u = this->MapsTo->fineU(hit.u);

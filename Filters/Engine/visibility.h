@@ -105,6 +105,7 @@ private:
     std::vector<std::pair<int, int>> gridSizes;  // (cells in u, cells in v) per grid
   };
   std::vector<GeometryOrigin> Origins;
+  std::vector<const TerrainGrid*> Grids; // the terrains, by index (hits' parameters are found on them)
   std::vector<int> TrianglePolygon;
 
   RTCDeviceTy* Device = nullptr;
