@@ -18,15 +18,20 @@
 #include "vtkStructuredGrid.h"
 #include "vtkTerraLuxFieldData.h"
 #include "vtkTerrainPieces.h"
+#include "vtkTerrainSource.h"
 
 #include "error.h"
 #include "finite_parameters.h"
+#include "held_posts.h"
+#include "post_lattice.h"
 #include "scene_geometry.h"
 #include "solver.h"
 #include "visibility.h"
 #include "work_split.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <string>
 #include <vector>
@@ -124,7 +129,14 @@ void addPointArrays(vtkInformationVector* geometry, const terralux::Hierarchical
     // the piece's memory (each rank's share of the whole grid's).
     const bool cropFirst = pieceExtent && scene.Inputs[0].terrain >= 0;
     if (pieceExtent)
-      std::copy(pieceExtent, pieceExtent + 4, pointOptions.posts);
+    {
+      // The piece's posts in the input's grid (a window of the whole, with a far terrain).
+      int extent[6] = { 0, 0, 0, 0, 0, 0 };
+      if (auto* grid = vtkStructuredGrid::SafeDownCast(scene.Inputs[0].data))
+        grid->GetExtent(extent);
+      for (int k = 0; k < 4; ++k)
+        pointOptions.posts[k] = pieceExtent[k] - extent[k - k % 2];
+    }
     if (cropFirst)
       vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), pieceExtent);
     pointOptions.croppedToPosts = cropFirst;
@@ -189,8 +201,37 @@ vtkHierarchicalRadiosity::vtkHierarchicalRadiosity()
   , NumberOfBands(1)
   , PostNormals(AREA_WEIGHTED_NORMALS)
 {
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(3);
+}
+
+//------------------------------------------------------------------------------
+void vtkHierarchicalRadiosity::SetFarTerrainConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(this->FarTerrainPort(), output);
+}
+
+//------------------------------------------------------------------------------
+void vtkHierarchicalRadiosity::SetFarTerrainData(vtkStructuredGrid* far)
+{
+  this->SetInputDataObject(this->FarTerrainPort(), far);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHierarchicalRadiosity::UsesFarTerrainInput(vtkInformationVector** inputVector)
+{
+  return this->DetailDistance > 0.0 && inputVector[this->FarTerrainPort()]->GetNumberOfInformationObjects() == 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkHierarchicalRadiosity::WindowHalo(double postSpacing) const
+{
+  // Every post of the piece reads the lattice's posts within 2 lattice steps, and its
+  // gather rays' hits within DetailDistance read the lattice there; a lattice post's
+  // value needs the terrain within twice DetailDistance of it (its rays, and its hits'
+  // rays): three DetailDistances and the lattice's steps, a cell and a post of margin.
+  const double posts = std::ceil(3.0 * this->DetailDistance / postSpacing);
+  return posts > 1e8 ? -1 : static_cast<int>(posts) + 2 * terralux::PostLattice::defaultStep + 3;
 }
 
 //------------------------------------------------------------------------------
@@ -201,6 +242,12 @@ vtkHierarchicalRadiosity::~vtkHierarchicalRadiosity()
 //------------------------------------------------------------------------------
 int vtkHierarchicalRadiosity::FillInputPortInformation(int port, vtkInformation* info)
 {
+  if (port == this->FarTerrainPort())
+  {
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkStructuredGrid");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   if (port == 0)
   {
     info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
@@ -288,12 +335,42 @@ int vtkHierarchicalRadiosity::RequestInformation(
 
 //------------------------------------------------------------------------------
 int vtkHierarchicalRadiosity::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // The whole scene and whole sky are needed whatever piece is asked of output 0:
   // every piece solves the same scene (the same hierarchy, deterministically) and
   // evaluates its own posts.
   vtkTerraLuxFieldData::RequestWholeInputs(inputVector, this->GetNumberOfInputPorts());
+  // With a far terrain, a terrain's piece needs the full resolution only within its
+  // halo (WindowHalo): the piece grown by it, from a multiple of the lattice's cell
+  // (the window's lattice is the whole grid's), is what is asked for.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo =
+    inputVector[0]->GetNumberOfInformationObjects() == 1 ? inputVector[0]->GetInformationObject(0) : nullptr;
+  if (!this->UsesFarTerrainInput(inputVector) || !inInfo || !inInfo->Has(vtkTerrainSource::POST_SPACING()) ||
+    !inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()) ||
+    !outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+    return 1;
+  const double spacing = inInfo->Get(vtkTerrainSource::POST_SPACING());
+  const int halo = spacing > 0.0 ? this->WindowHalo(spacing) : -1;
+  if (halo < 0)
+    return 1;
+  int whole[6], piece[6];
+  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  vtkTerrainPieces::RequestedPiece(outInfo, piece);
+  if (piece[1] < piece[0] || piece[3] < piece[2])
+    return 1;
+  const int cell = 2 * terralux::PostLattice::defaultStep;
+  int window[6] = { whole[0], whole[1], whole[2], whole[3], whole[4], whole[5] };
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    const int low = std::max(whole[2 * axis], piece[2 * axis] - halo);
+    window[2 * axis] = whole[2 * axis] + (low - whole[2 * axis]) / cell * cell;
+    window[2 * axis + 1] = std::min(whole[2 * axis + 1], piece[2 * axis + 1] + halo);
+  }
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), window, 6);
+  // Exactly: a larger grid kept from an earlier update would hold the whole in memory.
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
   return 1;
 }
 
@@ -397,9 +474,37 @@ std::unique_ptr<vtkRadiosityScene> vtkHierarchicalRadiosity::BuildScene(vtkInfor
     { "DetailDistance", this->DetailDistance } });
   this->CheckCellArraysToProcess();
   auto scene = std::make_unique<vtkRadiosityScene>();
+  // A far terrain first: the terrain's posts take its origin, the same on every rank.
+  const bool far = this->UsesFarTerrainInput(inputVector);
+  if (far)
+  {
+    vtkStructuredGrid* grid = vtkStructuredGrid::GetData(inputVector[this->FarTerrainPort()], 0);
+    vtkDataArray* stride = grid ? grid->GetFieldData()->GetArray("FarTerrainStride") : nullptr;
+    if (!grid || !stride || stride->GetNumberOfTuples() != 1 || !(stride->GetTuple1(0) >= 2))
+      throw terralux::Error("the far terrain must be vtkTerrainSource's output port 1 (a structured grid with "
+                            "field data FarTerrainStride >= 2): SetFarTerrainConnection(source.GetOutputPort(1))");
+    scene->SetFarTerrain(grid, static_cast<int>(stride->GetTuple1(0)), this->DefaultReflectance,
+      this->CellArrayToProcess(ReflectanceArray), this->CellArrayToProcess(EmissionArray));
+  }
+  else if (this->DetailDistance <= 0.0 && inputVector[this->FarTerrainPort()]->GetNumberOfInformationObjects() > 0)
+  {
+    vtkWarningMacro("The far terrain is ignored: it needs a DetailDistance > 0, beyond which rays see it.");
+  }
   for (vtkDataSet* input : inputDataSets(inputVector[0]))
     scene->AddDataSet(input, this->DefaultReflectance, this->CellArrayToProcess(ReflectanceArray),
       this->CellArrayToProcess(EmissionArray), this->UseTerrainHierarchy != 0);
+  if (far)
+  {
+    // The window's first post in the whole grid: its extent from the whole extent's.
+    vtkInformation* info = inputVector[0]->GetInformationObject(0);
+    auto* terrain = vtkStructuredGrid::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT()));
+    int extent[6] = { 0, 0, 0, 0, 0, 0 }, whole[6] = { 0, 0, 0, 0, 0, 0 };
+    if (terrain)
+      terrain->GetExtent(extent);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+    scene->FindWindowInFarTerrain(extent[0] - whole[0], extent[2] - whole[2]);
+  }
   if (!this->AddLights(inputVector, *scene) && !scene->HasEmission)
     throw terralux::Error("no light source: connect a vtkSunSource or vtkSkySource with "
                           "AddLightConnection(), or give an EmissionArrayName");
@@ -470,7 +575,8 @@ bool vtkHierarchicalRadiosity::SolveHierarchy(vtkInformationVector** inputVector
   {
     vtkWarningMacro("Skipped " << solver.degeneratePolygons() << " degenerate polygon(s) with zero area.");
   }
-  if (this->FarTerrainStride > 1 && !solver.geometry()->pointRays().farTerrain())
+  if (this->FarTerrainStride > 1 && !solver.geometry()->pointRays().farTerrain() &&
+    !hierarchy.Scene->Scene.farTerrain.grid)
   {
     vtkWarningMacro("FarTerrainStride " << this->FarTerrainStride << " is ignored: it needs a DetailDistance > 0 "
       "and a scene of one terrain alone (this one has " << hierarchy.Scene->Scene.terrains.size()
@@ -500,8 +606,11 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   } release{ this };
   // Ranks that each evaluate their piece of one terrain split what all of them need at
   // every post (horizons, posts' skies, the lattice), each computing its share.
-  const std::unique_ptr<terralux::WorkSplit> split =
-    piece.extent ? vtkTerrainPieces::SplitAmongRanks(piece.piece, piece.pieces, piece.extent) : nullptr;
+  // A terrain window with its far terrain computes all it needs itself: no split.
+  const bool window = this->UsesFarTerrainInput(inputVector);
+  const std::unique_ptr<terralux::WorkSplit> split = piece.extent && !window
+    ? vtkTerrainPieces::SplitAmongRanks(piece.piece, piece.pieces, piece.extent)
+    : nullptr;
   bool solved = false;
   std::exception_ptr failure;
   try
@@ -531,6 +640,8 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   }
   vtkRadiosityScene& scene = *hierarchy.Scene;
   terralux::HierarchicalRadiosity* solver = hierarchy.Solver;
+  if (window && piece.extent)
+    this->CheckWindowHalo(scene, inputVector[0], piece.extent);
   struct Unsplit
   {
     terralux::HierarchicalRadiosity* Solver;
@@ -593,6 +704,36 @@ int vtkHierarchicalRadiosity::Solve(vtkInformationVector** inputVector, const Pi
   this->FinishOutputs(output, leafMesh);
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkHierarchicalRadiosity::CheckWindowHalo(
+  const vtkRadiosityScene& scene, vtkInformationVector* geometry, const int* pieceExtent)
+{
+  // What the piece's posts need, on the posts as they are: a window cut short of it
+  // (a source that gave less than asked, or a spacing it misjudged) would give values
+  // that depend on the ranks.
+  if (scene.Scene.terrains.size() != 1)
+    return;
+  const terralux::TerrainGrid& grid = *scene.Scene.terrains.front();
+  const int reach = terralux::HeldPosts::haloFor(grid, 3.0 * this->DetailDistance);
+  const int needed = reach < 0 ? VTK_INT_MAX : reach + 2 * terralux::PostLattice::defaultStep;
+  vtkInformation* info = geometry->GetInformationObject(0);
+  int extent[6], whole[6];
+  vtkStructuredGrid::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT()))->GetExtent(extent);
+  info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  const int cell = 2 * terralux::PostLattice::defaultStep;
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    const int a = 2 * axis;
+    const bool lowShort = extent[a] > whole[a] && pieceExtent[a] - extent[a] < needed;
+    const bool highShort = extent[a + 1] < whole[a + 1] && extent[a + 1] - pieceExtent[a + 1] < needed;
+    if (lowShort || highShort || (extent[a] - whole[a]) % cell != 0)
+      throw terralux::Error("the terrain's piece came with " + std::to_string(std::min(pieceExtent[a] - extent[a],
+        extent[a + 1] - pieceExtent[a + 1])) + " posts around it where " + std::to_string(needed) +
+        " (three DetailDistances and the lattice), from a multiple of " + std::to_string(cell) +
+        ", are needed: connect vtkTerrainSource's output 0 to port 0 directly, or give the whole terrain");
+  }
 }
 
 //------------------------------------------------------------------------------

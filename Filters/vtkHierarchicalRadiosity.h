@@ -76,6 +76,7 @@
 #include <memory> // For std::unique_ptr
 
 class vtkPolyData;
+class vtkStructuredGrid;
 class vtkRadiosityScene;
 namespace terralux
 {
@@ -359,6 +360,21 @@ public:
 
   ///@{
   /**
+   * Connect the far terrain of a terrain on port 0: vtkTerrainSource's output port 1
+   * (its every FarTerrainStride-th post, whole), on the last input port (2 here, 1 for
+   * vtkSolarIrradiation). With a DetailDistance, rays see it beyond DetailDistance and
+   * the hierarchy is solved on it (FarTerrainStride is then the source's), and a piece
+   * asks port 0 for its posts and a halo only (three DetailDistances and a few posts,
+   * from the source's POST_SPACING): memory per rank follows the piece, and results
+   * do not depend on the number of ranks. Without a DetailDistance it is ignored.
+   */
+  void SetFarTerrainConnection(vtkAlgorithmOutput* output);
+  void SetFarTerrainData(vtkStructuredGrid* far);
+  int FarTerrainPort() { return this->GetNumberOfInputPorts() - 1; }
+  ///@}
+
+  ///@{
+  /**
    * Output 0 (GetOutput()) is the input geometry with the point arrays (its type, or a
    * multiblock); the adaptive leaf mesh is port 1 and the links port 2 (GetOutput(port)
    * as vtkDataObjectAlgorithm gives any of them, or these typed getters).
@@ -434,6 +450,13 @@ protected:
   virtual bool AddLights(vtkInformationVector** inputVector, vtkRadiosityScene& scene);
   // Last touches to the filled outputs (array names, field data).
   virtual void FinishOutputs(vtkDataObject* output, vtkPolyData* leafMesh);
+  // Whether a far terrain is connected and used (a DetailDistance).
+  bool UsesFarTerrainInput(vtkInformationVector** inputVector);
+  // Posts a piece needs around it with a far terrain, of posts `postSpacing` apart.
+  int WindowHalo(double postSpacing) const;
+  // Throws terralux::Error where the window port 0 gave holds fewer posts around the
+  // piece than its values need.
+  void CheckWindowHalo(const vtkRadiosityScene& scene, vtkInformationVector* geometry, const int* pieceExtent);
 
   double ErrorTolerance;
   double MinimumElementArea;

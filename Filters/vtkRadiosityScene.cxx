@@ -201,8 +201,9 @@ void checkSinglePrecision(vtkStructuredGrid* grid, const terralux::TerrainGrid& 
 }
 
 // A 2-D structured grid as a terrain grid: posts, blanked cells, materials per cell.
-std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
-  vtkStructuredGrid* grid, const CellSpectrum& reflectance, const CellSpectrum& emission, int owner)
+// `origin`: where the posts are kept relative to (null: the grid's centre).
+std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(vtkStructuredGrid* grid, const CellSpectrum& reflectance,
+  const CellSpectrum& emission, int owner, const terralux::Vec3* origin = nullptr)
 {
   int dims[3];
   grid->GetDimensions(dims);
@@ -210,8 +211,9 @@ std::unique_ptr<terralux::TerrainGrid> makeTerrainGrid(
   grid->GetBounds(bounds);
   const terralux::Vec3 centre(
     0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
-  auto terrain = std::make_unique<terralux::TerrainGrid>(dims[0], dims[1], std::isfinite(centre.x) &&
-      std::isfinite(centre.y) && std::isfinite(centre.z) ? centre : terralux::Vec3(0.0));
+  const bool finite = std::isfinite(centre.x) && std::isfinite(centre.y) && std::isfinite(centre.z);
+  auto terrain =
+    std::make_unique<terralux::TerrainGrid>(dims[0], dims[1], origin ? *origin : finite ? centre : terralux::Vec3(0.0));
   std::atomic<vtkIdType> badPoint{ -1 };
   std::atomic<bool> anyNonFinite{ false };
   const bool blanking = grid->HasAnyBlankCells() || grid->HasAnyBlankPoints();
@@ -428,7 +430,8 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
   checkGhostArrays(data, owner);
   if (structured && terrainHierarchy)
   {
-    this->Terrains.push_back(makeTerrainGrid(structured, reflectance, emission, owner));
+    this->Terrains.push_back(makeTerrainGrid(
+      structured, reflectance, emission, owner, this->FarTerrain ? &this->FarTerrain->origin() : nullptr));
     this->Scene.terrains.push_back(this->Terrains.back().get());
     this->Inputs.push_back({ data, first, static_cast<int>(this->Terrains.size()) - 1 });
     return;
@@ -439,6 +442,66 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
     addGridTriangles(structured, dims, input);
   else
     this->SkippedCells += addPolyDataCells(polyData, input);
+}
+
+void vtkRadiosityScene::SetFarTerrain(vtkStructuredGrid* far, int stride, double defaultReflectance,
+  const char* reflectanceName, const char* emissionName)
+{
+  const CellSpectrum reflectance(far, reflectanceName, defaultReflectance, 0.0, 1.0, "reflectance");
+  const CellSpectrum emission(far, emissionName, 0.0, 0.0, INFINITY, "emission");
+  const std::array<int, 3> dims = surfaceDimensions(far, -1);
+  if (dims[0] < 2 || dims[1] < 2)
+    throw terralux::Error("the far terrain has fewer than 2 x 2 posts: connect vtkTerrainSource's output port 1, "
+                          "or lower its FarTerrainStride");
+  checkGhostArrays(far, -1);
+  this->FarTerrain = makeTerrainGrid(far, reflectance, emission, -1);
+  this->Scene.farTerrain.grid = this->FarTerrain.get();
+  this->Scene.farTerrain.stride = stride;
+}
+
+void vtkRadiosityScene::FindWindowInFarTerrain(int i0, int j0)
+{
+  if (!this->FarTerrain)
+    return;
+  if (this->Scene.terrains.size() != 1 || !this->Scene.polygons.empty())
+    throw terralux::Error("a far terrain serves one terrain grid alone: connect one vtkTerrainSource output 0 to "
+                          "port 0, with UseTerrainHierarchy on, or disconnect the far terrain");
+  const terralux::TerrainGrid& window = *this->Scene.terrains.front();
+  const terralux::TerrainGrid& far = *this->FarTerrain;
+  const int stride = this->Scene.farTerrain.stride;
+  // The far terrain's post (k, l) is the full grid's (k stride + ci, l stride + cj) for
+  // one (ci, cj) within a stride (a north-up raster's strided rows start at its north
+  // edge, the grid's last row). Found on the first posts of the window that valid
+  // cells use in both (no-data posts sit at heights of their own piece).
+  auto matches = [&](int ci, int cj) {
+    int compared = 0;
+    const int k0 = std::max(0, (i0 - ci + stride - 1) / stride), l0 = std::max(0, (j0 - cj + stride - 1) / stride);
+    for (int l = l0; l < far.postsY() && compared < 16; ++l)
+      for (int k = k0; k < far.postsX() && compared < 16; ++k)
+      {
+        const int i = k * stride + ci - i0, j = l * stride + cj - j0;
+        if (i < 0 || j < 0 || i >= window.postsX() || j >= window.postsY())
+          break;
+        if (!far.postUsed(k, l) || !window.postUsed(i, j))
+          continue;
+        const terralux::Vec3 a = far.post(k, l), b = window.post(i, j);
+        // Floats 1e-6 of the grid's reach apart, and a post apart by far more.
+        if (glm::length(a - b) > 1e-3 + 1e-6 * glm::length(b - far.origin()))
+          return false;
+        ++compared;
+      }
+    return compared > 0;
+  };
+  for (int cj = 0; cj < stride; ++cj)
+    for (int ci = 0; ci < stride; ++ci)
+      if (matches(ci, cj))
+      {
+        this->Scene.farTerrain.i0 = i0 - ci;
+        this->Scene.farTerrain.j0 = j0 - cj;
+        return;
+      }
+  throw terralux::Error("the far terrain's posts are not every " + std::to_string(stride) +
+    "th post of the terrain: connect output ports 0 and 1 of the same vtkTerrainSource");
 }
 
 void vtkRadiosityScene::AddLight(vtkDataObject* light)

@@ -15,6 +15,7 @@
 
 class vtkDataObject;
 class vtkDataSet;
+class vtkStructuredGrid;
 
 class vtkRadiosityScene
 {
@@ -35,6 +36,18 @@ public:
   /// two triangles per cell.
   void AddDataSet(vtkDataSet* data, double defaultReflectance, const char* reflectanceName,
     const char* emissionName, bool terrainHierarchy);
+  /// The far terrain of the one terrain grid AddDataSet adds next (a window of the
+  /// full grid, e.g. an MPI rank's piece and its halo): vtkTerrainSource's output 1,
+  /// every `stride`-th post of the full grid. Its materials are its own (the same
+  /// arrays, or the default). The window's posts are then kept relative to the far
+  /// terrain's origin, the same on every rank. Call FindWindowInFarTerrain after.
+  void SetFarTerrain(vtkStructuredGrid* far, int stride, double defaultReflectance, const char* reflectanceName,
+    const char* emissionName);
+  /// Where the one terrain (a window whose post (0, 0) is the full grid's (i0, j0))
+  /// lies in the far terrain: its posts must be the far terrain's, bit for bit but for
+  /// rounding, at one offset of fewer than `stride` posts. Throws terralux::Error naming
+  /// the fix when they are not.
+  void FindWindowInFarTerrain(int i0, int j0);
   /// Adds a vtkSkySource radiance map or a vtkSunSource output. Every light counts:
   /// suns each become a sun element, skies are summed into one radiance map (at the
   /// finest resolution among them; a one-band sky lights every band alike).
@@ -50,6 +63,7 @@ public:
   terralux::RadiosityScene Scene;
   std::vector<Input> Inputs;
   std::vector<std::unique_ptr<terralux::TerrainGrid>> Terrains;
+  std::unique_ptr<terralux::TerrainGrid> FarTerrain; ///< SetFarTerrain's, or null
   std::unique_ptr<terralux::SkyHierarchy> Sky; ///< the sum of the skies added, or null
   std::vector<SunLight> Suns;
   bool HasEmission = false;

@@ -96,7 +96,7 @@ vtkSolarIrradiation::vtkSolarIrradiation()
   this->SetEndTime("2000-01-02T00:00:00Z");
   for (double& value : this->MonthlyLinkeTurbidity)
     value = 3.0;
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2); // the geometry and the far terrain: it makes its own lights
 }
 
 //------------------------------------------------------------------------------

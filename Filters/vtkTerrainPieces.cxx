@@ -4,14 +4,18 @@
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
+#include "vtkExtentTranslator.h"
 #include "vtkFieldData.h"
+#include "vtkAlgorithm.h"
 #include "vtkInformation.h"
+#include "vtkInformationIntegerRequestKey.h"
 #include "vtkIntArray.h"
 #include "vtkMPICommunicator.h"
 #include "vtkMPIController.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStructuredGrid.h"
 #include "vtkTable.h"
 #include "vtkTerraLuxFieldData.h"
@@ -256,6 +260,25 @@ bool vtkTerrainPieces::SendToRoot(vtkMultiProcessController* controller, vtkData
   if (failure)
     std::rethrow_exception(failure);
   return true;
+}
+
+void vtkTerrainPieces::RequestedPiece(vtkInformation* info, int extent[6])
+{
+  info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  const int pieces = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  if (pieces <= 1 || !info->Has(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()))
+    return;
+  vtkInformationIntegerKey* splitKey = static_cast<vtkInformationIntegerKey*>(vtkExtentTranslator::UPDATE_SPLIT_MODE());
+  const int splitMode = info->Has(splitKey)
+    ? info->Get(splitKey)
+    : vtkExtentTranslator::BLOCK_MODE;
+  int whole[6];
+  std::copy(extent, extent + 6, whole);
+  vtkNew<vtkExtentTranslator> translator;
+  translator->PieceToExtentThreadSafe(info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), pieces,
+    info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()), whole, extent, splitMode, 0);
 }
 
 void vtkTerrainPieces::CropToPiece(vtkStructuredGrid* terrain, const int extent[6])

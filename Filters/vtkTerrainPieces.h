@@ -17,6 +17,7 @@ namespace terralux
 class WorkSplit;
 }
 class vtkDataSet;
+class vtkInformation;
 class vtkMultiProcessController;
 class vtkStructuredGrid;
 
@@ -48,6 +49,10 @@ struct vtkTerrainPieces
   /// Crops a terrain to the piece `extent` (grid indices) and makes its georeference
   /// field data (GeoTransform, RasterSize) describe the piece.
   static void CropToPiece(vtkStructuredGrid* terrain, const int extent[6]);
+  /// The extent output `info` will be asked for once its piece is cut from its update
+  /// extent (as the streaming pipeline cuts a sub-extent producer's before RequestData):
+  /// for a filter's RequestUpdateExtent, which runs before that cut.
+  static void RequestedPiece(vtkInformation* info, int extent[6]);
   /// The global controller's ranks as a terralux::WorkSplit (broadcasts from each
   /// share's rank; each rank's window its piece's posts, `extent`), where the `pieces`
   /// pieces asked for are one per rank and this rank asks for its own, `piece`; null

@@ -2,11 +2,14 @@
 
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkExtentTranslator.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkInformationExecutivePortVectorKey.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkIntArray.h"
@@ -29,6 +32,7 @@
 #include "vtkTerrainHeights.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -58,13 +62,16 @@ vtkTerrainSource::vtkTerrainSource()
   , GeoBounds{ 0.0, 0.0, 0.0, 0.0 }
   , UseGeoBounds(0)
   , Stride(1)
+  , FarTerrainStride(4)
   , GeoOrigin{ 0.0, 0.0, 0.0 }
   , UseGeoOrigin(0)
   , OutputPointsPrecision(SINGLE_PRECISION)
 {
   this->SetNumberOfInputPorts(1);
-  this->SetNumberOfOutputPorts(1);
+  this->SetNumberOfOutputPorts(2);
 }
+
+vtkInformationKeyMacro(vtkTerrainSource, POST_SPACING, Double);
 
 //------------------------------------------------------------------------------
 vtkTerrainSource::~vtkTerrainSource()
@@ -170,7 +177,10 @@ int vtkTerrainSource::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* farInfo = outputVector->GetInformationObject(1);
   int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  int farExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  outInfo->Remove(POST_SPACING());
   vtkInformation* inInfo =
     this->GetNumberOfInputPorts() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
   if (inInfo)
@@ -191,6 +201,11 @@ int vtkTerrainSource::RequestInformation(
       extent[1] = request.nx - 1;
       extent[3] = request.ny - 1;
       extent[5] = 0;
+      const int farStride = this->Stride * this->FarTerrainStride;
+      farExtent[1] = terralux::PixelWindow::postCount(request.window.width, farStride) - 1;
+      farExtent[3] = terralux::PixelWindow::postCount(request.window.height, farStride) - 1;
+      farExtent[5] = 0;
+      outInfo->Set(POST_SPACING(), this->LeastPostSpacing(request));
     }
     catch (const terralux::Error&)
     {
@@ -199,7 +214,51 @@ int vtkTerrainSource::RequestInformation(
     outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
   }
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  farInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), farExtent, 6);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+double vtkTerrainSource::LeastPostSpacing(const RasterRequest& request)
+{
+  // 2 x 2 posts at the grid's corners and centre, placed at height 0 in a frame at the
+  // centre: on a map projection or a geographic grid cells change size smoothly, the
+  // narrowest at an edge (toward a pole, or off a projection's central meridian).
+  const terralux::RasterInfo& info = request.raster->info();
+  const terralux::GeoTransform transform =
+    info.geoTransform.window(request.window.col0, request.window.row0, this->Stride);
+  const int nx = request.nx, ny = request.ny;
+  if (nx < 2 || ny < 2)
+    return 0.0;
+  std::unique_ptr<terralux::MapProjection> projection;
+  std::unique_ptr<terralux::LocalFrame> frame;
+  if (!info.crsWkt.empty())
+  {
+    projection = std::make_unique<terralux::MapProjection>(info.crsWkt);
+    frame = std::make_unique<terralux::LocalFrame>(
+      terralux::geodeticOfPixel(transform, *projection, 0.5 * nx, 0.5 * ny, 0.0));
+  }
+  double least = std::numeric_limits<double>::infinity();
+  for (const auto& corner : { std::array<int, 2>{ 0, 0 }, { nx - 2, 0 }, { 0, ny - 2 }, { nx - 2, ny - 2 },
+         { (nx - 2) / 2, (ny - 2) / 2 } })
+  {
+    terralux::GridGeoreference cell;
+    cell.nx = 2;
+    cell.ny = 2;
+    cell.geoTransform = transform;
+    cell.col0 = corner[0];
+    cell.row0 = corner[1];
+    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    double xyz[12];
+    if (projection)
+      terralux::TerrainPlacement(cell, *projection, *frame).place(zero, 0.0, xyz);
+    else
+      terralux::TerrainPlacement(cell, terralux::LocalPoint{ 0.0, 0.0, 0.0 }).place(zero, 0.0, xyz);
+    for (const auto& [a, b] : { std::array<int, 2>{ 0, 1 }, { 2, 3 }, { 0, 2 }, { 1, 3 } })
+      least = std::min(least, std::hypot(xyz[3 * a] - xyz[3 * b], xyz[3 * a + 1] - xyz[3 * b + 1]));
+  }
+  // A margin for what the five cells do not see.
+  return std::isfinite(least) ? 0.99 * least : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -258,14 +317,14 @@ void addGeoreference(vtkFieldData* fieldData, const terralux::RasterInfo& info,
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkDataArray> vtkTerrainSource::ReadElevation(
-  const RasterRequest& request, const terralux::PixelWindow& piece, vtkIdType count, std::size_t& valid)
+vtkSmartPointer<vtkDataArray> vtkTerrainSource::ReadElevation(const RasterRequest& request,
+  const terralux::PixelWindow& piece, int stride, vtkIdType count, std::size_t& valid)
 {
   // The raster is read straight into the Elevation array (raster order first).
   vtkSmartPointer<vtkDataArray> elevation = request.raster->info().needsDoublePrecision
     ? newValues<vtkDoubleArray>("Elevation", 1, count)
     : newValues<vtkFloatArray>("Elevation", 1, count);
-  valid = withHeights(elevation, [&](auto* heights) { return request.raster->read(piece, this->Stride, heights); });
+  valid = withHeights(elevation, [&](auto* heights) { return request.raster->read(piece, stride, heights); });
   const vtkIdType implausible =
     withHeights(elevation, [&](auto* heights) { return dropImplausibleHeights(heights, count); });
   valid -= static_cast<std::size_t>(implausible);
@@ -288,7 +347,8 @@ vtkSmartPointer<vtkDataArray> vtkTerrainSource::ReadElevation(
 
 //------------------------------------------------------------------------------
 std::unique_ptr<terralux::TerrainPlacement> vtkTerrainSource::PlaceGrid(const terralux::GridGeoreference& grid,
-  const terralux::RasterInfo& info, const terralux::GridCentre& centre, vtkFieldData* fieldData)
+  const terralux::RasterInfo& info, const terralux::GeoTransform& centreTransform, const terralux::GridCentre& centre,
+  vtkFieldData* fieldData)
 {
   if (info.crsWkt.empty())
   {
@@ -296,7 +356,7 @@ std::unique_ptr<terralux::TerrainPlacement> vtkTerrainSource::PlaceGrid(const te
                         << "' has no coordinate reference system: its map coordinates are taken "
                            "as local metres. Assign a CRS (gdal_edit.py -a_srs) to georeference it.");
     double mapOrigin[3];
-    grid.geoTransform.pixelToMap(centre.col, centre.row, mapOrigin[0], mapOrigin[1]);
+    centreTransform.pixelToMap(centre.col, centre.row, mapOrigin[0], mapOrigin[1]);
     mapOrigin[2] = centre.heightM;
     vtkTerraLuxFieldData::AddTuple(fieldData, "LocalOrigin", mapOrigin, 3);
     return std::make_unique<terralux::TerrainPlacement>(
@@ -306,7 +366,7 @@ std::unique_ptr<terralux::TerrainPlacement> vtkTerrainSource::PlaceGrid(const te
   terralux::GeodeticPoint origin{ this->GeoOrigin[0], this->GeoOrigin[1], this->GeoOrigin[2] };
   if (!this->UseGeoOrigin)
   {
-    origin = terralux::geodeticOfPixel(grid.geoTransform, projection, centre.col, centre.row, centre.heightM);
+    origin = terralux::geodeticOfPixel(centreTransform, projection, centre.col, centre.row, centre.heightM);
   }
   const double originValues[3] = { origin.latitudeDeg, origin.longitudeDeg, origin.heightM };
   vtkTerraLuxFieldData::AddTuple(fieldData, vtkTerraLuxFieldData::GeoOriginName(), originValues, 3);
@@ -314,15 +374,20 @@ std::unique_ptr<terralux::TerrainPlacement> vtkTerrainSource::PlaceGrid(const te
 }
 
 //------------------------------------------------------------------------------
-bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output)
+bool vtkTerrainSource::ReadRaster(
+  const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output, int farStride)
 {
   RasterRequest request;
   this->ResolveRasterRequest(request);
   const terralux::RasterInfo& info = request.raster->info();
-  // The whole grid fixes the frame and the row order; the piece is what is read.
-  const int wholeNx = request.nx;
-  const int wholeNy = request.ny;
+  // The whole grid fixes the frame and the row order; the piece is what is read. The
+  // far terrain's posts are every farStride-th of output 0's, in its frame.
+  const int stride = this->Stride * farStride;
+  const int wholeNx = terralux::PixelWindow::postCount(request.window.width, stride);
+  const int wholeNy = terralux::PixelWindow::postCount(request.window.height, stride);
   const terralux::GeoTransform wholeTransform =
+    info.geoTransform.window(request.window.col0, request.window.row0, stride);
+  const terralux::GeoTransform frameTransform =
     info.geoTransform.window(request.window.col0, request.window.row0, this->Stride);
   const bool rowsReversed = wholeTransform.gridRow(0, wholeNy) != 0;
   if (extent[1] < extent[0] || extent[3] < extent[2])
@@ -338,8 +403,8 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
   const int ny = extent[3] - extent[2] + 1;
   const int firstRow = wholeTransform.firstRasterRow(extent[2], extent[3], wholeNy);
   const terralux::PixelWindow whole = request.window;
-  const terralux::PixelWindow piece{ whole.col0 + extent[0] * this->Stride, whole.row0 + firstRow * this->Stride,
-    (nx - 1) * this->Stride + 1, (ny - 1) * this->Stride + 1 };
+  const terralux::PixelWindow piece{ whole.col0 + extent[0] * stride, whole.row0 + firstRow * stride,
+    (nx - 1) * stride + 1, (ny - 1) * stride + 1 };
   const vtkIdType count = static_cast<vtkIdType>(nx) * ny;
   if (request.clipped)
   {
@@ -348,7 +413,7 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
   }
   this->UpdateProgress(0.05);
   std::size_t valid = 0;
-  const vtkSmartPointer<vtkDataArray> elevation = this->ReadElevation(request, piece, count, valid);
+  const vtkSmartPointer<vtkDataArray> elevation = this->ReadElevation(request, piece, stride, count, valid);
   if (!elevation)
   {
     return false;
@@ -364,22 +429,33 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
   ghosts->SetNumberOfTuples(count);
   const double lowest =
     withHeights(elevation, [&](const auto* heights) { return blankNoDataPosts(heights, count, ghosts); });
-  // The frame origin is the whole grid's centre, whichever piece this is: the posts
-  // around it are read on their own (the whole grid only if they are no data).
+  // The frame origin is output 0's whole grid's centre, whichever piece (or far
+  // terrain) this is: the posts around it are read on their own, a few at a time (the
+  // whole grid only if they are no data).
   std::vector<double> wholeHeights;
-  const terralux::GridCentre wholeCentre = terralux::findGridCentre(wholeNx, wholeNy, [&](int i, int row) {
-    if (i >= extent[0] && i < extent[0] + nx && row >= firstRow && row < firstRow + ny)
+  int postsRead = 0;
+  const int frameNx = request.nx, frameNy = request.ny;
+  const terralux::GridCentre wholeCentre = terralux::findGridCentre(frameNx, frameNy, [&](int i, int row) {
+    if (farStride == 1 && i >= extent[0] && i < extent[0] + nx && row >= firstRow && row < firstRow + ny)
     {
       const vtkIdType k = (i - extent[0]) + static_cast<vtkIdType>(row - firstRow) * nx;
       return withHeights(elevation, [&](const auto* heights) { return static_cast<double>(heights[k]); });
     }
+    if (wholeHeights.empty() && postsRead < 4)
+    {
+      ++postsRead;
+      double height = 0.0;
+      request.raster->read({ whole.col0 + i * this->Stride, whole.row0 + row * this->Stride, 1, 1 }, 1, &height);
+      dropImplausibleHeights(&height, 1);
+      return height;
+    }
     if (wholeHeights.empty())
     {
-      wholeHeights.resize(static_cast<std::size_t>(wholeNx) * wholeNy);
+      wholeHeights.resize(static_cast<std::size_t>(frameNx) * frameNy);
       request.raster->read(whole, this->Stride, wholeHeights.data());
       dropImplausibleHeights(wholeHeights.data(), static_cast<vtkIdType>(wholeHeights.size()));
     }
-    return wholeHeights[static_cast<std::size_t>(row) * wholeNx + i];
+    return wholeHeights[static_cast<std::size_t>(row) * frameNx + i];
   });
 
   terralux::GridGeoreference grid;
@@ -389,7 +465,7 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
   grid.col0 = extent[0];
   grid.row0 = firstRow;
   const std::unique_ptr<terralux::TerrainPlacement> placement =
-    this->PlaceGrid(grid, info, wholeCentre, output->GetFieldData());
+    this->PlaceGrid(grid, info, frameTransform, wholeCentre, output->GetFieldData());
 
   // Raster order -> grid order (GeoTransform::gridRow): reversed for north-up rasters.
   vtkNew<vtkPoints> points;
@@ -422,15 +498,23 @@ bool vtkTerrainSource::ReadRaster(const int extent[6], const int pieceExtent[6],
     output->GetPointData()->AddArray(ghosts);
   }
   addGeoreference(output->GetFieldData(), info, wholeTransform.pieceOf(extent[0], extent[2], extent[3], wholeNy), nx, ny);
+  if (farStride > 1)
+  {
+    auto strideArray = vtkSmartPointer<vtkIntArray>::New();
+    strideArray->SetName("FarTerrainStride");
+    strideArray->InsertNextValue(farStride);
+    output->GetFieldData()->AddArray(strideArray);
+  }
   return true;
 }
 
 //------------------------------------------------------------------------------
 int vtkTerrainSource::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkStructuredGrid* output = vtkStructuredGrid::GetData(outputVector, 0);
   output->Initialize();
+  vtkStructuredGrid::GetData(outputVector, 1)->Initialize();
   vtkImageData* input = this->GetNumberOfInputPorts() > 0 ? vtkImageData::GetData(inputVector[0], 0) : nullptr;
 
   bool ok = false;
@@ -471,6 +555,19 @@ int vtkTerrainSource::RequestData(
         std::copy(extent, extent + 6, pieceExtent);
       }
       ok = this->ReadRaster(extent, pieceExtent, output);
+      // The far terrain, whole, when asked for (or wanted downstream).
+      vtkInformation* farInfo = outputVector->GetInformationObject(1);
+      vtkStructuredGrid* far = vtkStructuredGrid::GetData(outputVector, 1);
+      far->Initialize();
+      const bool farWanted = vtkExecutive::CONSUMERS()->Length(farInfo) > 0 ||
+        (request && request->Has(vtkExecutive::FROM_OUTPUT_PORT()) &&
+          request->Get(vtkExecutive::FROM_OUTPUT_PORT()) == 1);
+      if (ok && farWanted)
+      {
+        int farWhole[6];
+        farInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), farWhole);
+        ok = this->ReadRaster(farWhole, farWhole, far, this->FarTerrainStride);
+      }
     }
   }
   catch (const terralux::Error& error)
@@ -487,6 +584,7 @@ int vtkTerrainSource::RequestData(
   if (!ok)
   {
     output->Initialize();
+    vtkStructuredGrid::GetData(outputVector, 1)->Initialize();
     return 0;
   }
   this->UpdateProgress(1.0);
@@ -505,6 +603,7 @@ void vtkTerrainSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GeoBounds: (" << this->GeoBounds[0] << ", " << this->GeoBounds[1] << ", "
      << this->GeoBounds[2] << ", " << this->GeoBounds[3] << ")\n";
   os << indent << "Stride: " << this->Stride << "\n";
+  os << indent << "FarTerrainStride: " << this->FarTerrainStride << "\n";
   os << indent << "GeoOrigin: (" << this->GeoOrigin[0] << ", " << this->GeoOrigin[1] << ", "
      << this->GeoOrigin[2] << ")\n";
   os << indent << "UseGeoOrigin: " << (this->UseGeoOrigin ? "On" : "Off") << "\n";

@@ -58,6 +58,14 @@
  * GeoTransform and RasterSize describe the piece; its no-data posts sit at the lowest
  * valid height of the piece.
  *
+ * Output port 1, the far terrain: every FarTerrainStride-th post of output 0's whole
+ * grid (the whole window, whatever piece output 0 gives), in output 0's frame, with
+ * its own georeference and field data `FarTerrainStride`. vtkHierarchicalRadiosity
+ * (SetFarTerrainConnection) sees it beyond its DetailDistance, so that an MPI rank
+ * holds output 0's piece at full resolution, with a halo, and not the whole DEM.
+ * Read only when something asks for it. Output 0's information carries POST_SPACING(),
+ * the least distance between neighbouring posts, for the halo a piece asks for.
+ *
  * @warning DEM heights are taken as heights above the WGS84 ellipsoid; geoid
  * undulation (SRTM heights are above EGM96) shifts the whole scene by tens of metres
  * at most, and its variation across a DEM is small.
@@ -80,11 +88,13 @@
 
 class vtkDataArray;
 class vtkFieldData;
+class vtkInformationDoubleKey;
 class vtkImageData;
 class vtkStructuredGrid;
 
 namespace terralux
 {
+struct GeoTransform;
 struct GridCentre;
 struct GridGeoreference;
 struct PixelWindow;
@@ -159,6 +169,24 @@ public:
 
   ///@{
   /**
+   * Set/Get the stride of the far terrain (output port 1) in output 0's posts: it
+   * keeps every FarTerrainStride-th post of output 0, starting with its first.
+   * Default is 4.
+   */
+  vtkSetClampMacro(FarTerrainStride, int, 2, VTK_INT_MAX);
+  vtkGetMacro(FarTerrainStride, int);
+  ///@}
+
+  /**
+   * On output 0's information, after RequestInformation (from a raster): the least
+   * horizontal distance between neighbouring posts, metres (a lower bound, found at
+   * the grid's corners and centre). A filter that needs posts within a distance of
+   * its piece grows its request by it.
+   */
+  static vtkInformationDoubleKey* POST_SPACING();
+
+  ///@{
+  /**
    * Set/Get the geographic origin of the ENU frame: latitude, longitude (degrees)
    * and height above the WGS84 ellipsoid (metres). Setting it turns UseGeoOrigin on.
    * Default is (0, 0, 0), unused: the origin is the grid centre at its ground height.
@@ -208,6 +236,7 @@ protected:
   double GeoBounds[4];
   vtkTypeBool UseGeoBounds;
   int Stride;
+  int FarTerrainStride;
   double GeoOrigin[3];
   vtkTypeBool UseGeoOrigin;
   int OutputPointsPrecision;
@@ -218,17 +247,22 @@ private:
 
   struct RasterRequest;
   void ResolveRasterRequest(RasterRequest& request); // throws terralux::Error
+  double LeastPostSpacing(const RasterRequest& request); // POST_SPACING
   // Reads the posts of `extent` (grid indices within the whole extent; a piece, ghost
   // posts included) with the ghost posts outside `pieceExtent` marked duplicate.
-  bool ReadRaster(const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output);
+  // `farStride` > 1: output 0's every farStride-th post (the far terrain), still in
+  // output 0's frame.
+  bool ReadRaster(const int extent[6], const int pieceExtent[6], vtkStructuredGrid* output, int farStride = 1);
   // The heights of `piece`, implausible ones made no data (with a warning); `valid`
   // counts the rest. Null, with an error, when none is valid.
-  vtkSmartPointer<vtkDataArray> ReadElevation(
-    const RasterRequest& request, const terralux::PixelWindow& piece, vtkIdType count, std::size_t& valid);
+  vtkSmartPointer<vtkDataArray> ReadElevation(const RasterRequest& request, const terralux::PixelWindow& piece,
+    int stride, vtkIdType count, std::size_t& valid);
   // Where the grid's posts go (the frame at the whole grid's centre, or GeoOrigin), its
   // origin recorded in field data.
+  // `centreTransform`: the transform of the grid whose pixels `centre` counts in.
   std::unique_ptr<terralux::TerrainPlacement> PlaceGrid(const terralux::GridGeoreference& grid,
-    const terralux::RasterInfo& info, const terralux::GridCentre& centre, vtkFieldData* fieldData);
+    const terralux::RasterInfo& info, const terralux::GeoTransform& centreTransform,
+    const terralux::GridCentre& centre, vtkFieldData* fieldData);
   bool ConvertHeightField(vtkImageData* input, vtkStructuredGrid* output);
   // Whether the image is a height field that makes finite points (an error if not).
   bool CheckHeightField(vtkImageData* input);

@@ -119,6 +119,14 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   this->PointCount = scene.points.size();
   for (const TerrainGrid* terrain : scene.terrains)
     this->PointCount += static_cast<std::size_t>(terrain->postsX()) * terrain->postsY();
+  // A window counts the whole grid's posts (from its far terrain's): what it decides
+  // (the open sky's table) must be the same on every process.
+  if (this->Window)
+  {
+    const TerrainGrid& far = this->HierarchyTerrain->grid();
+    const auto stride = static_cast<std::size_t>(scene.farTerrain.stride);
+    this->PointCount = static_cast<std::size_t>(far.postsX()) * far.postsY() * stride * stride;
+  }
   this->Gather = std::make_unique<FinalGather>(*this->PointRays, this->Roots, this->TerrainRoots, this->Suns);
   this->Gather->setDetailDistance(options.gatherDetailDistance);
   this->Gather->setHierarchyTerrain(this->HierarchyTerrain.get());
