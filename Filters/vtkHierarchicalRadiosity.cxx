@@ -368,9 +368,9 @@ int vtkHierarchicalRadiosity::RequestUpdateExtent(
     window[2 * axis] = whole[2 * axis] + (low - whole[2 * axis]) / cell * cell;
     window[2 * axis + 1] = std::min(whole[2 * axis + 1], piece[2 * axis + 1] + halo);
   }
+  // Not EXACT_EXTENT: the pipeline would crop a larger grid it holds (from another
+  // consumer's request) without its georeference; a larger window serves as well.
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), window, 6);
-  // Exactly: a larger grid kept from an earlier update would hold the whole in memory.
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
   return 1;
 }
 

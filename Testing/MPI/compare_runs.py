@@ -16,7 +16,7 @@ from vtkmodules.vtkIOXML import vtkXMLPStructuredGridReader
 import terralux
 
 RELATIVE_TOLERANCE = 1e-6
-OUTPUTS = ("instant", "near", "series")
+OUTPUTS = ("instant", "near", "series", "window", "window_series")
 # A detail distance changes what far gather hits send: the irradiance a little (at
 # most this, relative to the largest), never nothing (the test would then hold no halo).
 NEAR_AGAINST_INSTANT = 0.02
@@ -102,6 +102,13 @@ def main(reference_dir, other_dirs):
     print("near against instant (one rank): irradiance differs by at most %.1e relative" % change)
     if not 0.0 < change <= NEAR_AGAINST_INSTANT:
         failures.append("DetailDistance changed the irradiance by %.2e relative (expected (0, %g])"
+                        % (change, NEAR_AGAINST_INSTANT))
+    # The far terrain changes what rays see beyond 500 m a little, never nothing.
+    window = pieces(os.path.join(reference_dir, "window.pvts"))[1]
+    change = relative_difference(window["Irradiance"], instant["Irradiance"]) if "Irradiance" in instant else 0.0
+    print("window against instant (one rank): irradiance differs by at most %.1e relative" % change)
+    if not 0.0 < change <= NEAR_AGAINST_INSTANT:
+        failures.append("the far terrain changed the irradiance by %.2e relative (expected (0, %g])"
                         % (change, NEAR_AGAINST_INSTANT))
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
