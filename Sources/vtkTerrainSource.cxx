@@ -509,12 +509,37 @@ bool vtkTerrainSource::ReadRaster(
 }
 
 //------------------------------------------------------------------------------
-int vtkTerrainSource::RequestData(
+vtkTypeBool vtkTerrainSource::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // Only what is asked for is read: output 1 alone (the far terrain, or a sun reading
+  // its georeference there) leaves output 0 as it is, whatever piece that holds; output
+  // 1 is read with output 0 only where something takes it.
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
+  {
+    vtkInformation* farInfo = outputVector->GetInformationObject(1);
+    const int from =
+      request->Has(vtkExecutive::FROM_OUTPUT_PORT()) ? request->Get(vtkExecutive::FROM_OUTPUT_PORT()) : 0;
+    if (from == 1)
+      outputVector->GetInformationObject(0)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
+    else if (vtkExecutive::CONSUMERS()->Length(farInfo) == 0)
+      farInfo->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkTerrainSource::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkStructuredGrid* output = vtkStructuredGrid::GetData(outputVector, 0);
-  output->Initialize();
-  vtkStructuredGrid::GetData(outputVector, 1)->Initialize();
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* farInfo = outputVector->GetInformationObject(1);
+  vtkStructuredGrid* far = vtkStructuredGrid::GetData(outputVector, 1);
+  if (!outInfo->Get(vtkDemandDrivenPipeline::DATA_NOT_GENERATED()))
+    output->Initialize();
+  if (!farInfo->Get(vtkDemandDrivenPipeline::DATA_NOT_GENERATED()))
+    far->Initialize();
   vtkImageData* input = this->GetNumberOfInputPorts() > 0 ? vtkImageData::GetData(inputVector[0], 0) : nullptr;
 
   bool ok = false;
@@ -522,7 +547,8 @@ int vtkTerrainSource::RequestData(
   {
     if (input)
     {
-      ok = this->ConvertHeightField(input, output);
+      // A height-field image has no far terrain: output 1 stays empty.
+      ok = outInfo->Get(vtkDemandDrivenPipeline::DATA_NOT_GENERATED()) || this->ConvertHeightField(input, output);
     }
     else
     {
@@ -532,7 +558,6 @@ int vtkTerrainSource::RequestData(
                         "Call UseGeoBoundsOn() to read the box only.");
       // The piece asked for (UPDATE_EXTENT, ghost posts included) and the same piece
       // without ghost levels, which its posts beyond are marked against.
-      vtkInformation* outInfo = outputVector->GetInformationObject(0);
       int whole[6], extent[6], pieceExtent[6];
       outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
       std::copy(whole, whole + 6, extent);
@@ -554,15 +579,10 @@ int vtkTerrainSource::RequestData(
       {
         std::copy(extent, extent + 6, pieceExtent);
       }
-      ok = this->ReadRaster(extent, pieceExtent, output);
-      // The far terrain, whole, when asked for (or wanted downstream).
-      vtkInformation* farInfo = outputVector->GetInformationObject(1);
-      vtkStructuredGrid* far = vtkStructuredGrid::GetData(outputVector, 1);
-      far->Initialize();
-      const bool farWanted = vtkExecutive::CONSUMERS()->Length(farInfo) > 0 ||
-        (request && request->Has(vtkExecutive::FROM_OUTPUT_PORT()) &&
-          request->Get(vtkExecutive::FROM_OUTPUT_PORT()) == 1);
-      if (ok && farWanted)
+      // Each output only where it is generated (see ProcessRequest).
+      ok = outInfo->Get(vtkDemandDrivenPipeline::DATA_NOT_GENERATED()) ||
+        this->ReadRaster(extent, pieceExtent, output);
+      if (ok && !farInfo->Get(vtkDemandDrivenPipeline::DATA_NOT_GENERATED()))
       {
         int farWhole[6];
         farInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), farWhole);
@@ -584,7 +604,7 @@ int vtkTerrainSource::RequestData(
   if (!ok)
   {
     output->Initialize();
-    vtkStructuredGrid::GetData(outputVector, 1)->Initialize();
+    far->Initialize();
     return 0;
   }
   this->UpdateProgress(1.0);

@@ -72,7 +72,8 @@ def parse_arguments(argv):
                              "with --mpi each rank then holds those only within M of its piece (default 0: none)")
     parser.add_argument("--far-stride", type=int, default=1, metavar="N",
                         help="with --detail-distance, rays beyond it see every Nth post of the DEM, as horizon "
-                             "tools see far terrain (default 1: the full resolution everywhere)")
+                             "tools see far terrain (default 1: the full resolution everywhere); each process "
+                             "then reads its piece of the DEM and a halo of three detail distances only")
     return parser.parse_args(argv)
 
 
@@ -180,10 +181,16 @@ def run(args):
     ranks = controller.GetNumberOfProcesses() if controller else 1
     terrain = observe(vtkTerrainSource())
     terrain.SetFileName(args.dem)
-    terrain.Update()
-    if terrain.GetOutput().GetNumberOfPoints() == 0:
+    # With a far terrain each rank reads its piece and a halo of the DEM, and the far
+    # terrain whole (every Nth post): checked and georeferenced there, not on the DEM.
+    far = args.far_stride > 1 and args.detail_distance > 0.0
+    if far:
+        terrain.SetFarTerrainStride(args.far_stride)
+    checked = 1 if far else 0
+    terrain.Update(checked)
+    if terrain.GetOutput(checked).GetNumberOfPoints() == 0:
         raise InputError("could not read %s: %s" % (args.dem, messages[-1] if messages else "no terrain"))
-    origin = terrain.GetOutput().GetFieldData().GetArray("GeoOrigin")
+    origin = terrain.GetOutput(checked).GetFieldData().GetArray("GeoOrigin")
     if origin is None:
         raise InputError("%s has no georeference (a CRS): TerraLux needs the place to place the sun" % args.dem)
     longitude = origin.GetTuple3(0)[1]  # GeoOrigin: (latitude, longitude, height)
@@ -199,6 +206,9 @@ def run(args):
         raise InputError("--detail-distance %g is not a distance in metres (>= 0; 0: none)" % args.detail_distance)
     if args.far_stride < 1:
         raise InputError("--far-stride %d is not a stride of posts (>= 1; 1: none)" % args.far_stride)
+    if args.far_stride > 1 and not args.detail_distance > 0.0:
+        raise InputError("--far-stride %d needs --detail-distance M (> 0): rays see the far terrain beyond it"
+                         % args.far_stride)
 
     irradiation = observe(vtkSolarIrradiation())
     irradiation.SetInputConnection(terrain.GetOutputPort())
@@ -211,7 +221,8 @@ def run(args):
     irradiation.SetSkyType(args.sky_type)
     irradiation.SetErrorTolerance(args.tolerance)
     irradiation.SetDetailDistance(args.detail_distance)
-    irradiation.SetFarTerrainStride(args.far_stride)
+    if far:
+        irradiation.SetFarTerrainConnection(terrain.GetOutputPort(1))
     irradiation.SetEvaluateAtPoints(args.points)
     irradiation.SetPostNormalsToHorn()  # as r.slope.aspect and gdaldem
     if args.weather:
