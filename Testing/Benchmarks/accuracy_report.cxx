@@ -12,6 +12,13 @@
 #include "path_tracer.h"
 #include "reference_scene.h"
 #include "vtkRadiosityScene.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkFieldData.h"
+#include "vtkIntArray.h"
 
 #include "terrain_grid.h"
 
@@ -320,6 +327,39 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   // TERRALUX_REPORT_FAR_STRIDE: beyond the DetailDistance rays see every Nth post.
   if (const char* value = std::getenv("TERRALUX_REPORT_FAR_STRIDE"))
     radiosity->SetFarTerrainStride(std::atoi(value));
+  // TERRALUX_REPORT_WINDOW=1: the far terrain given as an input (every Nth post of the
+  // grid, as vtkTerrainSource's output 1 gives it), the way an MPI rank's window sees
+  // it: no horizon map, no lattice.
+  vtkNew<vtkStructuredGrid> farTerrain;
+  auto* fine = vtkStructuredGrid::SafeDownCast(input.geometry);
+  if (const char* value = std::getenv("TERRALUX_REPORT_WINDOW"); value && std::string(value) == "1" && fine)
+  {
+    const int stride = std::max(2, radiosity->GetFarTerrainStride());
+    int dims[3];
+    fine->GetDimensions(dims);
+    const int nx = (dims[0] - 1) / stride + 1, ny = (dims[1] - 1) / stride + 1;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkDataArray* fineGhosts = fine->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+    vtkNew<vtkUnsignedCharArray> ghosts;
+    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+    for (int l = 0; l < ny; ++l)
+      for (int k = 0; k < nx; ++k)
+      {
+        const vtkIdType id = k * stride + static_cast<vtkIdType>(l) * stride * dims[0];
+        points->InsertNextPoint(fine->GetPoint(id));
+        ghosts->InsertNextValue(fineGhosts ? static_cast<unsigned char>(fineGhosts->GetComponent(id, 0)) : 0);
+      }
+    farTerrain->SetDimensions(nx, ny, 1);
+    farTerrain->SetPoints(points);
+    if (fineGhosts)
+      farTerrain->GetPointData()->AddArray(ghosts);
+    vtkNew<vtkIntArray> strideArray;
+    strideArray->SetName("FarTerrainStride");
+    strideArray->InsertNextValue(stride);
+    farTerrain->GetFieldData()->AddArray(strideArray);
+    radiosity->SetFarTerrainData(farTerrain);
+  }
   radiosity->SetUseTerrainHierarchy(method != "triangles");
   const auto start = std::chrono::steady_clock::now();
   radiosity->Update();
