@@ -154,26 +154,23 @@ class PiecesWithTheFarTerrain(unittest.TestCase):
 
 
 class FarTerrainRefused(unittest.TestCase):
-    def test_another_dems_far_terrain(self):
+    def refused(self, dem, stride, port, message):
+        """Olinda's solver given output `port` of another source: an error, no output."""
         solver = solver_on(OLINDA)
         other = vtkTerrainSource()
-        other.SetFileName(LUXEMBOURG)
-        solver.SetFarTerrainConnection(other.GetOutputPort(1))
+        other.SetFileName(dem)
+        other.SetStride(stride)
+        solver.SetFarTerrainConnection(other.GetOutputPort(port))
         errors = ErrorCatcher(solver)
         solver.Update()
-        self.assertIn("are not every 4th post of the terrain", errors.text())
+        self.assertIn(message, errors.text())
         self.assertEqual(solver.GetOutput().GetNumberOfPoints(), 0)
 
+    def test_another_dems_far_terrain(self):
+        self.refused(LUXEMBOURG, 1, 1, "are not every 4th post of the terrain")
+
     def test_a_grid_that_is_no_far_terrain(self):
-        solver = solver_on(OLINDA)
-        other = vtkTerrainSource()
-        other.SetFileName(OLINDA)
-        other.SetStride(4)
-        solver.SetFarTerrainConnection(other.GetOutputPort(0))
-        errors = ErrorCatcher(solver)
-        solver.Update()
-        self.assertIn("must be vtkTerrainSource's output port 1", errors.text())
-        self.assertEqual(solver.GetOutput().GetNumberOfPoints(), 0)
+        self.refused(OLINDA, 4, 0, "must be vtkTerrainSource's output port 1")
 
     def test_without_a_detail_distance_it_is_ignored_with_a_warning(self):
         solver = solver_on(OLINDA, detail=0.0)
