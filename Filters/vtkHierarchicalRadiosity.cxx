@@ -226,10 +226,10 @@ bool vtkHierarchicalRadiosity::UsesFarTerrainInput(vtkInformationVector** inputV
 //------------------------------------------------------------------------------
 int vtkHierarchicalRadiosity::WindowHalo(double postSpacing) const
 {
-  // Every post of the piece reads the lattice's posts within 2 lattice steps, and its
-  // gather rays' hits within DetailDistance read the lattice there; a lattice post's
-  // value needs the terrain within twice DetailDistance of it (its rays, and its hits'
-  // rays): three DetailDistances and the lattice's steps, a cell and a post of margin.
+  // A post's rays see the full resolution within DetailDistance of it, its hits' shadow
+  // rays within DetailDistance of the hit: two. The third and the lattice's steps are
+  // what a lattice read at hits needs (a lattice post's value sees two around it), so
+  // that a window keeps room for it; and a cell and a post of margin.
   const double posts = std::ceil(3.0 * this->DetailDistance / postSpacing);
   return posts > 1e8 ? -1 : static_cast<int>(posts) + 2 * terralux::PostLattice::defaultStep + 3;
 }

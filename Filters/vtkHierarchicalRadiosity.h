@@ -57,7 +57,9 @@
  * rank holds the same hierarchy) and evaluates output 0's point values only at its own
  * posts: a terrain's piece is the sub-extent asked of output 0, bit for bit that part of
  * the one-piece result, with GeoTransform and RasterSize of the piece. Other geometry is
- * not split: piece 0 carries it; the leaf mesh and links are piece 0's.
+ * not split: piece 0 carries it; the leaf mesh and links are piece 0's. With a far
+ * terrain (SetFarTerrainConnection) and a DetailDistance, a terrain's piece asks its
+ * input for the piece and a halo only, so that memory follows the piece.
  *
  * Refused with an error naming the fix, outputs empty: NaN or infinite parameters;
  * cells whose point ids are out of range; structured grids whose dimensions do not
