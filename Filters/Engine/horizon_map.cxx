@@ -1,6 +1,7 @@
 #include "horizon_map.h"
 
 #include "angles.h"
+#include "horizon_lines.h"
 #include "terrain_grid.h"
 #include "work_split.h"
 
@@ -15,73 +16,12 @@
 
 namespace terralux
 {
+using horizon_lines::atanOfPositive;
+using horizon_lines::crossingsOf;
+using horizon_lines::Crossing;
+
 namespace
 {
-// Floor division and remainder for a positive divisor.
-int floorDivide(int a, int b)
-{
-  return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
-/// Where a line of step g crosses a cell edge or diagonal between two of its posts, as
-/// offsets from the step's first post: at fraction t of the step, on the edge from post
-/// (a0, b0) to (a1, b1) at fraction f, between cells c and d (the same for a diagonal).
-struct Crossing
-{
-  double t, f;
-  int a0, b0, a1, b1;
-  int ci, cj, di, dj;
-};
-
-std::vector<Crossing> crossingsOf(int q, int p)
-{
-  std::vector<Crossing> crossings;
-  const int aq = std::abs(q), ap = std::abs(p), as = std::abs(q + p);
-  // Columns u = U between rows B and B + 1.
-  for (int k = 1; k < aq; ++k)
-  {
-    const int U = q > 0 ? k : -k, B = floorDivide(p * k, aq);
-    crossings.push_back({ static_cast<double>(k) / aq, static_cast<double>(p * k - B * aq) / aq, U, B, U, B + 1,
-      U - 1, B, U, B });
-  }
-  // Rows v = V between columns A and A + 1.
-  for (int k = 1; k < ap; ++k)
-  {
-    const int V = p > 0 ? k : -k, A = floorDivide(q * k, ap);
-    crossings.push_back({ static_cast<double>(k) / ap, static_cast<double>(q * k - A * ap) / ap, A, V, A + 1, V,
-      A, V - 1, A, V });
-  }
-  // Diagonals u + v = n inside cell (A, B), from (A + 1, B) to (A, B + 1): never at a
-  // post or an edge when q and p have no common factor.
-  for (int m = 1; m < as; ++m)
-  {
-    const int A = floorDivide(q * m, as), B = floorDivide(p * m, as);
-    crossings.push_back({ static_cast<double>(m) / as, static_cast<double>(p * m - B * as) / as, A + 1, B, A, B + 1,
-      A, B, A, B });
-  }
-  std::sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
-  return crossings;
-}
-
-/// atan of t >= 0 to 5e-8 rad (the map keeps 2.4e-5): reduced to |x| <= tan(pi / 12)
-/// by atan t = pi / 2 - atan(1 / t) and atan t = pi / 6 + atan((sqrt 3 t - 1) / (sqrt 3
-/// + t)), then its series to x^9 (the next term 3e-8). A quarter of libm's time, and the
-/// sweep takes one per post and azimuth.
-double atanOfPositive(double t)
-{
-  const bool inverted = t > 1.0;
-  double x = inverted ? 1.0 / t : t;
-  constexpr double sqrt3 = 1.7320508075688772, tanPiOver12 = 0.2679491924311227;
-  const bool shifted = x > tanPiOver12;
-  if (shifted)
-    x = (sqrt3 * x - 1.0) / (sqrt3 + x);
-  const double x2 = x * x;
-  double a = x * (1.0 + x2 * (-1.0 / 3.0 + x2 * (1.0 / 5.0 + x2 * (-1.0 / 7.0 + x2 * (1.0 / 9.0)))));
-  if (shifted)
-    a += pi / 6.0;
-  return inverted ? 0.5 * pi - a : a;
-}
-
 /// The 32 steps: slopes 0, 1/5, 2/5, 2/3 and 1 in each octant; dense, 64: also 1/9,
 /// 1/3, 1/2 and 3/4, between them and short (few crossings a step).
 std::vector<std::array<int, 2>> stepsOfAllAzimuths(bool dense)
@@ -106,8 +46,26 @@ std::vector<std::array<int, 2>> stepsOfAllAzimuths(bool dense)
 HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* split)
   : Terrain(terrain)
 {
-  this->fitMeanMap();
+  this->fitMeanMap(terrain);
   this->measureRelief();
+  this->ExtentU1 = terrain.postsX() - 1, this->ExtentV1 = terrain.postsY() - 1;
+  const std::vector<std::array<int, 2>> slotSteps = this->placeAzimuths(dense);
+  this->Held = WorkSplit::ownWindow(split, terrain.postsX(), terrain.postsY());
+  this->holdPosts();
+  if (!split)
+  {
+    this->Elevations.resize(this->HeldCount * slotSteps.size());
+    for (std::size_t slot = 0; slot < slotSteps.size(); ++slot)
+      this->sweepWholeGrid(slotSteps[slot][0], slotSteps[slot][1], &this->Elevations[slot * this->PostCount]);
+  }
+  else if (split->sendsPointToPoint())
+    this->sweepWindows(slotSteps, *split);
+  else
+    this->sweepSharedAzimuths(slotSteps, *split);
+}
+
+std::vector<std::array<int, 2>> HorizonMap::placeAzimuths(bool dense)
+{
   // Azimuths in increasing order, each step's slot its rank.
   const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths(dense);
   std::vector<double> azimuths;
@@ -119,35 +77,28 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
   std::vector<int> order(steps.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return azimuths[a] < azimuths[b]; });
-  this->PostCount = static_cast<std::size_t>(terrain.postsX()) * terrain.postsY();
   const double det = this->Ux * this->Vy - this->Vx * this->Uy;
-  for (std::size_t slot = 0; slot < order.size(); ++slot)
+  std::vector<std::array<int, 2>> slotSteps;
+  for (const int step : order)
   {
-    const double a = azimuths[order[slot]], x = std::cos(a), y = std::sin(a);
+    const double a = azimuths[static_cast<std::size_t>(step)], x = std::cos(a), y = std::sin(a);
     this->Azimuths.push_back(a);
     this->AzimuthSteps.push_back({ (this->Vy * x - this->Vx * y) / det, (this->Ux * y - this->Uy * x) / det });
     this->AzimuthDirections.push_back({ x, y });
+    slotSteps.push_back(steps[static_cast<std::size_t>(step)]);
   }
-  const int nx = terrain.postsX(), ny = terrain.postsY();
-  this->Held = WorkSplit::ownWindow(split, nx, ny);
+  return slotSteps;
+}
+
+void HorizonMap::holdPosts()
+{
+  const int nx = this->Terrain.postsX(), ny = this->Terrain.postsY();
+  this->PostCount = static_cast<std::size_t>(nx) * ny;
   if (this->Held.empty())
     this->Held = {};
   this->HeldX = static_cast<std::size_t>(this->Held.i1 - this->Held.i0 + 1);
   this->HeldCount = this->HeldX * static_cast<std::size_t>(this->Held.j1 - this->Held.j0 + 1);
   this->HoldsAll = this->HeldCount == this->PostCount;
-  std::vector<std::array<int, 2>> slotSteps;
-  for (const int step : order)
-    slotSteps.push_back(steps[static_cast<std::size_t>(step)]);
-  if (!split)
-  {
-    this->Elevations.resize(this->HeldCount * slotSteps.size());
-    for (std::size_t slot = 0; slot < slotSteps.size(); ++slot)
-      this->sweepWholeGrid(slotSteps[slot][0], slotSteps[slot][1], &this->Elevations[slot * this->PostCount]);
-  }
-  else if (split->sendsPointToPoint())
-    this->sweepWindows(slotSteps, *split);
-  else
-    this->sweepSharedAzimuths(slotSteps, *split);
 }
 
 std::size_t HorizonMap::postsX() const
@@ -161,11 +112,10 @@ bool HorizonMap::fits(const TerrainGrid& terrain, bool dense)
   return bytes <= 2147483648.0;
 }
 
-void HorizonMap::fitMeanMap()
+void HorizonMap::fitMeanMap(const TerrainGrid& t)
 {
   // Mean steps along u and v over the valid cells, and the mean offset: posts outside
   // valid cells may hold anything. Counting them also tells whether any is missing.
-  const TerrainGrid& t = this->Terrain;
   // Row by row on every core, then summed in order: the same sums on every process
   // of a split, whose map must agree.
   struct Sums
@@ -399,11 +349,10 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
   });
 }
 
-void HorizonMap::measureRelief()
+std::array<double, 2> HorizonMap::reliefOf(const TerrainGrid& t)
 {
-  const TerrainGrid& t = this->Terrain;
   using Relief = std::array<double, 2>; // the steepest slope, the highest point
-  const auto [steepest, highest] = tbb::parallel_reduce(
+  return tbb::parallel_reduce(
     tbb::blocked_range<int>(0, t.cellsY()), Relief{ 0.0, -std::numeric_limits<double>::infinity() },
     [&](const tbb::blocked_range<int>& rows, Relief relief) {
       for (int j = rows.begin(); j < rows.end(); ++j)
@@ -420,6 +369,18 @@ void HorizonMap::measureRelief()
       return relief;
     },
     [](const Relief& a, const Relief& b) { return Relief{ std::max(a[0], b[0]), std::max(a[1], b[1]) }; });
+}
+
+void HorizonMap::measureRelief(const TerrainGrid* far)
+{
+  auto [steepest, highest] = reliefOf(this->Terrain);
+  if (far)
+  {
+    // Beyond the detail distance the sights pass over the far terrain: the proofs'
+    // bounds must hold over both surfaces.
+    const auto [farSteepest, farHighest] = reliefOf(*far);
+    steepest = std::max(steepest, farSteepest), highest = std::max(highest, farHighest);
+  }
   this->SteepestSlope = steepest;
   this->HighestZ = highest;
   // The shortest way to the edge u = 0 runs square to v's direction, against u's.

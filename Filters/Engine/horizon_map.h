@@ -45,6 +45,16 @@ public:
   /// else each sweeps a share of the azimuths over the whole grid and broadcasts it.
   /// Either way every held horizon is one process's, bit for bit.
   explicit HorizonMap(const TerrainGrid& terrain, bool dense = false, const WorkSplit* split = nullptr);
+  /// The horizons of a window of a terrain whose far terrain is given (a process's
+  /// piece and halo; RadiosityScene::farTerrain), as its rays see them (Visibility):
+  /// the window's own triangles within `detailDistance` of the post (horizontally),
+  /// the far terrain beyond, and where the far surface stands above a sight at that
+  /// distance. Each horizon is a function of the terrain within detailDistance of its
+  /// post and of the far terrain alone, so overlapping windows agree on the posts
+  /// they share, bit for bit, as long as each holds detailDistance of terrain around
+  /// them (posts nearer its edge see it cut short). The azimuths are those of the far
+  /// terrain's mean map, the same on every window; proofs bound both surfaces.
+  HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance, bool dense = false);
   static constexpr int standardAzimuths = 32, maximumAzimuths = 64; // dense: the maximum
   int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
   /// Whether the map of `terrain` fits the 2 GiB it may take (64 bytes a post, 128
@@ -186,7 +196,11 @@ public:
   double steepestSlope() const { return this->SteepestSlope; }
 
 private:
-  void fitMeanMap();
+  /// The map's azimuths from its mean map; the steps of the slots, in order.
+  std::vector<std::array<int, 2>> placeAzimuths(bool dense);
+  /// Sizes the map to the posts of Held.
+  void holdPosts();
+  void fitMeanMap(const TerrainGrid& grid);
   /// A point of a line's profile: distance along the azimuth, height (m).
   struct HullPoint
   {
@@ -218,6 +232,9 @@ private:
     const std::vector<Capture>& captures = {}, std::vector<Hull>* captured = nullptr) const;
   /// The same at every post of the grid.
   void sweepWholeGrid(int q, int p, std::uint16_t* out) const;
+  /// A window's horizons toward step (q, p), at every post of its grid
+  /// (horizon_window.cxx).
+  void sweepWindow(int q, int p, const GivenFarTerrain& far, double detailDistance, std::uint16_t* out) const;
   /// The split's two ways (horizon_handoff.cxx): each process sweeps its window and
   /// hands hulls on along the lines; or each sweeps a share of the azimuths at every
   /// post and broadcasts it.
@@ -230,6 +247,9 @@ private:
   double X0 = 0.0, Y0 = 0.0, Ux = 1.0, Uy = 0.0, Vx = 0.0, Vy = 1.0;
   bool Complete = true; ///< no missing cells (from fitMeanMap)
   double SteepestSlope = 0.0, HighestZ = 0.0; // of the valid cells
+  /// Where the terrain the sights pass over ends, in the map's post parameters: the
+  /// grid's own edges, or a window's far terrain's.
+  double ExtentU0 = 0.0, ExtentU1 = 0.0, ExtentV0 = 0.0, ExtentV1 = 0.0;
   // Toward the edges u = 0, u = max, v = 0, v = max: the azimuth of the shortest way.
   std::array<double, 4> EdgeAzimuths{};
   double edgeDistance(int i, int j, int edge) const;
@@ -242,7 +262,9 @@ private:
   /// azimuths k and k + 1 (where the exit distance can exceed both ends'): brackets
   /// are narrower than pi, so by the signs of two cross products.
   bool cornerWithin(int i, int j, int k) const;
-  void measureRelief();
+  static std::array<double, 2> reliefOf(const TerrainGrid& grid); // the steepest slope, the highest point
+  /// SteepestSlope and HighestZ over the grid (and `far`, where given); EdgeAzimuths.
+  void measureRelief(const TerrainGrid* far = nullptr);
   /// What clearlyAbove and clearlyBelow allow for the map's quantisation and mean directions.
   double proofMargin() const { return 1e-3 + 2e-3 * this->SteepestSlope; }
   std::vector<double> Azimuths;

@@ -30,34 +30,32 @@ HorizonMap::Bearing HorizonMap::bearing(double azimuth) const
 
 double HorizonMap::edgeDistance(int i, int j, int edge) const
 {
-  const TerrainGrid& t = this->Terrain;
   const double area = std::abs(this->Ux * this->Vy - this->Vx * this->Uy);
   switch (edge)
   {
     case 0:
-      return i * area / std::hypot(this->Vx, this->Vy);
+      return (i - this->ExtentU0) * area / std::hypot(this->Vx, this->Vy);
     case 1:
-      return (t.postsX() - 1 - i) * area / std::hypot(this->Vx, this->Vy);
+      return (this->ExtentU1 - i) * area / std::hypot(this->Vx, this->Vy);
     case 2:
-      return j * area / std::hypot(this->Ux, this->Uy);
+      return (j - this->ExtentV0) * area / std::hypot(this->Ux, this->Uy);
     default:
-      return (t.postsY() - 1 - j) * area / std::hypot(this->Ux, this->Uy);
+      return (this->ExtentV1 - j) * area / std::hypot(this->Ux, this->Uy);
   }
 }
 
 double HorizonMap::exitDistance(int i, int j, int k) const
 {
   const double du = this->AzimuthSteps[k][0], dv = this->AzimuthSteps[k][1];
-  const TerrainGrid& t = this->Terrain;
   double r = std::numeric_limits<double>::infinity();
   if (du > 0.0)
-    r = std::min(r, (t.postsX() - 1 - i) / du);
+    r = std::min(r, (this->ExtentU1 - i) / du);
   else if (du < 0.0)
-    r = std::min(r, -i / du);
+    r = std::min(r, (this->ExtentU0 - i) / du);
   if (dv > 0.0)
-    r = std::min(r, (t.postsY() - 1 - j) / dv);
+    r = std::min(r, (this->ExtentV1 - j) / dv);
   else if (dv < 0.0)
-    r = std::min(r, -j / dv);
+    r = std::min(r, (this->ExtentV0 - j) / dv);
   return r;
 }
 
@@ -73,13 +71,12 @@ double HorizonMap::riseOver(int i, int j, double distance) const
 
 bool HorizonMap::cornerWithin(int i, int j, int k) const
 {
-  const TerrainGrid& t = this->Terrain;
   const auto [x0, y0] = this->AzimuthDirections[k];
   const auto [x1, y1] = this->AzimuthDirections[(k + 1) % this->azimuthCount()];
-  for (const int ci : { 0, t.postsX() - 1 })
-    for (const int cj : { 0, t.postsY() - 1 })
+  for (const double ci : { this->ExtentU0, this->ExtentU1 })
+    for (const double cj : { this->ExtentV0, this->ExtentV1 })
     {
-      const int du = ci - i, dv = cj - j;
+      const double du = ci - i, dv = cj - j;
       const double x = this->Ux * du + this->Vx * dv, y = this->Uy * du + this->Vy * dv;
       // Strictly: a corner on a bracket's end (rounding aside) is that end's distance.
       const double below = x0 * y - y0 * x, above = x * y1 - y * x1, tolerance = 1e-18 * (x * x + y * y);

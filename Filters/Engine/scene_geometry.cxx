@@ -28,14 +28,20 @@ const Visibility& SceneGeometry::hierarchyRays() const
 const HorizonMap& SceneGeometry::horizons(std::size_t index, bool dense, const WorkSplit* split)
 {
   const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
+  auto build = [&](bool denseMap) {
+    // A window with its far terrain given sees that terrain beyond the detail distance.
+    if (this->GivenFar.grid && this->Far.detailDistance > 0.0)
+      return std::make_unique<HorizonMap>(*this->Terrains[index], this->GivenFar, this->Far.detailDistance, denseMap);
+    return std::make_unique<HorizonMap>(*this->Terrains[index], denseMap, split);
+  };
   if (dense || this->DenseHorizons[index])
   {
     if (!this->DenseHorizons[index])
-      this->DenseHorizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index], true, split);
+      this->DenseHorizons[index] = build(true);
     return *this->DenseHorizons[index];
   }
   if (!this->Horizons[index])
-    this->Horizons[index] = std::make_unique<HorizonMap>(*this->Terrains[index], false, split);
+    this->Horizons[index] = build(false);
   return *this->Horizons[index];
 }
 

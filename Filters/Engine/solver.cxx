@@ -276,9 +276,9 @@ void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
   if (!this->Horizons || !this->HeightFieldGrid || this->PostSkies)
     return;
   // Beyond the map's memory the posts keep the rays' horizons, slower but within the
-  // memory the rest of the solve needs; so do a window's, whose map would end at its
-  // edges.
-  if (this->Window || !HorizonMap::fits(*this->HeightFieldGrid))
+  // memory the rest of the solve needs. A window's map sees its far terrain beyond the
+  // detail distance, as its rays do.
+  if (!HorizonMap::fits(*this->HeightFieldGrid))
     return;
   const auto start = std::chrono::steady_clock::now();
   // The one terrain's horizons: built by the first solve over this geometry, reused by
@@ -315,7 +315,7 @@ void HierarchicalRadiosity::findSunHorizons()
   if (!grid || this->PointSuns.empty())
     return;
   const HorizonMap* map = this->PostHorizons;
-  if (!map && !this->Window && this->PointSuns.size() >= sunsForHorizonMap && HorizonMap::fits(*grid))
+  if (!map && this->PointSuns.size() >= sunsForHorizonMap && HorizonMap::fits(*grid))
   {
     const auto start = std::chrono::steady_clock::now();
     map = &this->Geometry->horizons(0, this->wantsDenseHorizons(), this->Split);

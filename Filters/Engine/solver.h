@@ -368,7 +368,7 @@ private:
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<const TerrainGrid*> PostGrids;    // the scene's terrains: what outputs read
-  bool Window = false; // the terrain is a window of a grid whose far terrain is given (no horizon map)
+  bool Window = false; // the terrain is a window of a grid whose far terrain is given
   std::unique_ptr<FarTerrain> HierarchyTerrain; // with a far sight: the grid the hierarchy is built on
   std::vector<PolygonElement*> TopSurfaces; // what the clusters are built on
   Cluster* RootCluster = nullptr;

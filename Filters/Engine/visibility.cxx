@@ -334,8 +334,10 @@ bool castOcclusion(RTCScene scene, const Vec3& origin, const Vec3& direction, do
 
 double Visibility::detailEnd(const Vec3& d) const
 {
+  // A ray within 1e-9 rad of the vertical leaves it hundreds of thousands of km away,
+  // past anything (and past the coordinates Embree takes): never.
   const double across = std::hypot(d.x, d.y);
-  return this->Far && across > 0.0 ? this->DetailDistance / across : std::numeric_limits<double>::infinity();
+  return this->Far && across > 1e-9 ? this->DetailDistance / across : std::numeric_limits<double>::infinity();
 }
 
 bool Visibility::blocked(const Vec3& origin, const Vec3& d, double tnear, double tfar) const

@@ -1,0 +1,121 @@
+// A window's horizons (an MPI process's piece and halo, its far terrain given): what
+// its rays see, the window's triangles within the detail distance and the far terrain
+// beyond, checked with those rays; the same at a post from any window that holds the
+// detail distance around it, bit for bit; and what they prove of a sun, rays find so.
+#include "far_terrain.h"
+#include "horizon_checks.h"
+#include "horizon_map.h"
+#include "terrain_grids.h"
+#include "visibility.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+
+using namespace terralux;
+using namespace terralux_test;
+
+namespace
+{
+/// Ridges 30 m apart, and a mountain 1.2 km high in the east: from most posts it
+/// stands beyond the detail distance, where only the far terrain shows it.
+std::unique_ptr<TerrainGrid> ridgesAndMountain()
+{
+  return makeGrid(193, 161, 30.0, [](double x, double y) {
+    const double mountain = 1200.0 * std::exp(-(std::pow(x - 5200.0, 2) + std::pow(y - 2400.0, 2)) / (2.0 * 500.0 * 500.0));
+    return 150.0 * std::sin(x / 700.0) * std::cos(y / 1100.0) + 60.0 * std::sin((x + 2.0 * y) / 400.0) +
+      12.0 * std::sin(x / 90.0 + 1.3) * std::sin(y / 110.0) + mountain;
+  });
+}
+
+/// Posts [i0, i0 + nx) x [j0, j0 + ny) of `grid`, its origin kept.
+std::unique_ptr<TerrainGrid> windowOf(const TerrainGrid& grid, int i0, int j0, int nx, int ny)
+{
+  auto window = std::make_unique<TerrainGrid>(nx, ny, grid.origin());
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      window->setPost(i, j, grid.post(i0 + i, j0 + j));
+  return window;
+}
+
+constexpr double detail = 450.0; // 15 posts
+constexpr int stride = 4;
+} // namespace
+
+TEST(HorizonWindow, AWindowsHorizonsAreThoseItsRaysSee)
+{
+  const auto grid = ridgesAndMountain();
+  const FarTerrain far(*grid, stride);
+  const int i0 = 24, j0 = 8;
+  const auto window = windowOf(*grid, i0, j0, 121, 121);
+  const GivenFarTerrain given{ &far.grid(), stride, i0, j0 };
+  const HorizonMap map(*window, given, detail);
+  RadiosityScene scene = sceneOf({ window.get() });
+  scene.farTerrain = given;
+  const Visibility rays(scene, FarSight{ stride, detail });
+  ASSERT_TRUE(rays.farTerrain());
+  // Posts at least the detail distance inside the window's edges.
+  int blocked = 0, checked = 0;
+  for (int j = 15; j <= 105; j += 6)
+    for (int i = 15; i <= 105; i += 7)
+    {
+      blocked += checkAgainstRays(map, rays, *window, i, j, 0.3 * degree);
+      checked += map.azimuthCount();
+    }
+  EXPECT_GT(blocked, checked / 2);
+  // Toward the mountain (east) from a post 2 km west of it, the far terrain alone
+  // makes the horizon: the window's triangles within 450 m rise less.
+  const HorizonMap::Post post = map.find(window->post(105 - i0, 80 - j0));
+  ASSERT_TRUE(post);
+  const double mountainTop = std::atan((grid->post(173, 80).z - grid->post(105, 80).z) / 2040.0);
+  EXPECT_GT(map.elevation(post, 0), 0.9 * mountainTop);
+}
+
+TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
+{
+  const auto grid = ridgesAndMountain();
+  const FarTerrain far(*grid, stride);
+  const HorizonMap whole(*grid, GivenFarTerrain{ &far.grid(), stride, 0, 0 }, detail);
+  // Two windows of different extents, neither a multiple of the stride from the grid's
+  // first post.
+  for (const auto& [i0, j0, nx, ny] : { std::array<int, 4>{ 24, 8, 121, 121 }, std::array<int, 4>{ 61, 37, 90, 100 } })
+  {
+    const auto window = windowOf(*grid, i0, j0, nx, ny);
+    const HorizonMap map(*window, GivenFarTerrain{ &far.grid(), stride, i0, j0 }, detail);
+    ASSERT_EQ(map.azimuthCount(), whole.azimuthCount());
+    for (int a = 0; a < map.azimuthCount(); ++a)
+      ASSERT_EQ(map.azimuths()[a], whole.azimuths()[a]);
+    int compared = 0;
+    for (int j = 16; j < ny - 16; ++j)
+      for (int i = 16; i < nx - 16; ++i)
+      {
+        const HorizonMap::Post here = map.find(window->post(i, j)), there = whole.find(grid->post(i0 + i, j0 + j));
+        ASSERT_TRUE(here && there);
+        for (int a = 0; a < map.azimuthCount(); ++a)
+          ASSERT_EQ(map.elevation(here, a), whole.elevation(there, a)) << i << " " << j << " azimuth " << a;
+        ++compared;
+      }
+    EXPECT_EQ(compared, (nx - 32) * (ny - 32));
+  }
+}
+
+TEST(HorizonWindow, WhatAWindowsHorizonsProveRaysFindSo)
+{
+  const auto grid = ridgesAndMountain();
+  const FarTerrain far(*grid, stride);
+  const int i0 = 40, j0 = 16;
+  const auto window = windowOf(*grid, i0, j0, 113, 129);
+  const GivenFarTerrain given{ &far.grid(), stride, i0, j0 };
+  for (const bool dense : { false, true })
+  {
+    const HorizonMap map(*window, given, detail, dense);
+    RadiosityScene scene = sceneOf({ window.get() });
+    scene.farTerrain = given;
+    const Visibility rays(scene, FarSight{ stride, detail });
+    const Proven share = checkProofs(map, rays, *window, 15, 97, 15, 113, 4);
+    EXPECT_GT(share.open, 0.4) << "share " << share.open;
+    EXPECT_GT(share.shadowed, 0.2) << "share " << share.shadowed;
+  }
+}
