@@ -371,17 +371,10 @@ std::array<double, 2> HorizonMap::reliefOf(const TerrainGrid& t)
     [](const Relief& a, const Relief& b) { return Relief{ std::max(a[0], b[0]), std::max(a[1], b[1]) }; });
 }
 
-void HorizonMap::measureRelief(const TerrainGrid* far)
+void HorizonMap::measureRelief()
 {
-  auto [steepest, highest] = reliefOf(this->Terrain);
-  if (far)
-  {
-    // Beyond the detail distance the sights pass over the far terrain: the proofs'
-    // bounds must hold over both surfaces.
-    const auto [farSteepest, farHighest] = reliefOf(*far);
-    steepest = std::max(steepest, farSteepest), highest = std::max(highest, farHighest);
-  }
-  this->SteepestSlope = steepest;
+  const auto [steepest, highest] = reliefOf(this->Terrain);
+  this->SteepestSlope = this->MarginSlope = steepest;
   this->HighestZ = highest;
   // The shortest way to the edge u = 0 runs square to v's direction, against u's.
   const Vec3 u(this->Ux, this->Uy, 0.0), v(this->Vx, this->Vy, 0.0);

@@ -108,8 +108,7 @@ public:
   {
     Bearing bearing;
     double elevation = 0.0;        ///< radians
-    double riseBelow = 0.0, riseAbove = 0.0; ///< S x the turns to the mapped azimuths
-    double dropBelow = 0.0, dropAbove = 0.0; ///< 2 S sin(turn / 2)
+    double chordBelow = 0.0, chordAbove = 0.0; ///< 2 sin(turn / 2) to the mapped azimuths
     double tanWithMargin = 0.0;    ///< tan(elevation + margin); +inf at or past the zenith
     double tanLessMargin = 0.0;    ///< tan(elevation - margin); -inf at or below the nadir
   };
@@ -138,8 +137,8 @@ public:
       // The mapped horizons alone first (most suns over a day or a year end here):
       // where they do not prove the sight open, the distances need not be found.
       const int k = sight.bearing.k;
-      const double fromBelow = this->elevation(k) + sight.riseBelow;
-      const double fromAbove = this->elevation(this->next(k)) + sight.riseAbove;
+      const double fromBelow = this->elevation(k) + this->Slope * sight.bearing.fromBelow;
+      const double fromAbove = this->elevation(this->next(k)) + this->Slope * sight.bearing.toAbove;
       return sight.elevation > std::min(fromBelow, fromAbove) + this->Margin &&
         this->clearPastNeighbours(sight, fromBelow, fromAbove);
     }
@@ -186,14 +185,28 @@ public:
     int I, J;         // the post's grid indices
     int Count;
     double Margin; // proofMargin(), or +inf where the map proves nothing
+    double Slope;  // S around the post
     std::array<float, maximumAzimuths> Elevations, Tangents;
     std::array<Reach, maximumAzimuths> Reaches;
     std::uint64_t Read = 0, Tangent = 0, Reached = 0; // bit k: found
   };
   /// Whether every cell of the grid is valid (clearlyAbove and clearlyBelow need it).
   bool complete() const { return this->Complete; }
-  /// The steepest slope (tan) of the grid's triangles: S above.
-  double steepestSlope() const { return this->SteepestSlope; }
+  /// The steepest slope (tan) of the triangles that bound post (i, j)'s sights: S
+  /// above. The grid's steepest; in a window's map, the steepest within the detail
+  /// distance of the post (a box of posts around it) or of the far terrain, which
+  /// windows holding that box agree on.
+  double slopeAt(int i, int j) const
+  {
+    return this->LocalSlope.empty() ? this->SteepestSlope : this->LocalSlope[this->localIndex(i, j)];
+  }
+  /// The highest point that can rise in post (i, j)'s sights past an exit distance:
+  /// the grid's highest; in a window's map, the highest within the detail distance of
+  /// the post or of the far terrain.
+  double highestAt(int i, int j) const
+  {
+    return this->LocalHighest.empty() ? this->HighestZ : this->LocalHighest[this->localIndex(i, j)];
+  }
 
 private:
   /// The map's azimuths from its mean map; the steps of the slots, in order.
@@ -247,6 +260,12 @@ private:
   double X0 = 0.0, Y0 = 0.0, Ux = 1.0, Uy = 0.0, Vx = 0.0, Vy = 1.0;
   bool Complete = true; ///< no missing cells (from fitMeanMap)
   double SteepestSlope = 0.0, HighestZ = 0.0; // of the valid cells
+  /// A window's: slopeAt and highestAt of each post (horizon_window.cxx), and the
+  /// slope its margin takes (the far terrain's, the same in every window).
+  std::vector<float> LocalSlope, LocalHighest;
+  double MarginSlope = 0.0;
+  std::size_t localIndex(int i, int j) const { return static_cast<std::size_t>(j) * this->postsX() + i; }
+  void findLocalRelief(const TerrainGrid& far, double detailDistance);
   /// Where the terrain the sights pass over ends, in the map's post parameters: the
   /// grid's own edges, or a window's far terrain's.
   double ExtentU0 = 0.0, ExtentU1 = 0.0, ExtentV0 = 0.0, ExtentV1 = 0.0;
@@ -263,10 +282,10 @@ private:
   /// are narrower than pi, so by the signs of two cross products.
   bool cornerWithin(int i, int j, int k) const;
   static std::array<double, 2> reliefOf(const TerrainGrid& grid); // the steepest slope, the highest point
-  /// SteepestSlope and HighestZ over the grid (and `far`, where given); EdgeAzimuths.
-  void measureRelief(const TerrainGrid* far = nullptr);
+  /// SteepestSlope and HighestZ over the grid; EdgeAzimuths.
+  void measureRelief();
   /// What clearlyAbove and clearlyBelow allow for the map's quantisation and mean directions.
-  double proofMargin() const { return 1e-3 + 2e-3 * this->SteepestSlope; }
+  double proofMargin() const { return 1e-3 + 2e-3 * this->MarginSlope; }
   std::vector<double> Azimuths;
   /// A metre along each azimuth in grid parameters (the mean map inverted).
   std::vector<std::array<double, 2>> AzimuthSteps;

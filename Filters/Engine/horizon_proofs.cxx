@@ -61,7 +61,7 @@ double HorizonMap::exitDistance(int i, int j, int k) const
 
 double HorizonMap::riseOver(int i, int j, double distance) const
 {
-  const double rise = this->HighestZ - this->Terrain.post(i, j).z;
+  const double rise = this->highestAt(i, j) - this->Terrain.post(i, j).z;
   if (rise <= 0.0)
     return 0.0;
   // A little nearer for the grid's departures from its mean map.
@@ -91,11 +91,8 @@ HorizonMap::Sight HorizonMap::sight(double azimuth, double elevation) const
   Sight s;
   s.bearing = this->bearing(azimuth);
   s.elevation = elevation;
-  const double S = this->SteepestSlope;
-  s.riseBelow = S * s.bearing.fromBelow;
-  s.riseAbove = S * s.bearing.toAbove;
-  s.dropBelow = 2.0 * S * std::sin(0.5 * s.bearing.fromBelow);
-  s.dropAbove = 2.0 * S * std::sin(0.5 * s.bearing.toAbove);
+  s.chordBelow = 2.0 * std::sin(0.5 * s.bearing.fromBelow);
+  s.chordAbove = 2.0 * std::sin(0.5 * s.bearing.toAbove);
   const double raised = elevation + this->proofMargin();
   s.tanWithMargin = raised < 0.5 * pi ? std::tan(raised) : std::numeric_limits<double>::infinity();
   const double lowered = elevation - this->proofMargin();
@@ -110,6 +107,7 @@ HorizonMap::View::View(const HorizonMap& map, const Post& post)
   , J(static_cast<int>(post.index / static_cast<std::size_t>(map.Terrain.postsX())))
   , Count(map.azimuthCount())
   , Margin(map.complete() ? map.proofMargin() : std::numeric_limits<double>::infinity())
+  , Slope(map.slopeAt(this->I, this->J))
 {
 }
 
@@ -178,7 +176,8 @@ bool HorizonMap::View::clearlyBelow(const Sight& sight)
   const int k = sight.bearing.k;
   // In tangents: tan(elevation + margin) < tan H_k - drop, the same as elevation below
   // atan(tan H_k - drop) - margin.
-  for (const auto& [side, drop] : { std::pair<int, double>{ k, sight.dropBelow }, { this->next(k), sight.dropAbove } })
+  for (const auto& [side, drop] :
+    { std::pair<int, double>{ k, this->Slope * sight.chordBelow }, { this->next(k), this->Slope * sight.chordAbove } })
   {
     const double horizon = this->elevation(side);
     if (horizon > margin && horizon < 0.5 * pi && sight.tanWithMargin < this->tangent(side) - drop &&

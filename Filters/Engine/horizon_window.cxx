@@ -171,6 +171,43 @@ long long floorDivide(long long a, long long b)
 {
   return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
+
+/// out[k] = the largest of in[k - r .. k + r] (within 0 .. n - 1), for n values
+/// `step` apart: a monotone queue of candidates, each pushed and dropped once.
+void maximumWithin(const float* in, float* out, std::ptrdiff_t step, int n, int r, std::vector<int>& queue)
+{
+  queue.assign(static_cast<std::size_t>(n), 0);
+  std::size_t head = 0, tail = 0; // queue[head, tail): indices, their values decreasing
+  int next = 0;                   // the next index to enter
+  for (int k = 0; k < n; ++k)
+  {
+    for (; next < n && next <= k + r; ++next)
+    {
+      while (tail > head && in[queue[tail - 1] * step] <= in[next * step])
+        --tail;
+      queue[tail++] = next;
+    }
+    while (queue[head] < k - r)
+      ++head;
+    out[k * step] = in[queue[head] * step];
+  }
+}
+
+/// The largest value within r of each of a w x h array's, in both directions.
+std::vector<float> maximumWithinBox(std::vector<float> values, int w, int h, int r)
+{
+  std::vector<float> rows(values.size());
+  tbb::parallel_for(0, h, [&](int j) {
+    std::vector<int> queue;
+    const std::size_t row = static_cast<std::size_t>(j) * w;
+    maximumWithin(&values[row], &rows[row], 1, w, r, queue);
+  });
+  tbb::parallel_for(0, w, [&](int i) {
+    std::vector<int> queue;
+    maximumWithin(&rows[i], &values[i], w, h, r, queue);
+  });
+  return values;
+}
 } // namespace
 
 HorizonMap::HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance, bool dense)
@@ -187,7 +224,8 @@ HorizonMap::HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, do
   this->X0 += shift.x + (this->Ux * far.i0 + this->Vx * far.j0) / s;
   this->Y0 += shift.y + (this->Uy * far.i0 + this->Vy * far.j0) / s;
   this->Ux /= s, this->Uy /= s, this->Vx /= s, this->Vy /= s;
-  this->measureRelief(far.grid);
+  this->measureRelief();
+  this->findLocalRelief(*far.grid, detailDistance);
   this->ExtentU0 = -far.i0, this->ExtentV0 = -far.j0;
   this->ExtentU1 = (far.grid->postsX() - 1) * s - far.i0, this->ExtentV1 = (far.grid->postsY() - 1) * s - far.j0;
   const std::vector<std::array<int, 2>> slotSteps = this->placeAzimuths(dense);
@@ -197,6 +235,50 @@ HorizonMap::HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, do
   for (std::size_t slot = 0; slot < slotSteps.size(); ++slot)
     this->sweepWindow(
       slotSteps[slot][0], slotSteps[slot][1], far, detailDistance, &this->Elevations[slot * this->PostCount]);
+}
+
+void HorizonMap::findLocalRelief(const TerrainGrid& far, double detailDistance)
+{
+  // The far terrain's relief bounds every sight past the detail distance; within it,
+  // the window's triangles in a box of posts that holds the distance around the post.
+  const auto [farSteepest, farHighest] = reliefOf(far);
+  this->MarginSlope = farSteepest;
+  const TerrainGrid& t = this->Terrain;
+  const int nx = t.postsX(), ny = t.postsY();
+  const double spacing = std::min(std::hypot(this->Ux, this->Uy), std::hypot(this->Vx, this->Vy));
+  const double posts = spacing > 0.0 ? std::ceil(detailDistance / spacing) + 1.0 : 0.0;
+  const int r = static_cast<int>(std::min<double>(posts, std::max(nx, ny)));
+  const float lowest = -std::numeric_limits<float>::infinity();
+  std::vector<float> slopes(static_cast<std::size_t>(nx) * ny, 0.0f), heights(slopes.size(), lowest);
+  // A cell's slopes at its four posts (a post's box then holds the cells around it).
+  tbb::parallel_for(0, ny, [&](int j) {
+    for (int i = 0; i < nx; ++i)
+    {
+      float steepest = 0.0f;
+      for (int cj = std::max(0, j - 1); cj <= std::min(j, ny - 2); ++cj)
+        for (int ci = std::max(0, i - 1); ci <= std::min(i, nx - 2); ++ci)
+          if (t.cellValid(ci, cj))
+            for (const TerrainGrid::Triangle& triangle : t.cellTriangles(ci, cj))
+            {
+              const Vec3 n = TerrainGrid::areaVector(triangle);
+              if (n.z > 0.0)
+                steepest = std::max(steepest, static_cast<float>(std::hypot(n.x, n.y) / n.z));
+            }
+      const std::size_t k = static_cast<std::size_t>(j) * nx + i;
+      slopes[k] = steepest;
+      if (t.postUsed(i, j))
+        heights[k] = static_cast<float>(t.post(i, j).z);
+    }
+  });
+  this->LocalSlope = maximumWithinBox(std::move(slopes), nx, ny, r);
+  this->LocalHighest = maximumWithinBox(std::move(heights), nx, ny, r);
+  // Rounded up to the next float: a bound stays a bound.
+  const float farSlope = std::nextafter(static_cast<float>(farSteepest), std::numeric_limits<float>::infinity());
+  const float farTop = std::nextafter(static_cast<float>(farHighest), std::numeric_limits<float>::infinity());
+  tbb::parallel_for(std::size_t{ 0 }, this->LocalSlope.size(), [&](std::size_t k) {
+    this->LocalSlope[k] = std::nextafter(std::max(this->LocalSlope[k], farSlope), std::numeric_limits<float>::infinity());
+    this->LocalHighest[k] = std::nextafter(std::max(this->LocalHighest[k], farTop), std::numeric_limits<float>::infinity());
+  });
 }
 
 void HorizonMap::sweepWindow(

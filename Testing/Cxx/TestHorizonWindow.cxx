@@ -1,7 +1,8 @@
 // A window's horizons (an MPI process's piece and halo, its far terrain given): what
 // its rays see, the window's triangles within the detail distance and the far terrain
 // beyond, checked with those rays; the same at a post from any window that holds the
-// detail distance around it, bit for bit; and what they prove of a sun, rays find so.
+// detail distance around it, bit for bit, with the bounds its proofs take; and what
+// they prove of a sun, rays find so.
 #include "far_terrain.h"
 #include "horizon_checks.h"
 #include "horizon_map.h"
@@ -77,13 +78,16 @@ TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
 {
   const auto grid = ridgesAndMountain();
   const FarTerrain far(*grid, stride);
-  const HorizonMap whole(*grid, GivenFarTerrain{ &far.grid(), stride, 0, 0 }, detail);
+  for (const bool dense : { false, true })
+  {
+  SCOPED_TRACE(dense ? "dense" : "standard");
+  const HorizonMap whole(*grid, GivenFarTerrain{ &far.grid(), stride, 0, 0 }, detail, dense);
   // Two windows of different extents, neither a multiple of the stride from the grid's
   // first post.
   for (const auto& [i0, j0, nx, ny] : { std::array<int, 4>{ 24, 8, 121, 121 }, std::array<int, 4>{ 61, 37, 90, 100 } })
   {
     const auto window = windowOf(*grid, i0, j0, nx, ny);
-    const HorizonMap map(*window, GivenFarTerrain{ &far.grid(), stride, i0, j0 }, detail);
+    const HorizonMap map(*window, GivenFarTerrain{ &far.grid(), stride, i0, j0 }, detail, dense);
     ASSERT_EQ(map.azimuthCount(), whole.azimuthCount());
     for (int a = 0; a < map.azimuthCount(); ++a)
       ASSERT_EQ(map.azimuths()[a], whole.azimuths()[a]);
@@ -95,9 +99,13 @@ TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
         ASSERT_TRUE(here && there);
         for (int a = 0; a < map.azimuthCount(); ++a)
           ASSERT_EQ(map.elevation(here, a), whole.elevation(there, a)) << i << " " << j << " azimuth " << a;
+        // And what the proofs bound the sights with.
+        ASSERT_EQ(map.slopeAt(i, j), whole.slopeAt(i0 + i, j0 + j)) << i << " " << j;
+        ASSERT_EQ(map.highestAt(i, j), whole.highestAt(i0 + i, j0 + j)) << i << " " << j;
         ++compared;
       }
     EXPECT_EQ(compared, (nx - 32) * (ny - 32));
+  }
   }
 }
 
