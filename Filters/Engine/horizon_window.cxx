@@ -72,7 +72,26 @@ public:
   void clear() { this->Points.clear(); }
   void push(const Point& point)
   {
-    // Drops the nearest points that the new one and the next hide.
+    this->dropHiddenBy(point);
+    this->Points.push_back(point);
+  }
+  /// The steepest slope from a point about to be pushed: the nearest point once those
+  /// it hides are dropped.
+  double steepestFromNext(const Point& from)
+  {
+    this->dropHiddenBy(from);
+    return this->Points.empty() ? -std::numeric_limits<double>::infinity() : slopeBetween(from, this->Points.back());
+  }
+  double steepestFrom(const Point& from) const
+  {
+    const std::size_t n = this->Points.size();
+    return steepestOnChain(n, [&](std::size_t k) { return this->Points[n - 1 - k]; }, from);
+  }
+
+private:
+  /// Drops the nearest points that `point` and the next hide.
+  void dropHiddenBy(const Point& point)
+  {
     while (this->Points.size() >= 2)
     {
       const Point& a = this->Points[this->Points.size() - 1];
@@ -82,15 +101,7 @@ public:
       else
         break;
     }
-    this->Points.push_back(point);
   }
-  double steepestFrom(const Point& from) const
-  {
-    const std::size_t n = this->Points.size();
-    return steepestOnChain(n, [&](std::size_t k) { return this->Points[n - 1 - k]; }, from);
-  }
-
-private:
   std::vector<Point> Points; // farthest first
 };
 
@@ -155,17 +166,30 @@ private:
   std::vector<Undo> Undos;
 };
 
-/// The height of a profile (increasing x, linear between its points) at x, or -inf
-/// outside it.
-double heightAt(const std::vector<Point>& profile, std::size_t first, double x)
+/// The height of a profile (increasing x, linear between its points) at a distance
+/// that only decreases, as the sweep steps back: -inf outside it.
+class ProfileCut
 {
-  const auto after = std::upper_bound(
-    profile.begin() + static_cast<std::ptrdiff_t>(first), profile.end(), x, [](double v, const Point& p) { return v < p.x; });
-  if (after == profile.begin() + static_cast<std::ptrdiff_t>(first) || after == profile.end())
-    return -std::numeric_limits<double>::infinity();
-  const Point &a = *(after - 1), &b = *after;
-  return b.x > a.x ? a.z + (x - a.x) / (b.x - a.x) * (b.z - a.z) : a.z;
-}
+public:
+  explicit ProfileCut(const std::vector<Point>& profile)
+    : Profile(profile)
+    , After(profile.size())
+  {
+  }
+  double heightAt(double x, std::size_t first)
+  {
+    while (this->After > first && this->Profile[this->After - 1].x > x)
+      --this->After;
+    if (this->After <= first || this->After == this->Profile.size())
+      return -std::numeric_limits<double>::infinity();
+    const Point &a = this->Profile[this->After - 1], &b = this->Profile[this->After];
+    return b.x > a.x ? a.z + (x - a.x) / (b.x - a.x) * (b.z - a.z) : a.z;
+  }
+
+private:
+  const std::vector<Point>& Profile;
+  std::size_t After; // the first point beyond the last distance asked
+};
 
 long long floorDivide(long long a, long long b)
 {
@@ -309,10 +333,28 @@ void HorizonMap::sweepWindow(
   const Vec3 origin = t.origin();
   // Where the far terrain's posts lie in its parameters U, V (a window post's over s).
   const double farLastU = far.postsX() - 1, farLastV = far.postsY() - 1;
+  // The far surface at (U, V) on the line, in the window's frame: on the triangle of
+  // its cell that rays meet (TerrainGrid::cellTriangles' split).
+  const float* farXyz = far.vertices();
+  const Vec3 farShift = far.origin() - origin;
+  auto farPoint = [&](double u, double v) {
+    const int i = std::clamp(static_cast<int>(std::floor(u)), 0, far.postsX() - 2);
+    const int j = std::clamp(static_cast<int>(std::floor(v)), 0, far.postsY() - 2);
+    const double a = std::clamp(u - i, 0.0, 1.0), b = std::clamp(v - j, 0.0, 1.0);
+    auto corner = [&](int di, int dj) {
+      const float* c = farXyz + 3 * (static_cast<std::size_t>(j + dj) * far.postsX() + i + di);
+      return Vec3(c[0], c[1], c[2]);
+    };
+    const Vec3 p10 = corner(1, 0), p01 = corner(0, 1);
+    const Vec3 at = a + b <= 1.0 ? corner(0, 0) + a * (p10 - corner(0, 0)) + b * (p01 - corner(0, 0))
+                                 : corner(1, 1) + (1.0 - a) * (p01 - corner(1, 1)) + (1.0 - b) * (p10 - corner(1, 1));
+    const Vec3 position = at + farShift;
+    return Point{ position.x * dx + position.y * dy, position.z };
+  };
 
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs.size(), 8), [&](const tbb::blocked_range<std::size_t>& r) {
     std::vector<Point> profile, farProfile;
-    std::vector<std::uint8_t> onTerrain;
+    std::vector<std::uint8_t> onTerrain; // and a point some hull may keep
     std::vector<std::size_t> postAt;
     std::vector<double> farT;
     HullBehind rest, beyond;
@@ -329,9 +371,12 @@ void HorizonMap::sweepWindow(
         postAt.push_back(profile.size());
         profile.push_back({ here[0] * dx + here[1] * dy, here[2] });
         onTerrain.push_back(complete || t.postUsed(i, j));
+        // Where the step ahead lies inside a grid without missing cells, every crossing
+        // is on terrain.
+        const bool checked = !complete || !inGrid(i + q, j + p);
         for (const Crossing& c : crossings)
         {
-          if (!(inGrid(i + c.a0, j + c.b0) && inGrid(i + c.a1, j + c.b1) &&
+          if (checked && !(inGrid(i + c.a0, j + c.b0) && inGrid(i + c.a1, j + c.b1) &&
                 (cellValid(i + c.ci, j + c.cj) || cellValid(i + c.di, j + c.dj))))
             continue;
           const float* a = xyz + 3 * (static_cast<std::size_t>(j + c.b0) * nx + i + c.a0);
@@ -342,6 +387,19 @@ void HorizonMap::sweepWindow(
           onTerrain.push_back(1);
         }
       }
+      // A crossing below the segment between its neighbours is no hull's point, nor
+      // where D cuts next to it (the profile bends up there): about two thirds of
+      // them on rough terrain. The cuts still read the whole profile.
+      if (complete)
+        for (std::size_t k = 0, m = 1; m + 1 < profile.size(); ++m)
+        {
+          while (k < postAt.size() && postAt[k] < m)
+            ++k;
+          const Point &before = profile[m - 1], &c = profile[m], &after = profile[m + 1];
+          if ((k == postAt.size() || postAt[k] != m) &&
+            (c.z - before.z) * (after.x - before.x) <= (after.z - before.z) * (c.x - before.x))
+            onTerrain[m] = 0;
+        }
       // The line's place on the whole terrain: post k is its kLine0 + k-th, and it
       // passes through (ua, va) + t (q, p) in the whole terrain's posts (the far
       // terrain's first at 0), the same in every window.
@@ -366,17 +424,19 @@ void HorizonMap::sweepWindow(
       if (tLow < tHigh)
       {
         auto crossingsOfLines = [&](double start, double step) {
-          // t where start + t step is a multiple of the stride
-          if (step == 0.0)
-            return;
-          const double a = (start + tLow * step) / stride, b = (start + tHigh * step) / stride;
-          for (double c = std::ceil(std::min(a, b)); c <= std::floor(std::max(a, b)); c += 1.0)
-            farT.push_back((c * stride - start) / step);
+          // t where start + t step is a multiple of the stride, increasing
+          const auto before = static_cast<std::ptrdiff_t>(farT.size());
+          if (step > 0.0)
+            for (double c = std::ceil((start + tLow * step) / stride); c <= std::floor((start + tHigh * step) / stride); c += 1.0)
+              farT.push_back((c * stride - start) / step);
+          else if (step < 0.0)
+            for (double c = std::floor((start + tLow * step) / stride); c >= std::ceil((start + tHigh * step) / stride); c -= 1.0)
+              farT.push_back((c * stride - start) / step);
+          std::inplace_merge(farT.begin(), farT.begin() + before, farT.end());
         };
         crossingsOfLines(ua, q);
         crossingsOfLines(va, p);
         crossingsOfLines(ua + va, q + p);
-        std::sort(farT.begin(), farT.end());
         auto segmentValid = [&](double t0, double t1) {
           const double tm = 0.5 * (t0 + t1);
           const int i = static_cast<int>(std::floor((ua + tm * q) / stride)), j = static_cast<int>(std::floor((va + tm * p) / stride));
@@ -387,14 +447,14 @@ void HorizonMap::sweepWindow(
           const double tk = farT[k];
           if (!complete && !((k > 0 && segmentValid(farT[k - 1], tk)) || (k + 1 < farT.size() && segmentValid(tk, farT[k + 1]))))
             continue;
-          const Vec3 position = far.surfacePoint((ua + tk * q) / stride, (va + tk * p) / stride).position - origin;
-          farProfile.push_back({ position.x * dx + position.y * dy, position.z });
+          farProfile.push_back(farPoint((ua + tk * q) / stride, (va + tk * p) / stride));
         }
       }
 
       // The sweep, from the far end.
       rest.clear(), beyond.clear(), next.clear();
       std::size_t farPushed = farProfile.size();
+      ProfileCut fineCut(profile), farCut(farProfile);
       long long currentBlock = std::numeric_limits<long long>::min();
       for (int k = run.count - 1; k >= 0; --k)
       {
@@ -426,12 +486,12 @@ void HorizonMap::sweepWindow(
         horizon = 0; // nothing above the horizontal, or a post of no cell
         if (!onTerrain[at])
           continue;
-        double steepest = std::max({ rest.steepestFrom(post), next.steepestFrom(post), beyond.steepestFrom(post) });
+        double steepest = std::max({ rest.steepestFromNext(post), next.steepestFrom(post), beyond.steepestFrom(post) });
         if (complete)
         {
           // Both surfaces where the cylinder of detail ends.
-          steepest = std::max(steepest, (heightAt(profile, at, reach) - post.z) / detailDistance);
-          steepest = std::max(steepest, (heightAt(farProfile, 0, reach) - post.z) / detailDistance);
+          steepest = std::max(steepest, (fineCut.heightAt(reach, at) - post.z) / detailDistance);
+          steepest = std::max(steepest, (farCut.heightAt(reach, 0) - post.z) / detailDistance);
         }
         if (steepest > 0.0)
         {
