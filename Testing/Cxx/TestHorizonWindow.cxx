@@ -43,6 +43,22 @@ std::unique_ptr<TerrainGrid> windowOf(const TerrainGrid& grid, int i0, int j0, i
 
 constexpr double detail = 450.0; // 15 posts
 constexpr int stride = 4;
+
+/// A window of the terrain, with the far terrain given, and its rays.
+struct Window
+{
+  std::unique_ptr<TerrainGrid> grid;
+  GivenFarTerrain given;
+  std::unique_ptr<Visibility> rays;
+};
+Window windowWithRays(const TerrainGrid& grid, const FarTerrain& far, int i0, int j0, int nx, int ny)
+{
+  Window window{ windowOf(grid, i0, j0, nx, ny), GivenFarTerrain{ &far.grid(), stride, i0, j0 }, nullptr };
+  RadiosityScene scene = sceneOf({ window.grid.get() });
+  scene.farTerrain = window.given;
+  window.rays = std::make_unique<Visibility>(scene, FarSight{ stride, detail });
+  return window;
+}
 } // namespace
 
 TEST(HorizonWindow, AWindowsHorizonsAreThoseItsRaysSee)
@@ -50,12 +66,10 @@ TEST(HorizonWindow, AWindowsHorizonsAreThoseItsRaysSee)
   const auto grid = ridgesAndMountain();
   const FarTerrain far(*grid, stride);
   const int i0 = 24, j0 = 8;
-  const auto window = windowOf(*grid, i0, j0, 121, 121);
-  const GivenFarTerrain given{ &far.grid(), stride, i0, j0 };
-  const HorizonMap map(*window, given, detail);
-  RadiosityScene scene = sceneOf({ window.get() });
-  scene.farTerrain = given;
-  const Visibility rays(scene, FarSight{ stride, detail });
+  const Window part = windowWithRays(*grid, far, i0, j0, 121, 121);
+  const TerrainGrid* window = part.grid.get();
+  const Visibility& rays = *part.rays;
+  const HorizonMap map(*window, part.given, detail);
   ASSERT_TRUE(rays.farTerrain());
   // Posts at least the detail distance inside the window's edges.
   int blocked = 0, checked = 0;
@@ -113,16 +127,11 @@ TEST(HorizonWindow, WhatAWindowsHorizonsProveRaysFindSo)
 {
   const auto grid = ridgesAndMountain();
   const FarTerrain far(*grid, stride);
-  const int i0 = 40, j0 = 16;
-  const auto window = windowOf(*grid, i0, j0, 113, 129);
-  const GivenFarTerrain given{ &far.grid(), stride, i0, j0 };
+  const Window window = windowWithRays(*grid, far, 40, 16, 113, 129);
   for (const bool dense : { false, true })
   {
-    const HorizonMap map(*window, given, detail, dense);
-    RadiosityScene scene = sceneOf({ window.get() });
-    scene.farTerrain = given;
-    const Visibility rays(scene, FarSight{ stride, detail });
-    const Proven share = checkProofs(map, rays, *window, 15, 97, 15, 113, 4);
+    const HorizonMap map(*window.grid, window.given, detail, dense);
+    const Proven share = checkProofs(map, *window.rays, *window.grid, 15, 97, 15, 113, 4);
     EXPECT_GT(share.open, 0.4) << "share " << share.open;
     EXPECT_GT(share.shadowed, 0.2) << "share " << share.shadowed;
   }
