@@ -18,6 +18,7 @@
 #include "horizon_map.h"
 
 #include "error.h"
+#include "horizon_lines.h"
 #include "terrain_grid.h"
 #include "work_split.h"
 
@@ -57,7 +58,6 @@ Window handedOn(const Window& from, const Window& to, int q, int p)
 /// The k with lo <= start + k step <= hi (an empty range: first > last).
 void limitSteps(int start, int step, int lo, int hi, int& first, int& last)
 {
-  auto floorDivide = [](int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
   if (step == 0)
   {
     if (start < lo || start > hi)
@@ -67,8 +67,8 @@ void limitSteps(int start, int step, int lo, int hi, int& first, int& last)
   int a = lo - start, b = hi - start;
   if (step < 0)
     a = -a, b = -b, std::swap(a, b), step = -step;
-  first = std::max(first, -floorDivide(-a, step)); // ceil(a / step)
-  last = std::min(last, floorDivide(b, step));
+  first = std::max(first, -horizon_lines::floorDivide(-a, step)); // ceil(a / step)
+  last = std::min(last, horizon_lines::floorDivide(b, step));
 }
 
 /// Hulls as bytes: whether the sender failed, then per hull its post, size and points.

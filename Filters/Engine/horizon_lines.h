@@ -1,5 +1,6 @@
 #pragma once
-// What the horizon sweeps share (horizon_map.cxx, horizon_window.cxx): where a line of
+// What the horizon sweeps share (horizon_map.cxx, horizon_window.cxx,
+// horizon_handoff.cxx): where a line of
 // posts crosses its grid's cells, and a fast arctangent for the horizons they find.
 
 #include "angles.h"
@@ -13,7 +14,8 @@ namespace terralux
 namespace horizon_lines
 {
 // Floor division and remainder for a positive divisor.
-inline int floorDivide(int a, int b)
+template <typename Integer>
+inline Integer floorDivide(Integer a, Integer b)
 {
   return a >= 0 ? a / b : -((-a + b - 1) / b);
 }

@@ -360,9 +360,7 @@ std::array<double, 2> HorizonMap::reliefOf(const TerrainGrid& t)
           if (t.cellValid(i, j))
             for (const TerrainGrid::Triangle& triangle : t.cellTriangles(i, j))
             {
-              const Vec3 n = TerrainGrid::areaVector(triangle);
-              if (n.z > 0.0)
-                relief[0] = std::max(relief[0], std::hypot(n.x, n.y) / n.z);
+              relief[0] = std::max(relief[0], triangleSlope(triangle));
               for (const Vec3& corner : triangle)
                 relief[1] = std::max(relief[1], corner.z);
             }
@@ -371,11 +369,22 @@ std::array<double, 2> HorizonMap::reliefOf(const TerrainGrid& t)
     [](const Relief& a, const Relief& b) { return Relief{ std::max(a[0], b[0]), std::max(a[1], b[1]) }; });
 }
 
+double HorizonMap::triangleSlope(const TerrainGrid::Triangle& triangle)
+{
+  const Vec3 n = TerrainGrid::areaVector(triangle);
+  return n.z > 0.0 ? std::hypot(n.x, n.y) / n.z : 0.0;
+}
+
 void HorizonMap::measureRelief()
 {
   const auto [steepest, highest] = reliefOf(this->Terrain);
   this->SteepestSlope = this->MarginSlope = steepest;
   this->HighestZ = highest;
+  this->placeEdges();
+}
+
+void HorizonMap::placeEdges()
+{
   // The shortest way to the edge u = 0 runs square to v's direction, against u's.
   const Vec3 u(this->Ux, this->Uy, 0.0), v(this->Vx, this->Vy, 0.0);
   const Vec3 acrossU = u - glm::dot(u, v) / glm::dot(v, v) * v, acrossV = v - glm::dot(v, u) / glm::dot(u, u) * u;

@@ -282,8 +282,12 @@ private:
   /// are narrower than pi, so by the signs of two cross products.
   bool cornerWithin(int i, int j, int k) const;
   static std::array<double, 2> reliefOf(const TerrainGrid& grid); // the steepest slope, the highest point
+  /// tan of a triangle's slope; 0 where it does not face up.
+  static double triangleSlope(const std::array<Vec3, 3>& triangle);
   /// SteepestSlope and HighestZ over the grid; EdgeAzimuths.
   void measureRelief();
+  /// EdgeAzimuths, from the mean map.
+  void placeEdges();
   /// What clearlyAbove and clearlyBelow allow for the map's quantisation and mean directions.
   double proofMargin() const { return 1e-3 + 2e-3 * this->MarginSlope; }
   std::vector<double> Azimuths;

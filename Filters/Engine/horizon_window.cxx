@@ -31,6 +31,7 @@ namespace terralux
 using horizon_lines::atanOfPositive;
 using horizon_lines::Crossing;
 using horizon_lines::crossingsOf;
+using horizon_lines::floorDivide;
 
 namespace
 {
@@ -191,11 +192,6 @@ private:
   std::size_t After; // the first point beyond the last distance asked
 };
 
-long long floorDivide(long long a, long long b)
-{
-  return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
 /// out[k] = the largest of in[k - r .. k + r] (within 0 .. n - 1), for n values
 /// `step` apart: a monotone queue of candidates, each pushed and dropped once.
 void maximumWithin(const float* in, float* out, std::ptrdiff_t step, int n, int r, std::vector<int>& queue)
@@ -248,7 +244,7 @@ HorizonMap::HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, do
   this->X0 += shift.x + (this->Ux * far.i0 + this->Vx * far.j0) / s;
   this->Y0 += shift.y + (this->Uy * far.i0 + this->Vy * far.j0) / s;
   this->Ux /= s, this->Uy /= s, this->Vx /= s, this->Vy /= s;
-  this->measureRelief();
+  this->placeEdges();
   this->findLocalRelief(*far.grid, detailDistance);
   this->ExtentU0 = -far.i0, this->ExtentV0 = -far.j0;
   this->ExtentU1 = (far.grid->postsX() - 1) * s - far.i0, this->ExtentV1 = (far.grid->postsY() - 1) * s - far.j0;
@@ -273,21 +269,25 @@ void HorizonMap::findLocalRelief(const TerrainGrid& far, double detailDistance)
   const double posts = spacing > 0.0 ? std::ceil(detailDistance / spacing) + 1.0 : 0.0;
   const int r = static_cast<int>(std::min<double>(posts, std::max(nx, ny)));
   const float lowest = -std::numeric_limits<float>::infinity();
+  std::vector<float> cellSlopes(static_cast<std::size_t>(t.cellsX()) * t.cellsY(), 0.0f);
+  tbb::parallel_for(0, t.cellsY(), [&](int j) {
+    for (int i = 0; i < t.cellsX(); ++i)
+      if (t.cellValid(i, j))
+        for (const TerrainGrid::Triangle& triangle : t.cellTriangles(i, j))
+        {
+          float& steepest = cellSlopes[static_cast<std::size_t>(j) * t.cellsX() + i];
+          steepest = std::max(steepest, static_cast<float>(triangleSlope(triangle)));
+        }
+  });
   std::vector<float> slopes(static_cast<std::size_t>(nx) * ny, 0.0f), heights(slopes.size(), lowest);
-  // A cell's slopes at its four posts (a post's box then holds the cells around it).
+  // Each cell's slope at its four posts (a post's box then holds the cells around it).
   tbb::parallel_for(0, ny, [&](int j) {
     for (int i = 0; i < nx; ++i)
     {
       float steepest = 0.0f;
       for (int cj = std::max(0, j - 1); cj <= std::min(j, ny - 2); ++cj)
         for (int ci = std::max(0, i - 1); ci <= std::min(i, nx - 2); ++ci)
-          if (t.cellValid(ci, cj))
-            for (const TerrainGrid::Triangle& triangle : t.cellTriangles(ci, cj))
-            {
-              const Vec3 n = TerrainGrid::areaVector(triangle);
-              if (n.z > 0.0)
-                steepest = std::max(steepest, static_cast<float>(std::hypot(n.x, n.y) / n.z));
-            }
+          steepest = std::max(steepest, cellSlopes[static_cast<std::size_t>(cj) * t.cellsX() + ci]);
       const std::size_t k = static_cast<std::size_t>(j) * nx + i;
       slopes[k] = steepest;
       if (t.postUsed(i, j))
@@ -404,7 +404,7 @@ void HorizonMap::sweepWindow(
       // passes through (ua, va) + t (q, p) in the whole terrain's posts (the far
       // terrain's first at 0), the same in every window.
       const long long gi = run.i + static_cast<long long>(given.i0), gj = run.j + static_cast<long long>(given.j0);
-      const long long kLine0 = floorDivide(q * gi + p * gj, lineNorm);
+      const long long kLine0 = floorDivide<long long>(q * gi + p * gj, lineNorm);
       const double ua = static_cast<double>(gi - kLine0 * q), va = static_cast<double>(gj - kLine0 * p);
       // The far profile, from a little before D ahead of the first post to the far
       // terrain's edge: where the line crosses its cells' edges and diagonals.
@@ -462,7 +462,7 @@ void HorizonMap::sweepWindow(
         const std::size_t end = k + 1 < run.count ? postAt[static_cast<std::size_t>(k) + 1] : profile.size() - 1;
         const Point post = profile[at];
         const double reach = post.x + detailDistance;
-        const long long blockOfPost = floorDivide(kLine0 + k, block);
+        const long long blockOfPost = floorDivide<long long>(kLine0 + k, block);
         if (blockOfPost != currentBlock)
         {
           // The last post of its block: the rest of the block is what lies up to the

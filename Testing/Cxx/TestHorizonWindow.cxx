@@ -31,15 +31,6 @@ std::unique_ptr<TerrainGrid> ridgesAndMountain()
   });
 }
 
-/// Posts [i0, i0 + nx) x [j0, j0 + ny) of `grid`, its origin kept.
-std::unique_ptr<TerrainGrid> windowOf(const TerrainGrid& grid, int i0, int j0, int nx, int ny)
-{
-  auto window = std::make_unique<TerrainGrid>(nx, ny, grid.origin());
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      window->setPost(i, j, grid.post(i0 + i, j0 + j));
-  return window;
-}
 
 constexpr double detail = 450.0; // 15 posts
 constexpr int stride = 4;

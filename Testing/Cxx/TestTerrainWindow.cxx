@@ -19,23 +19,6 @@
 using namespace terralux;
 using namespace terralux_test;
 
-namespace
-{
-/// Posts [i0, i0 + nx) x [j0, j0 + ny) of `grid`, bit for bit, its origin kept.
-std::unique_ptr<TerrainGrid> windowOf(const TerrainGrid& grid, int i0, int j0, int nx, int ny)
-{
-  auto window = std::make_unique<TerrainGrid>(nx, ny, grid.origin());
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      window->setPost(i, j, grid.post(i0 + i, j0 + j));
-  for (int j = 0; j + 1 < ny; ++j)
-    for (int i = 0; i + 1 < nx; ++i)
-      window->setCellValid(i, j, grid.cellValid(i0 + i, j0 + j));
-  window->setUniformMaterial(grid.cellReflectance(0, 0), grid.cellEmission(0, 0));
-  return window;
-}
-} // namespace
-
 TEST(TerrainWindow, APiecesPostsTakeTheWholeGridsValuesFromAWindowAndTheFarTerrain)
 {
   // Ridges and a hole, 193 x 161 posts 30 m apart, under a sun and a clear sky.

@@ -31,6 +31,21 @@ inline std::unique_ptr<terralux::TerrainGrid> makeGrid(int nx, int ny, double sp
   return grid;
 }
 
+/// Posts [i0, i0 + nx) x [j0, j0 + ny) of `grid`, bit for bit, with its cells' validity
+/// and its material; its origin kept (a window of it, as an MPI process holds).
+inline std::unique_ptr<terralux::TerrainGrid> windowOf(const terralux::TerrainGrid& grid, int i0, int j0, int nx, int ny)
+{
+  auto window = std::make_unique<terralux::TerrainGrid>(nx, ny, grid.origin());
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      window->setPost(i, j, grid.post(i0 + i, j0 + j));
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i)
+      window->setCellValid(i, j, grid.cellValid(i0 + i, j0 + j));
+  window->setUniformMaterial(grid.cellReflectance(0, 0), grid.cellEmission(0, 0));
+  return window;
+}
+
 /// A scene of terrains alone.
 inline terralux::RadiosityScene sceneOf(const std::vector<const terralux::TerrainGrid*>& grids)
 {
