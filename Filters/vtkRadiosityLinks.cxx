@@ -9,10 +9,10 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
-#include "cluster.h"
-#include "link_transport.h"
-#include "external_source.h"
-#include "solver.h"
+#include "hierarchy/cluster.h"
+#include "solver/link_transport.h"
+#include "emitters/external_source.h"
+#include "solver/solver.h"
 
 using terralux::Vec3;
 

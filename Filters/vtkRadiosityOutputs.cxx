@@ -17,12 +17,12 @@
 #include "vtkSmartPointer.h"
 #include "vtkStructuredGrid.h"
 
-#include "point_values.h"
-#include "polygon_element.h"
-#include "solver.h"
-#include "polygon_leaf_mesh.h"
-#include "terrain_mesh.h"
-#include "terrain_patch.h"
+#include "evaluation/point_values.h"
+#include "hierarchy/polygon_element.h"
+#include "solver/solver.h"
+#include "evaluation/polygon_leaf_mesh.h"
+#include "terrain/terrain_mesh.h"
+#include "hierarchy/terrain_patch.h"
 
 #include <algorithm>
 #include <array>

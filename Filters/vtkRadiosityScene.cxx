@@ -18,7 +18,7 @@
 #include "vtkTerraLuxFieldData.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "error.h"
+#include "base/error.h"
 
 #include <array>
 #include <atomic>
@@ -508,7 +508,7 @@ void vtkRadiosityScene::AddLight(vtkDataObject* light)
 {
   if (auto* map = vtkImageData::SafeDownCast(light))
   {
-    vtkDataArray* radiance = map->GetCellData()->GetArray("Radiance");
+    vtkDataArray* radiance = map->GetCellData()->GetArray(vtkTerraLuxFieldData::RadianceName());
     int dims[3];
     map->GetDimensions(dims);
     const int n = dims[0] - 1;

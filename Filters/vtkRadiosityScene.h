@@ -4,9 +4,9 @@
 #ifndef vtkRadiosityScene_h
 #define vtkRadiosityScene_h
 
-#include "radiosity_types.h"
-#include "sky_hierarchy.h"
-#include "terrain_grid.h"
+#include "hierarchy/radiosity_types.h"
+#include "sky/sky_hierarchy.h"
+#include "terrain/terrain_grid.h"
 
 #include "vtkType.h"
 

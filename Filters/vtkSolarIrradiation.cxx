@@ -15,13 +15,13 @@
 #include "vtkStringArray.h"
 #include "vtkTerraLuxFieldData.h"
 
-#include "angles.h"
-#include "cie_sky.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
 #include "cumulative_sky.h"
-#include "date_time.h"
-#include "error.h"
-#include "finite_parameters.h"
-#include "perez_sky.h"
+#include "sun/date_time.h"
+#include "base/error.h"
+#include "base/finite_parameters.h"
+#include "sky/perez_sky.h"
 #include "solar_steps.h"
 #include "weather_file.h"
 
@@ -77,7 +77,8 @@ struct vtkSolarIrradiation::Internals
 
 //------------------------------------------------------------------------------
 vtkSolarIrradiation::vtkSolarIrradiation()
-  : StartTime(nullptr)
+  : vtkRadiosityFilter(2, FAR_TERRAIN_PORT)
+  , StartTime(nullptr)
   , EndTime(nullptr)
   , TimeStep(30.0)
   , IntegrateOverTime(1)
@@ -96,7 +97,6 @@ vtkSolarIrradiation::vtkSolarIrradiation()
   this->SetEndTime("2000-01-02T00:00:00Z");
   for (double& value : this->MonthlyLinkeTurbidity)
     value = 3.0;
-  this->SetNumberOfInputPorts(2); // the geometry and the far terrain: it makes its own lights
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,9 @@
  * composites; reflectance and emission arrays). The place is the first input's
  * GeoOrigin field data (vtkTerrainSource of a georeferenced DEM) or, without one or with
  * UseGeoOrigin off, Latitude, Longitude and Height.
+ * Input port 1 (FAR_TERRAIN_PORT, optional): vtkTerrainSource's far terrain
+ * (SetFarTerrainConnection). There is no light input: the filter makes the suns and
+ * skies of its time range.
  *
  * Output port 0, with IntegrateOverTime on (default): the input geometry with point
  * arrays GlobalIrradiation, BeamIrradiation, SkyIrradiation, ReflectedIrradiation and
@@ -59,20 +62,29 @@
  * with missing or garbled fields or the wrong number of rows, and everything
  * vtkHierarchicalRadiosity refuses.
  *
- * @sa vtkHierarchicalRadiosity vtkSunSource vtkSkySource
+ * The radiosity parameters are vtkRadiosityFilter's.
+ *
+ * @sa vtkRadiosityFilter vtkHierarchicalRadiosity vtkSunSource vtkSkySource
  */
 
 #ifndef vtkSolarIrradiation_h
 #define vtkSolarIrradiation_h
 
 #include "TerraLuxFiltersModule.h" // For export macro
-#include "vtkHierarchicalRadiosity.h"
+#include "vtkRadiosityFilter.h"
 
-class TERRALUXFILTERS_EXPORT vtkSolarIrradiation : public vtkHierarchicalRadiosity
+class TERRALUXFILTERS_EXPORT vtkSolarIrradiation : public vtkRadiosityFilter
 {
 public:
   static vtkSolarIrradiation* New();
-  vtkTypeMacro(vtkSolarIrradiation, vtkHierarchicalRadiosity);
+  vtkTypeMacro(vtkSolarIrradiation, vtkRadiosityFilter);
+
+  /// The input ports: it makes its own lights.
+  enum InputPorts
+  {
+    GEOMETRY_PORT = 0,
+    FAR_TERRAIN_PORT = 1
+  };
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{

@@ -20,8 +20,8 @@
 #include "vtkTable.h"
 #include "vtkTerraLuxFieldData.h"
 
-#include "geo_transform.h"
-#include "work_split.h"
+#include "geodesy/geo_transform.h"
+#include "parallel/work_split.h"
 
 #include <algorithm>
 #include <array>
@@ -35,6 +35,8 @@
 
 namespace
 {
+/// The field-data key of a piece's extent in the table it sends the root.
+constexpr const char* pieceExtentName = "PieceExtent";
 // The georeference of a grid or a piece, when its field data has one.
 bool transformOf(vtkFieldData* fieldData, terralux::GeoTransform& transform)
 {
@@ -102,7 +104,7 @@ vtkSmartPointer<vtkTable> packetOf(vtkDataSet* piece, std::vector<vtkDataArray*>
     if (vtkDataArray* array = fieldData->GetArray(k))
       packet->GetFieldData()->AddArray(array);
   vtkNew<vtkIntArray> extent;
-  extent->SetName("PieceExtent");
+  extent->SetName(pieceExtentName);
   for (int k = 0; k < 6; ++k)
     extent->InsertNextValue(grid->GetExtent()[k]);
   packet->GetFieldData()->AddArray(extent);
@@ -169,7 +171,7 @@ bool vtkTerrainPieces::SendToRoot(vtkMultiProcessController* controller, vtkData
   for (int rank = 0; rank < static_cast<int>(received.size()); ++rank)
   {
     auto* table = vtkTable::SafeDownCast(received[rank]);
-    vtkDataArray* extent = table ? table->GetFieldData()->GetArray("PieceExtent") : nullptr;
+    vtkDataArray* extent = table ? table->GetFieldData()->GetArray(pieceExtentName) : nullptr;
     if (!extent || extent->GetNumberOfValues() != 6)
       continue;
     Piece p{ {}, table, rank };
@@ -202,7 +204,7 @@ bool vtkTerrainPieces::SendToRoot(vtkMultiProcessController* controller, vtkData
   layout.fieldData = vtkSmartPointer<vtkFieldData>::New();
   layout.fieldData->DeepCopy(
     piece && piece->GetNumberOfPoints() > 0 ? piece->GetFieldData() : pieces[0].table->GetFieldData());
-  layout.fieldData->RemoveArray("PieceExtent");
+  layout.fieldData->RemoveArray(pieceExtentName);
   terralux::GeoTransform pieceTransform;
   transformOf(pieces[0].table->GetFieldData(), pieceTransform); // packetOf sent only georeferenced pieces
   const int* e0 = pieces[0].extent;

@@ -17,8 +17,8 @@
 #include "vtkTerrainPieces.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "error.h"
-#include "raster_writer.h"
+#include "base/error.h"
+#include "raster/raster_writer.h"
 
 #include <algorithm>
 #include <cmath>

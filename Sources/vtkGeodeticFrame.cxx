@@ -5,8 +5,8 @@
 #include "vtkFieldData.h"
 #include "vtkObjectFactory.h"
 
-#include "error.h"
-#include "local_frame.h"
+#include "base/error.h"
+#include "geodesy/local_frame.h"
 #include "vtkTerraLuxFieldData.h"
 
 #include <limits>

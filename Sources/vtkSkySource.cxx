@@ -17,12 +17,12 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
-#include "angles.h"
-#include "cie_sky.h"
-#include "error.h"
-#include "perez_sky.h"
-#include "sky_hierarchy.h"
-#include "finite_parameters.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
+#include "base/error.h"
+#include "sky/perez_sky.h"
+#include "sky/sky_hierarchy.h"
+#include "base/finite_parameters.h"
 #include "vtkTerraLuxFieldData.h"
 
 #include <cmath>
@@ -176,7 +176,7 @@ int vtkSkySource::RequestData(
     map->Initialize();
     return 0;
   }
-  this->FillDome(map->GetCellData()->GetArray("Radiance"), dome);
+  this->FillDome(map->GetCellData()->GetArray(vtkTerraLuxFieldData::RadianceName()), dome);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -232,7 +232,7 @@ void vtkSkySource::FillRadianceMap(const terralux::SkyHierarchy& sky, const SkyC
   map->SetSpacing(360.0 / n, 90.0 / n, 1.0);
   map->SetOrigin(0.0, 0.0, 0.0);
   vtkNew<vtkDoubleArray> radiance;
-  radiance->SetName("Radiance");
+  radiance->SetName(vtkTerraLuxFieldData::RadianceName());
   radiance->SetNumberOfComponents(bands);
   radiance->SetNumberOfTuples(static_cast<vtkIdType>(n) * n);
   vtkNew<vtkDoubleArray> solidAngle;

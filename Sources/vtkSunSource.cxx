@@ -12,13 +12,13 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 
-#include "angles.h"
-#include "clear_sky.h"
-#include "date_time.h"
-#include "error.h"
-#include "sky_model.h"
-#include "solar_position.h"
-#include "finite_parameters.h"
+#include "base/angles.h"
+#include "sun/clear_sky.h"
+#include "sun/date_time.h"
+#include "base/error.h"
+#include "sky/sky_model.h"
+#include "sun/solar_position.h"
+#include "base/finite_parameters.h"
 #include "vtkTerraLuxFieldData.h"
 
 #include <algorithm>

@@ -21,6 +21,11 @@ struct vtkTerraLuxFieldData
   static const char* CRSName() { return "CRS"; }
   static const char* NoDataValueName() { return "NoDataValue"; }
   ///@}
+  /// vtkTerrainSource's far terrain (output 1): how many of output 0's posts apart its
+  /// posts are (one value).
+  static const char* FarTerrainStrideName() { return "FarTerrainStride"; }
+  /// vtkSkySource's radiance map: the cell array of each cell's mean radiance (W/m^2/sr).
+  static const char* RadianceName() { return "Radiance"; }
   ///@{
   /// vtkSunSource's sun (also on vtkSolarIrradiation's output, one value a step):
   /// SunDirection (unit vector toward the sun in the local frame: one tuple of 3),

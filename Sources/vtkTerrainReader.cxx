@@ -2,8 +2,8 @@
 
 #include "vtkObjectFactory.h"
 
-#include "dem_raster.h"
-#include "error.h"
+#include "raster/dem_raster.h"
+#include "base/error.h"
 
 vtkStandardNewMacro(vtkTerrainReader);
 

@@ -23,11 +23,11 @@
 #include "vtkStructuredGrid.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "dem_raster.h"
-#include "error.h"
-#include "local_frame.h"
-#include "map_projection.h"
-#include "terrain_placement.h"
+#include "raster/dem_raster.h"
+#include "base/error.h"
+#include "geodesy/local_frame.h"
+#include "geodesy/map_projection.h"
+#include "geodesy/terrain_placement.h"
 #include "vtkTerraLuxFieldData.h"
 #include "vtkTerrainHeights.h"
 
@@ -501,7 +501,7 @@ bool vtkTerrainSource::ReadRaster(
   if (farStride > 1)
   {
     auto strideArray = vtkSmartPointer<vtkIntArray>::New();
-    strideArray->SetName("FarTerrainStride");
+    strideArray->SetName(vtkTerraLuxFieldData::FarTerrainStrideName());
     strideArray->InsertNextValue(farStride);
     output->GetFieldData()->AddArray(strideArray);
   }

@@ -12,8 +12,8 @@
 #include "vtkTerraLuxFieldData.h"
 #include "vtkTerrainHeights.h"
 
-#include "error.h"
-#include "local_frame.h"
+#include "base/error.h"
+#include "geodesy/local_frame.h"
 
 #include <algorithm>
 #include <cmath>

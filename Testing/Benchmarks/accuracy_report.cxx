@@ -20,7 +20,7 @@
 #include "vtkFieldData.h"
 #include "vtkIntArray.h"
 
-#include "terrain_grid.h"
+#include "terrain/terrain_grid.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"

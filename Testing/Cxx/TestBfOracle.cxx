@@ -1,9 +1,9 @@
 // The BF refinement oracle (bf_oracle.h) on its own: a link's power, which links are
 // kept or split at the threshold, which side splits, partial visibility refined
 // further, sources that cannot split, and self-lighting surfaces.
-#include "bf_oracle.h"
-#include "polygon_element.h"
-#include "sun_element.h"
+#include "solver/bf_oracle.h"
+#include "hierarchy/polygon_element.h"
+#include "emitters/sun_element.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Engine tests: reading DEM rasters through GDAL (windows, stride, no data, errors).
-#include "dem_raster.h"
-#include "error.h"
-#include "terrain_placement.h"
+#include "raster/dem_raster.h"
+#include "base/error.h"
+#include "geodesy/terrain_placement.h"
 #include "test_rasters.h"
 
 #include <gtest/gtest.h>

@@ -2,15 +2,15 @@
 // gatherDetailDistance): its leaves are every 4th post's cells, while every post of the
 // full grid is still evaluated, at points and averaged, once each, close to what the
 // hierarchy on the full grid gives.
-#include "angles.h"
-#include "cie_sky.h"
-#include "far_terrain.h"
-#include "point_values.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
+#include "terrain/far_terrain.h"
+#include "evaluation/point_values.h"
 #include "radiosity_scenes.h"
-#include "sky_hierarchy.h"
-#include "solver.h"
+#include "sky/sky_hierarchy.h"
+#include "solver/solver.h"
 #include "terrain_grids.h"
-#include "terrain_patch.h"
+#include "hierarchy/terrain_patch.h"
 
 #include <gtest/gtest.h>
 
@@ -41,9 +41,7 @@ void expectEveryPostServed(bool withSky)
     if (withSky)
       solver->setSky(&sky);
     EXPECT_TRUE(solver->solve());
-    solver->findPostHorizons();
-    solver->gatherLeaves();
-    solver->gatherPostLattice(*solver->terrainRoots()[0], false);
+    solver->prepareEvaluation(EvaluationPlan{});
     return solver;
   };
   const auto full = lit(1), far = lit(4);

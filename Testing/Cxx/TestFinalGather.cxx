@@ -1,16 +1,16 @@
 // Final gather at points (final_gather.h) and the open sky it subtracts from (open_sky.h).
 
-#include "cie_sky.h"
-#include "angles.h"
-#include "final_gather.h"
-#include "open_sky.h"
-#include "polygon_element.h"
+#include "sky/cie_sky.h"
+#include "base/angles.h"
+#include "evaluation/final_gather.h"
+#include "evaluation/open_sky.h"
+#include "hierarchy/polygon_element.h"
 #include "radiosity_scenes.h"
-#include "sampling.h"
-#include "sky_hierarchy.h"
-#include "sky_importance.h"
-#include "solver.h"
-#include "visibility.h"
+#include "visibility/sampling.h"
+#include "sky/sky_hierarchy.h"
+#include "evaluation/sky_importance.h"
+#include "solver/solver.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
@@ -372,7 +372,7 @@ TEST(FinalGather, LeavesGatheredFirstBringTheBoxOneBounceCloser)
     return sum / count;
   };
   const double fromHierarchy = meanError();
-  solver.gatherLeaves();
+  solver.prepareEvaluation(EvaluationPlan{}); // the leaves gathered
   const double fromLeaves = meanError();
   std::printf("box: mean error %.3f W/m^2 from the hierarchy, %.3f from the leaves\n", fromHierarchy, fromLeaves);
   // (The hierarchy's leaves hold 3.6 % too much here, 0.25 % at tolerance 1e-2: its

@@ -2,12 +2,12 @@
 // against Embree's rays, which know nothing of the sweep: just above a post's horizon a
 // ray escapes, just below it a ray is blocked.
 
-#include "horizon_map.h"
-#include "angles.h"
-#include "radiosity_types.h"
+#include "horizons/horizon_map.h"
+#include "base/angles.h"
+#include "hierarchy/radiosity_types.h"
 #include "horizon_checks.h"
 #include "terrain_grids.h"
-#include "visibility.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

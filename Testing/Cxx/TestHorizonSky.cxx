@@ -1,17 +1,17 @@
 // The sky a height field hides, from each point's horizon (horizon_sky.h), against
 // closed forms and against brute-force rays.
 
-#include "cie_sky.h"
-#include "angles.h"
-#include "horizon_map.h"
-#include "horizon_sky.h"
-#include "open_sky.h"
-#include "sampling.h"
-#include "sky_hierarchy.h"
-#include "sky_model.h"
-#include "solver.h"
+#include "sky/cie_sky.h"
+#include "base/angles.h"
+#include "horizons/horizon_map.h"
+#include "horizons/horizon_sky.h"
+#include "evaluation/open_sky.h"
+#include "visibility/sampling.h"
+#include "sky/sky_hierarchy.h"
+#include "sky/sky_model.h"
+#include "solver/solver.h"
 #include "terrain_grids.h"
-#include "visibility.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

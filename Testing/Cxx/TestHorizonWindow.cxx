@@ -3,11 +3,11 @@
 // beyond, checked with those rays; the same at a post from any window that holds the
 // detail distance around it, bit for bit, with the bounds its proofs take; and what
 // they prove of a sun, rays find so.
-#include "far_terrain.h"
+#include "terrain/far_terrain.h"
 #include "horizon_checks.h"
-#include "horizon_map.h"
+#include "horizons/horizon_map.h"
 #include "terrain_grids.h"
-#include "visibility.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // What a leaf receives, fitted across it from its points' gathers (leaf_light.h).
-#include "leaf_light.h"
+#include "evaluation/leaf_light.h"
 
 #include <gtest/gtest.h>
 

@@ -3,15 +3,15 @@
 // visibility of none, half and all of a blocker, the sun's cosine and shadow, and a
 // uniform sky's pi and sky view factor, each source through the ExternalSource
 // interface it implements.
-#include "angles.h"
-#include "cie_sky.h"
-#include "link_transport.h"
-#include "polygon_element.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
+#include "solver/link_transport.h"
+#include "hierarchy/polygon_element.h"
 #include "radiosity_scenes.h"
-#include "sky_hierarchy.h"
-#include "sky_patch_element.h"
-#include "sun_element.h"
-#include "visibility.h"
+#include "sky/sky_hierarchy.h"
+#include "emitters/sky_patch_element.h"
+#include "emitters/sun_element.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

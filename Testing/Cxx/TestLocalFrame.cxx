@@ -1,9 +1,9 @@
 // Engine tests: local ENU frame, geotransforms and map projections.
-#include "error.h"
-#include "angles.h"
-#include "geo_transform.h"
-#include "local_frame.h"
-#include "map_projection.h"
+#include "base/error.h"
+#include "base/angles.h"
+#include "geodesy/geo_transform.h"
+#include "geodesy/local_frame.h"
+#include "geodesy/map_projection.h"
 
 #include <GeographicLib/Constants.hpp>
 #include <GeographicLib/Geocentric.hpp>

@@ -2,14 +2,14 @@
 // value on its own side, averaged by area; one normal across it only when asked; a
 // terrain's posts, at points or averaged, within a window. Checked against closed
 // forms: a sun alone over black surfaces gives E cos(angle) and nothing else.
-#include "angles.h"
-#include "cie_sky.h"
-#include "point_values.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
+#include "evaluation/point_values.h"
 #include "radiosity_scenes.h"
-#include "sky_hierarchy.h"
-#include "solver.h"
+#include "sky/sky_hierarchy.h"
+#include "solver/solver.h"
 #include "terrain_grids.h"
-#include "terrain_patch.h"
+#include "hierarchy/terrain_patch.h"
 
 #include <gtest/gtest.h>
 
@@ -175,7 +175,9 @@ TEST(PointValues, DirectSunAtPostsCastsRaysOnlyWhereHorizonsCannotTell)
     return solver;
   };
   const auto byRays = underSuns(), byHorizons = underSuns();
-  byHorizons->findSunHorizons();
+  EvaluationPlan averaged; // the suns' proofs alone: no post's sky, no lattice
+  averaged.atPoints = false;
+  byHorizons->prepareEvaluation(averaged);
   const std::uint64_t raysBefore[2] = { byRays->raysCast(), byHorizons->raysCast() };
   int lit = 0;
   for (int j = 0; j < 97; ++j)
@@ -220,10 +222,9 @@ TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
     solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
     solver->setSky(&sky);
     EXPECT_TRUE(solver->solve());
-    solver->findPostHorizons();
-    solver->gatherLeaves();
-    if (lattice)
-      solver->gatherPostLattice(*solver->terrainRoots()[0], false);
+    EvaluationPlan plan;
+    plan.postLattice = lattice;
+    solver->prepareEvaluation(plan);
     return solver;
   };
   const auto reading = lit(true), gathering = lit(false);
@@ -259,7 +260,7 @@ TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
       EXPECT_NEAR(a.irradiance[ReflectedLight][0] + a.irradiance[SkyLight][0],
         b.irradiance[ReflectedLight][0] + b.irradiance[SkyLight][0], 5.0 * gatherError * received)
         << i << ", " << j;
-      EXPECT_LT(b.irradiance[ReflectedLight][0], 2.0 * HierarchicalRadiosity::smallReflectedShare * received)
+      EXPECT_LT(b.irradiance[ReflectedLight][0], 2.0 * Tuning::smallReflectedShare * received)
         << i << ", " << j;
       EXPECT_NEAR(a.skyViewFactor, b.skyViewFactor, 0.01) << i << ", " << j;
     }

@@ -1,8 +1,8 @@
 // PolygonLeafMesh (polygon_leaf_mesh.h): shared corners become one vertex with the
 // area-weighted mean of the leaves around it, and a T-vertex on a coarser leaf's edge
 // takes the mean of that edge's ends, so the leaf mesh output has no cracks.
-#include "polygon_element.h"
-#include "polygon_leaf_mesh.h"
+#include "hierarchy/polygon_element.h"
+#include "evaluation/polygon_leaf_mesh.h"
 
 #include <gtest/gtest.h>
 

@@ -2,13 +2,13 @@
 // the cells between them, against Embree's shadow rays from those points, which know
 // nothing of the horizons.
 
-#include "angles.h"
-#include "horizon_map.h"
-#include "error.h"
-#include "post_sunlight.h"
-#include "sampling.h"
+#include "base/angles.h"
+#include "horizons/horizon_map.h"
+#include "base/error.h"
+#include "horizons/post_sunlight.h"
+#include "visibility/sampling.h"
 #include "terrain_grids.h"
-#include "visibility.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

@@ -1,16 +1,16 @@
 // Engine tests of hierarchical radiosity: closed forms for planes under sky and sun,
 // form factors of unit squares, furnaces, a pit's sky view factor, shadows, and
 // determinism across thread counts.
-#include "cie_sky.h"
-#include "angles.h"
-#include "cluster.h"
-#include "error.h"
-#include "point_form_factor.h"
-#include "polygon_element.h"
+#include "sky/cie_sky.h"
+#include "base/angles.h"
+#include "hierarchy/cluster.h"
+#include "base/error.h"
+#include "evaluation/point_form_factor.h"
+#include "hierarchy/polygon_element.h"
 #include "radiosity_scenes.h"
-#include "sky_hierarchy.h"
-#include "sky_patch_element.h"
-#include "solver.h"
+#include "sky/sky_hierarchy.h"
+#include "emitters/sky_patch_element.h"
+#include "solver/solver.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>

@@ -1,9 +1,9 @@
 // Engine tests: GeoTIFFs written a window at a time (GeoTiffWriter, as rank 0 writes the
 // pieces MPI ranks send) hold what one write of the whole raster holds, and posts no
 // window covers read as no data.
-#include "dem_raster.h"
-#include "error.h"
-#include "raster_writer.h"
+#include "raster/dem_raster.h"
+#include "base/error.h"
+#include "raster/raster_writer.h"
 
 #include <gtest/gtest.h>
 

@@ -2,14 +2,14 @@
 // solves over it. A second solve over the same shape (another sun, other materials)
 // builds neither again and gives what a solver of its own gives, value for value; a
 // scene of another shape gets geometry of its own.
-#include "angles.h"
-#include "cie_sky.h"
-#include "scene_geometry.h"
-#include "sky_hierarchy.h"
-#include "solver.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
+#include "visibility/scene_geometry.h"
+#include "sky/sky_hierarchy.h"
+#include "solver/solver.h"
 #include "terrain_grids.h"
-#include "terrain_patch.h"
-#include "visibility.h"
+#include "hierarchy/terrain_patch.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 
@@ -46,10 +46,8 @@ Solved solve(const TerrainGrid& grid, double azimuth, std::shared_ptr<SceneGeome
   result.solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
   result.solver->setSky(&sky);
   EXPECT_TRUE(result.solver->solve());
-  result.solver->findPostHorizons();
+  result.solver->prepareEvaluation(EvaluationPlan{});
   const TerrainPatch& root = *result.solver->terrainRoots()[0];
-  result.solver->gatherPostLattice(root, false);
-  result.solver->gatherLeaves();
   for (int j = 2; j < grid.postsY(); j += 5)
     for (int i = 2; i < grid.postsX(); i += 5)
     {

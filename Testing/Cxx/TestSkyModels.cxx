@@ -1,10 +1,10 @@
 // Engine tests: CIE and Perez sky models and the sky hierarchy against closed forms
 // and an independent brute-force integration.
-#include "cie_sky.h"
-#include "angles.h"
-#include "error.h"
-#include "perez_sky.h"
-#include "sky_hierarchy.h"
+#include "sky/cie_sky.h"
+#include "base/angles.h"
+#include "base/error.h"
+#include "sky/perez_sky.h"
+#include "sky/sky_hierarchy.h"
 
 #include <gtest/gtest.h>
 

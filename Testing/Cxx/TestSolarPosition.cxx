@@ -1,9 +1,9 @@
 // Engine tests: ISO 8601 instants, NREL SPA solar position, clear-sky irradiance.
-#include "clear_sky.h"
-#include "angles.h"
-#include "date_time.h"
-#include "error.h"
-#include "solar_position.h"
+#include "sun/clear_sky.h"
+#include "base/angles.h"
+#include "sun/date_time.h"
+#include "base/error.h"
+#include "sun/solar_position.h"
 
 #include <gtest/gtest.h>
 

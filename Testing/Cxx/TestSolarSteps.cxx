@@ -1,11 +1,11 @@
 // The time axis of irradiation sums (TimeIntegration/Engine): daylight steps with
 // sunrise and sunset inside a step, judged against the astronomical day length; the
 // cumulative sky against the sum of its skies.
-#include "cie_sky.h"
-#include "angles.h"
+#include "sky/cie_sky.h"
+#include "base/angles.h"
 #include "cumulative_sky.h"
-#include "date_time.h"
-#include "error.h"
+#include "sun/date_time.h"
+#include "base/error.h"
 #include "solar_steps.h"
 #include "weather_file.h"
 

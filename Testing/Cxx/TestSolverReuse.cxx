@@ -2,14 +2,14 @@
 // the same hierarchy and geometry give, value for value, what a new solver gives them,
 // whatever the earlier solves refined; the hierarchy as built (a terrain's structural
 // patches around missing cells included) survives them.
-#include "angles.h"
-#include "cie_sky.h"
-#include "polygon_element.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
+#include "hierarchy/polygon_element.h"
 #include "radiosity_scenes.h"
-#include "sky_hierarchy.h"
-#include "solver.h"
+#include "sky/sky_hierarchy.h"
+#include "solver/solver.h"
 #include "terrain_grids.h"
-#include "terrain_patch.h"
+#include "hierarchy/terrain_patch.h"
 
 #include <gtest/gtest.h>
 
@@ -62,10 +62,8 @@ void addPoint(Values& values, const PointIrradiance& at)
 Values solveTerrain(HierarchicalRadiosity& solver, const TerrainGrid& grid)
 {
   EXPECT_TRUE(solver.solve());
-  solver.findPostHorizons();
+  solver.prepareEvaluation(EvaluationPlan{});
   const TerrainPatch& root = *solver.terrainRoots()[0];
-  solver.gatherPostLattice(root, false);
-  solver.gatherLeaves();
   Values values;
   for (int j = 1; j < grid.postsY(); j += 4)
     for (int i = 1; i < grid.postsX(); i += 4)
@@ -81,7 +79,7 @@ Values solveTerrain(HierarchicalRadiosity& solver, const TerrainGrid& grid)
 Values solvePolygons(HierarchicalRadiosity& solver)
 {
   EXPECT_TRUE(solver.solve());
-  solver.gatherLeaves();
+  solver.prepareEvaluation(EvaluationPlan{});
   Values values;
   for (const auto& element : solver.elements().all())
     for (double b : element->Radiosity)

@@ -2,19 +2,19 @@
 // neighbours receive (post_sky.h), against closed forms and against brute-force
 // cosine-weighted rays over the whole hemisphere, which know nothing of horizons.
 
-#include "cie_sky.h"
-#include "angles.h"
-#include "horizon_map.h"
-#include "horizon_sky.h"
-#include "open_sky.h"
-#include "post_lattice.h"
-#include "post_sky.h"
-#include "sampling.h"
-#include "sky_hierarchy.h"
-#include "sky_model.h"
-#include "terrain_directions.h"
+#include "sky/cie_sky.h"
+#include "base/angles.h"
+#include "horizons/horizon_map.h"
+#include "horizons/horizon_sky.h"
+#include "evaluation/open_sky.h"
+#include "evaluation/post_lattice.h"
+#include "horizons/post_sky.h"
+#include "visibility/sampling.h"
+#include "sky/sky_hierarchy.h"
+#include "sky/sky_model.h"
+#include "terrain/terrain_directions.h"
 #include "terrain_grids.h"
-#include "visibility.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

@@ -2,15 +2,15 @@
 // patch splitting and holes, generic-edge neighbour finding and T-vertices on
 // hand-built refinement patterns, leaf-mesh continuity, and solutions on planes, a
 // hill, a vertical step and a terrain with a hole against closed forms.
-#include "sky_hierarchy.h"
-#include "angles.h"
-#include "solver.h"
-#include "terrain_edges.h"
+#include "sky/sky_hierarchy.h"
+#include "base/angles.h"
+#include "solver/solver.h"
+#include "hierarchy/terrain_edges.h"
 #include "terrain_grids.h"
-#include "terrain_mesh.h"
-#include "terrain_patch.h"
+#include "terrain/terrain_mesh.h"
+#include "hierarchy/terrain_patch.h"
 
-#include "cie_sky.h"
+#include "sky/cie_sky.h"
 #include "radiosity_scenes.h"
 
 #include <gtest/gtest.h>

@@ -2,15 +2,15 @@
 // grid's far terrain given (GivenFarTerrain): its piece's posts take the values the
 // whole grid gives them with the same far terrain, to 1e-6, while it holds a fraction
 // of the posts at full resolution. This is what lets memory follow the piece.
-#include "angles.h"
-#include "cie_sky.h"
-#include "error.h"
-#include "far_terrain.h"
-#include "point_values.h"
-#include "sky_hierarchy.h"
-#include "solver.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
+#include "base/error.h"
+#include "terrain/far_terrain.h"
+#include "evaluation/point_values.h"
+#include "sky/sky_hierarchy.h"
+#include "solver/solver.h"
 #include "terrain_grids.h"
-#include "terrain_patch.h"
+#include "hierarchy/terrain_patch.h"
 
 #include <gtest/gtest.h>
 
@@ -42,10 +42,7 @@ TEST(TerrainWindow, APiecesPostsTakeTheWholeGridsValuesFromAWindowAndTheFarTerra
     solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
     solver->setSky(&sky);
     EXPECT_TRUE(solver->solve());
-    solver->findPostHorizons();
-    solver->findSunHorizons();
-    solver->gatherLeaves();
-    solver->gatherPostLattice(*solver->terrainRoots()[0], false);
+    solver->prepareEvaluation(EvaluationPlan{});
     return solver;
   };
   // The piece: posts [80, 112] x [40, 80]. Its window reaches three detail distances

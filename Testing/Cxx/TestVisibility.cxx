@@ -1,9 +1,9 @@
 // Visibility (visibility.h) on its own: occlusion between points and toward infinity,
 // the first surface met, ray offsets that follow the scene's size, seeds that do not
 // move with the scene, and the ray counter.
-#include "error.h"
+#include "base/error.h"
 #include "radiosity_scenes.h"
-#include "visibility.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

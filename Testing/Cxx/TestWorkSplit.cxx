@@ -3,21 +3,21 @@
 // broadcasts, and must hold what one process alone finds, bit for bit: the posts' skies
 // and suns everywhere, the horizons in its own window of posts (a band of rows) only.
 
-#include "angles.h"
-#include "cie_sky.h"
-#include "held_posts.h"
-#include "horizon_map.h"
-#include "horizon_sky.h"
-#include "open_sky.h"
-#include "post_lattice.h"
-#include "post_sky.h"
-#include "post_sunlight.h"
-#include "sky_hierarchy.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
+#include "parallel/held_posts.h"
+#include "horizons/horizon_map.h"
+#include "horizons/horizon_sky.h"
+#include "evaluation/open_sky.h"
+#include "evaluation/post_lattice.h"
+#include "horizons/post_sky.h"
+#include "horizons/post_sunlight.h"
+#include "sky/sky_hierarchy.h"
 #include "terrain_grids.h"
-#include "visibility.h"
-#include "work_split.h"
+#include "visibility/visibility.h"
+#include "parallel/work_split.h"
 
-#include "error.h"
+#include "base/error.h"
 
 #include <gtest/gtest.h>
 

@@ -3,10 +3,10 @@
 // above a post's horizon a ray escapes, just below it a ray is blocked; what the map
 // proves of a sun's direction, rays find so.
 
-#include "angles.h"
-#include "horizon_map.h"
-#include "terrain_grid.h"
-#include "visibility.h"
+#include "base/angles.h"
+#include "horizons/horizon_map.h"
+#include "terrain/terrain_grid.h"
+#include "visibility/visibility.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // Test scenes for the radiosity engine, built in code: squares, boxes, spheres, pits,
 // walls. Polygons face the side their right-handed corner order gives.
 
-#include "radiosity_types.h"
+#include "hierarchy/radiosity_types.h"
 
 #include <cmath>
 

@@ -1,8 +1,8 @@
 #pragma once
 // Terrain grids for engine tests, built in code: planes, hills, steps, holes.
 
-#include "radiosity_types.h"
-#include "terrain_grid.h"
+#include "hierarchy/radiosity_types.h"
+#include "terrain/terrain_grid.h"
 
 #include <functional>
 #include <memory>

@@ -1,5 +1,5 @@
 // Uses both installed layers: the VTK source and the VTK-free engine.
-#include <terralux/engine/local_frame.h>
+#include <terralux/engine/geodesy/local_frame.h>
 #include <terralux/vtkHierarchicalRadiosity.h>
 #include <terralux/vtkTerrainSource.h>
 

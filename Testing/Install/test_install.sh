@@ -8,6 +8,22 @@ here="$(cd "$(dirname "$0")" && pwd)"
 rm -rf "$scratch"
 mkdir -p "$scratch"
 cmake --install "$build_dir" --prefix "$scratch/prefix" >/dev/null
+# Every installed header compiles on its own: the engine's with the compiler's own paths
+# (GLM, Embree, TBB are Debian's), the VTK modules' with VTK's too.
+include="$scratch/prefix/include"
+compile_alone() { # header below $include, extra flags...
+  local header="$1"; shift
+  echo "#include <${header}>" | c++ -std=c++17 -fsyntax-only -I"$include" -I"$include/terralux/engine" "$@" -x c++ - \
+    || { echo "installed header ${header} does not compile on its own" >&2; return 1; }
+}
+export -f compile_alone; export include
+engine_headers="$(cd "$include" && find terralux/engine -name '*.h' | sort)"
+test -n "$engine_headers"
+echo "$engine_headers" | xargs -P 2 -I{} bash -c 'compile_alone {}'
+vtk_include="$(find /usr/include -maxdepth 1 -name 'vtk-9*' | head -n 1)"
+(cd "$include" && find terralux -maxdepth 1 -name 'vtk*.h' | sort) |
+  xargs -P 2 -I{} bash -c "compile_alone {} -I$vtk_include -I$include/terralux"
+echo "installed headers: $(echo "$engine_headers" | wc -l) engine headers and the VTK modules' compile alone"
 cmake -S "$here" -B "$scratch/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
 cmake --build "$scratch/consumer" >/dev/null

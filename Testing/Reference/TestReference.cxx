@@ -4,11 +4,11 @@
 // exact value.
 #include "path_tracer.h"
 
-#include "angles.h"
-#include "cie_sky.h"
+#include "base/angles.h"
+#include "sky/cie_sky.h"
 #include "radiosity_scenes.h"
-#include "sky_hierarchy.h"
-#include "sky_model.h"
+#include "sky/sky_hierarchy.h"
+#include "sky/sky_model.h"
 
 #include <gtest/gtest.h>
 

@@ -13,7 +13,7 @@
 
 #include "reference_scene.h"
 
-#include "sky_hierarchy.h"
+#include "sky/sky_hierarchy.h"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "reference_scene.h"
 
-#include "terrain_grid.h"
+#include "terrain/terrain_grid.h"
 
 #include <cmath>
 #include <limits>

@@ -5,7 +5,7 @@
 // with the engine only the scene description (RadiosityScene, TerrainGrid) and Embree;
 // no form factor, link or visibility code of the solver.
 
-#include "radiosity_types.h"
+#include "hierarchy/radiosity_types.h"
 
 #include <embree3/rtcore.h>
 

@@ -1,7 +1,7 @@
 #include "cumulative_sky.h"
 
-#include "angles.h"
-#include "error.h"
+#include "base/angles.h"
+#include "base/error.h"
 
 #include <tbb/parallel_for.h>
 

@@ -4,7 +4,7 @@
 // the sources, so one solve under this sky gives the sum of the solves under each
 // step's sky (Wh/m^2 instead of W/m^2).
 
-#include "sky_hierarchy.h"
+#include "sky/sky_hierarchy.h"
 
 #include <memory>
 #include <vector>

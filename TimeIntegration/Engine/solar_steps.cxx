@@ -1,7 +1,7 @@
 #include "solar_steps.h"
 
-#include "date_time.h"
-#include "error.h"
+#include "sun/date_time.h"
+#include "base/error.h"
 
 #include <cmath>
 #include <string>

@@ -5,8 +5,8 @@
 // interval only and are evaluated at its middle, so the day's length is not rounded to
 // whole steps.
 
-#include "clear_sky.h"
-#include "solar_position.h"
+#include "sun/clear_sky.h"
+#include "sun/solar_position.h"
 
 #include <array>
 #include <vector>

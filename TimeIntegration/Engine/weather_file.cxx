@@ -1,9 +1,9 @@
 #include "weather_file.h"
 
-#include "angles.h"
-#include "clear_sky.h"
-#include "date_time.h"
-#include "error.h"
+#include "base/angles.h"
+#include "sun/clear_sky.h"
+#include "sun/date_time.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,182 @@
+#pragma once
+// Final gather (Reichert 1992; Lischinski, Tampieri & Greenberg 1993): light that
+// surfaces send to a point, taken from the solved radiosity of the leaves its rays
+// meet. The hierarchy's links bound each exchange against a threshold, so the many small
+// exchanges between nearby slopes of a rough terrain, each below it, add up to a
+// large loss (a third of the reflected light on the fractal scene of the accuracy
+// report); a ray from the point sees all of them at the scene's full resolution.
+
+#include "horizons/horizon_map.h"
+#include "hierarchy/radiosity_types.h"
+
+#include <memory>
+
+namespace terralux
+{
+class FarTerrain;
+class HElement;
+class HorizonSky;
+class LeafLight;
+class OpenSky;
+class PolygonElement;
+class PostLattice;
+class PostSky;
+class PostSunlight;
+class SkyImportance;
+class TerrainPatch;
+class Visibility;
+
+/// What a point receives from the sky and from surfaces, by the same rays.
+struct GatheredLight
+{
+  Spectrum surfaces{};
+  Spectrum sky{};
+  double skyViewFactor = 0.0;
+  int rays = 0;
+  int count = 0; ///< the rays of the estimate (a pilot's aside)
+  double variance = 0.0; ///< of one ray's estimate (largest band), over those rays
+  int backRays = 0; ///< of those rays, the ones that met the back of a surface
+};
+
+/// How many rays a point takes: as many as a pilot of `pilot` rays says bring the
+/// standard error of what they add below relativeError x the point's irradiance,
+/// between `minimum` and `maximum` (pilot 0: always maximum).
+struct GatherBudget
+{
+  int pilot = 64;
+  int minimum = 64;
+  int maximum = 1024;
+  double relativeError = 0.003;
+  /// Rays drawn by the sky's radiance (the sky a scene with buildings hides): at least
+  /// this many, or maximum if less. A small occluder hides a few percent of the sky,
+  /// which a pilot of 64 sees once or not at all.
+  int skyMinimum = 256;
+  /// Horizons at half the azimuths (a point the solution found open).
+  bool coarseHorizon = false;
+  /// The variance of one ray's estimate where neighbours tell it (>= 0): the count then
+  /// follows from it and from knownSurfaces, the light from surfaces expected, with no
+  /// pilot.
+  double knownVariance = -1.0;
+  double knownSurfaces = 0.0;
+};
+
+class FinalGather
+{
+public:
+  /// The roots of the input polygons and of the terrains (null entries allowed), as
+  /// the solver holds them; their leaves' radiosity is read at each gather.
+  FinalGather(const Visibility& rays, const std::vector<PolygonElement*>& polygons,
+    const std::vector<TerrainPatch*>& terrains, const std::vector<HElement*>& suns);
+  ~FinalGather();
+
+  /// Irradiance (W/m^2) at a point with unit normal from the surfaces it sees: the mean
+  /// radiosity met by stratified cosine-weighted rays (the fronts of surfaces only: a
+  /// one-sided surface sends nothing from its back), as many as `budget` asks for
+  /// against directIrradiance (the sun at the point) plus the rest. `seed` makes it
+  /// repeatable.
+  ///
+  /// What a hit sends is its leaf's radiosity except for direct sunlight, the sharpest
+  /// part of it: that is taken at the hit itself, with its own triangle's cosine and a
+  /// shadow ray (a leaf of several cells of a rough terrain averages slopes the
+  /// grazing sun lights very differently), or the answer its cell's posts all prove
+  /// (setPostSunlight).
+  ///
+  /// With a sky (setSky), the sky at the point is the open sky of its plane (exact,
+  /// OpenSky) minus what the scene hides: from the point's horizon (setHorizons), or
+  /// from occlusion rays drawn by the sky's radiance with a pilot of their own
+  /// (SkyImportance), which also give the sky view factor. `surfacesSend` false skips
+  /// what surfaces send (every radiosity 0): no cosine-weighted rays then. `post`: the
+  /// terrain post the point stands for, whose horizons the horizons' map holds; there
+  /// the rays are drawn below its horizon instead (TerrainDirections), correct the
+  /// sky where the interpolated horizon was wrong, and a hit on the terrain sends the
+  /// sky of the posts around it (setPostSkies) and the lattice's light from surfaces
+  /// (setPostLattice) instead of its leaf's.
+  GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
+    double directIrradiance, bool surfacesSend = true, const HorizonMap::Post& post = {}) const;
+  void setSky(const OpenSky* sky);
+  /// With horizons (a scene that is a height field), the sky the scene hides comes from
+  /// the point's horizon instead of the rays, which then gather surfaces alone.
+  /// Without them, the hidden sky comes from occlusion rays drawn by the sky's radiance.
+  /// At a post of the horizons' map, the surfaces' rays are drawn below the post's
+  /// horizon only (TerrainDirections): the sky above it is the horizons' part.
+  void setHorizons(const HorizonSky* horizons) { this->Horizons = horizons; }
+  /// The skies of the posts of the scene's one terrain (a height field): a hit on it
+  /// sends the sky read between them instead of its leaf's average.
+  void setPostSkies(const PostSky* skies) { this->PostSkies = skies; }
+  /// Posts of that terrain gathered first: a hit on it receives their light from
+  /// surfaces, read between them, instead of its leaf's.
+  void setPostLattice(const PostLattice* lattice) { this->Lattice = lattice; }
+  /// Which suns the posts of that terrain are proven to see or not (PostSunlight, in
+  /// the order of the suns given): a hit on it whose cell's posts all agree takes no
+  /// shadow ray for that sun.
+  void setPostSunlight(const PostSunlight* sunlight) { this->PostSuns = sunlight; }
+  /// What leaves receive, gathered from each (LeafLight): a hit on one of them sends
+  /// that instead of the hierarchy's values (null: the hierarchy's).
+  void setLeafLight(const LeafLight* leaves) { this->Leaves = leaves; }
+  /// Beyond this distance (m, horizontally) from the gathering point, a hit on that
+  /// terrain reads nothing of its posts (skies, proven suns, lattice) and sends its
+  /// leaf's light, as a hit on other surfaces does: what a far hit adds is small, and
+  /// a process evaluating a piece of the terrain then needs its posts' values only
+  /// within this distance of the piece (HeldPosts). 0: every hit reads them.
+  void setDetailDistance(double metres) { this->DetailDistance = metres; }
+  /// The far terrain the hierarchy's terrain leaves are built on (null: the scene's
+  /// own grid): a hit's parameters, the scene grid's, map to its leaves.
+  void setHierarchyTerrain(const FarTerrain* terrain) { this->HierarchyTerrain = terrain; }
+  /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
+  /// at every hit; more (the sun positions of a day or a year, summed in one solve)
+  /// would multiply the gather's rays, so a hit then takes one sun, chosen in
+  /// proportion to its irradiance and weighted by the inverse of that chance (unbiased;
+  /// the gather's error control sees the extra spread and adds rays where it matters).
+  void prepareSuns();
+  static constexpr std::size_t maximumSunsPerHit = 4;
+
+  /// How many of strata x strata stratified cosine-weighted rays from a point escape or
+  /// meet the front of a surface: how open its side is (a point that sees the back of
+  /// a one-sided surface lies inside something, as a post on the line of a house's wall
+  /// may).
+  int openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed) const;
+  /// The triangle's own normal at a hit, turned to the side its leaf faces.
+  static Vec3 frontAt(const struct SurfaceHit& hit, const PolygonElement& leaf);
+  /// The leaf a ray's hit lies on (null where nothing solved is there).
+  const PolygonElement* leafAt(const struct SurfaceHit& hit) const;
+  /// Radiosity leaving a hit on `leaf` of a ray from `from`, its direct sunlight taken
+  /// at the hit; `sunSample` in [0, 1) picks the sun when there are many.
+  Spectrum radiosityAt(const PolygonElement& leaf, const struct SurfaceHit& hit, const Vec3& front,
+    double sunSample, const Vec3& from) const;
+
+private:
+  /// The sky a point does not see, by occlusion rays drawn in proportion to the sky's
+  /// radiance (each carries the same share of it), as many as a pilot says bring the
+  /// standard error below budget.relativeError x `received`; counts the rays.
+  Spectrum hiddenSkyByRadiance(const Vec3& point, const Vec3& normal, const GatherBudget& budget,
+    std::uint64_t seed, double received, double& hiddenProjectedSolidAngle, int& rays) const;
+
+  const Visibility& Rays;
+  const std::vector<PolygonElement*>& Polygons;
+  const std::vector<TerrainPatch*>& Terrains;
+  const std::vector<HElement*>& Suns;
+  const OpenSky* Sky = nullptr;
+  const HorizonSky* Horizons = nullptr;
+  const PostSky* PostSkies = nullptr;
+  const PostLattice* Lattice = nullptr;
+  const PostSunlight* PostSuns = nullptr;
+  const LeafLight* Leaves = nullptr;
+  double DetailDistance = 0.0;
+  const FarTerrain* HierarchyTerrain = nullptr;
+  std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
+  std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
+};
+
+/// Cosine-weighted directions about one unit normal (its frame made once).
+class CosineFrame
+{
+public:
+  explicit CosineFrame(const Vec3& n);
+  /// From a point (s, t) of the unit square (Malley's method: a uniform point of the
+  /// disc lifted onto the hemisphere).
+  Vec3 direction(double s, double t) const;
+
+private:
+  Vec3 N, U, V;
+};
+} // namespace terralux

@@ -1,0 +1,414 @@
+#include "solver/solver.h"
+
+#include "evaluation/final_gather.h"
+#include "horizons/horizon_map.h"
+#include "evaluation/leaf_light.h"
+#include "emitters/external_source.h"
+#include "solver/link_transport.h"
+#include "hierarchy/polygon_element.h"
+#include "evaluation/post_lattice.h"
+#include "horizons/post_sky.h"
+#include "horizons/post_sunlight.h"
+#include "terrain/terrain_grid.h"
+#include "hierarchy/terrain_patch.h"
+#include "visibility/sampling.h"
+#include "visibility/visibility.h"
+#include "parallel/work_split.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+// Point evaluation: irradiance at the points users read (terrain posts, polygon
+// vertices), from the solved hierarchy but with what varies sharply taken at the point.
+namespace terralux
+{
+namespace
+{
+bool leafLooksOpen(const PolygonElement& leaf)
+{
+  const double openPlane = 0.5 * (1.0 + std::max(-1.0, std::min(1.0, leaf.normal().z)));
+  return leaf.SkyViewFactor >= 0.999 * openPlane &&
+    largestBand(leaf.Irradiance[ReflectedLight]) <= 0.002 * leaf.receivedIrradiance();
+}
+
+// What a post receives beside the light from surfaces (its sun and its horizons' sky,
+// largest bands): what the lattice's spread is measured against, when its cells are
+// refined and when a post reads between them.
+double receivedBesideSurfaces(const Spectrum& sun, const PostSky::Value& sky)
+{
+  return largestBand(sun) + largestBand(sky.irradiance);
+}
+} // namespace
+
+PointIrradiance HierarchicalRadiosity::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
+{
+  return this->irradianceAt(leaf, point, leaf.normal());
+}
+
+PointIrradiance HierarchicalRadiosity::irradianceAt(
+  const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const
+{
+  return this->irradianceAt(leaf, point, normal, leaf.centre());
+}
+
+PointIrradiance HierarchicalRadiosity::irradianceAt(
+  const PolygonElement& leaf, const Vec3& point, const Vec3& normal, const Vec3& toward) const
+{
+  PointIrradiance result;
+  auto& irradiance = result.irradiance;
+  // Visibility from a point is noisier than over an element: more samples where the
+  // element saw the sender only in part, as many as the link had elsewhere.
+  const int partialSamples = Tuning::partialVisibilityFactor * this->Options.visibilitySamples;
+  const int clearSamples = this->Options.visibilitySamples;
+  // Seeded by the point itself: points sharing a leaf (posts inside a terrain patch)
+  // must not share their jitter, or the noise would be the same pattern at each.
+  const std::uint64_t pointSeed = this->Rays->seedOf(point);
+  std::uint64_t salt = pointSeed ^ (leaf.id() * 31);
+  // The gather's rays belong to the point alone, so that two discretisations of one
+  // surface (terrain patches, triangles) cast the same rays from each post.
+  const std::uint64_t gatherSeed = pointSeed * 0x9E3779B97F4A7C15ull;
+  // A point on the leaf's border is the limit from inside the leaf: at a concave
+  // junction (a wall's foot, a box's corner) the point itself lies in the plane of the
+  // other surface, which it would see edge-on with a form factor of 0, and rays that
+  // skip their first offset would skip that surface too. So the point moves two ray
+  // offsets into its leaf (at most half way to the leaf's centre).
+  const Vec3 toCentre = toward - point;
+  const double distance = glm::length(toCentre);
+  const Vec3 inside = distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays->offset() / distance) * toCentre : point;
+  const bool gathered = this->gathersAtPoints();
+  // Without a gather, every link that reaches the leaf, re-evaluated at the point.
+  for (const HElement* element = gathered ? nullptr : &leaf; element; element = element->Parent)
+  {
+    for (const Link& link : element->Incoming)
+    {
+      const ExternalSource* source = link.sender->asExternal();
+      if (source && source->parallel())
+        continue; // direct sun is taken below, by a ray from the point itself
+      const std::uint64_t seed = linkSeed(salt++, link.sender->id());
+      // Sky visibility from the point itself: a ray that starts on a wall's plane skips
+      // it and then meets the building from inside, so the sky is judged right whatever
+      // leaf holds the point; form factors need the point inside its leaf.
+      const Vec3& from = source ? point : inside;
+      const double transport = transportToPoint(
+        from, normal, *link.sender, *this->PointRays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
+      const Spectrum e = link.sender->emittance();
+      const int category = lightCategoryOf(*link.sender);
+      for (int band = 0; band < maxBands; ++band)
+        irradiance[category][band] += transport * e[band];
+      // Sky links cover the whole sky once: their projected solid angles, seen, over pi.
+      result.skyViewFactor += skyViewOf(*link.sender, normal, transport);
+    }
+  }
+  // Direct sun is what a ray from just above the point sees, whatever leaf the point
+  // was assigned to and whether or not the links there still hold the sun (a shadowed
+  // element's sun link is dropped, yet its border posts may be lit).
+  irradiance[SunLight] = this->directSunAt(point, normal, &result.sunlitHours);
+  // Sky and light from surfaces by a final gather from the point (inside its leaf, as
+  // form factors), over the leaves' solved radiosity.
+  if (gathered)
+  {
+    GatherBudget budget;
+    budget.maximum = this->Options.gatherSamples;
+    budget.minimum = std::min(budget.minimum, budget.maximum);
+    budget.relativeError = this->Options.gatherError;
+    // A terrain post's horizons come from the map, found for all posts at once.
+    const HorizonMap::Post post = this->PostHorizons ? this->PostHorizons->find(point) : HorizonMap::Post{};
+    // There the rays are drawn below the post's horizon, where nearly every one meets
+    // terrain (TerrainDirections): far fewer are needed than over the hemisphere.
+    if (post)
+      budget.maximum = std::max(1, budget.maximum / Tuning::postGatherDivisor),
+      budget.pilot = budget.minimum = std::min(budget.maximum, Tuning::postPilotRays);
+    // Posts beside a gathered lattice take their count from its spread, with no pilot.
+    if (post && this->Lattice)
+    {
+      const int nx = this->HeightFieldGrid->postsX(), i = static_cast<int>(post.index % nx);
+      const int j = static_cast<int>(post.index / nx);
+      const PostLattice::Around around = this->Lattice->around(i, j);
+      if (around.variance >= 0.0 && this->readFromLattice(post, normal, i, j, around, result))
+        return result;
+      Spectrum expected;
+      if (around.variance >= 0.0 && this->Lattice->reflectedAt(i, j, expected))
+        budget.knownVariance = around.variance, budget.pilot = 0, budget.minimum = std::min(budget.maximum, Tuning::latticeKnownRays),
+        budget.knownSurfaces = largestBand(expected);
+    }
+    // Over a height field, a leaf the solution found open (nearly all the sky its plane
+    // could see, next to no light from surfaces) needs no pilot: its points take the
+    // fewest rays. The decision comes from the solution, not from rays the estimate
+    // uses, so it keeps the estimate unbiased. Where the sky comes from rays (scenes
+    // with buildings), and on the far terrain's smoother leaves, a pilot stays
+    // (docs/tuning.md).
+    if (leafLooksOpen(leaf) && this->Horizons && !this->HierarchyTerrain)
+      budget.pilot = 0, budget.maximum = budget.minimum, budget.coarseHorizon = true;
+    const Spectrum& sun = irradiance[SunLight];
+    // Its rays start two more offsets above (three in all): on rough terrain the move
+    // into the leaf, toward a centre across a crease, can end that far below the
+    // surface the point's normal lifts from.
+    const Vec3 lifted = (post ? inside : this->openSideOf(point, inside, normal, gatherSeed)) +
+      2.0 * this->Rays->offset() * normal;
+    const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
+      largestBand(sun), this->LargestRadiosity > 0.0, post);
+    irradiance[ReflectedLight] = light.surfaces;
+    result.gatherVariance = light.variance;
+    irradiance[SkyLight] = light.sky;
+    result.skyViewFactor = light.skyViewFactor;
+  }
+  return result;
+}
+
+bool HierarchicalRadiosity::readFromLattice(const HorizonMap::Post& post, const Vec3& normal, int i, int j,
+  const PostLattice::Around& around, PointIrradiance& result) const
+{
+  PostSky::Value sky;
+  if (!this->PostSkies || !this->PostSkies->found(post, normal, sky))
+    return false;
+  // What a gather adds to the horizons' sky (light from surfaces, the sky where the
+  // interpolated horizon was wrong) comes from the terrain the post sees, 1 - its sky
+  // view factor: that times what the lattice's posts around found per terrain seen.
+  // Where theirs agree within twice the error a gather would leave, reading it between
+  // them errs about as much (see Tuning::latticeSpreadAllowance). Posts where light from
+  // surfaces is more than a small share of what they receive gather it still: read
+  // between posts it comes out about 3 % low on average (the accuracy report's hills and
+  // Olinda against a gather at each post), where the accuracy work asks for 5 % wherever
+  // it exceeds 1 % of the global.
+  const double terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
+  const double received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
+  PostLattice::PerTerrainSeen found;
+  if (terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen) >
+      Tuning::latticeSpreadAllowance * this->Options.gatherError * received ||
+    terrainSeen * around.largestPerTerrainSeen > Tuning::smallReflectedShare * received ||
+    !this->Lattice->perTerrainSeenAt(i, j, found))
+    return false;
+  for (int band = 0; band < maxBands; ++band)
+  {
+    result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * found.reflected[band]);
+    result.irradiance[SkyLight][band] = std::max(0.0, sky.irradiance[band] + terrainSeen * found.skyCorrection[band]);
+  }
+  result.skyViewFactor = std::clamp(sky.skyViewFactor + terrainSeen * found.skyViewCorrection, 0.0, 1.0);
+  result.gatherVariance = around.variance;
+  return true;
+}
+
+Vec3 HierarchicalRadiosity::openSideOf(
+  const Vec3& point, const Vec3& inside, const Vec3& normal, std::uint64_t seed) const
+{
+  constexpr int strata = 6;
+  const double offset = this->Rays->offset();
+  auto openness = [&](const Vec3& p) { return this->Gather->openRays(p, normal, strata, seed); };
+  int most = openness(inside);
+  if (most == strata * strata)
+    return inside;
+  Vec3 u, v;
+  tangentsOf(normal, u, v);
+  Vec3 best = inside;
+  for (const Vec3& along : { u + v, u - v, -u + v, -u - v })
+  {
+    const Vec3 candidate = point + 2.0 * offset * glm::normalize(along);
+    const int open = openness(candidate);
+    if (open > most + 3) // clearly more open, not noise
+      best = candidate, most = open;
+  }
+  return best;
+}
+
+Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours) const
+{
+  const HorizonMap::Post post = this->SunHorizons ? this->SunHorizons->find(point) : HorizonMap::Post{};
+  if (!post)
+    return directSunlight(point, normal, this->PointSuns, *this->PointRays, sunlitHours);
+  // A sun the post's horizons prove open or hidden takes no ray. Every point sun is a
+  // parallel SunElement: its kernel and flux, kept beside its sight, need no virtual
+  // call on this path (a year of hours tests 5 G suns at the posts of a 1025^2 DEM).
+  // The post's proofs were found for every post at once where gather hits read them.
+  const int nx = this->HeightFieldGrid->postsX();
+  const SunsProven proven = this->PostSuns
+    ? this->PostSuns->at(static_cast<int>(post.index % nx), static_cast<int>(post.index / nx))
+    : SunsProven{};
+  HorizonMap::View horizons(*this->SunHorizons, post);
+  Spectrum result{};
+  for (std::size_t s = 0; s < this->MappedSuns.size(); ++s)
+  {
+    const MappedSun& sun = this->MappedSuns[s];
+    const double kernel = glm::dot(normal, sun.direction);
+    if (!(kernel > 0.0))
+      continue;
+    const bool seen = this->PostSuns ? proven.seenAt(s) : horizons.clearlyAbove(sun.sight);
+    const bool hidden = !seen && (this->PostSuns ? proven.hiddenAt(s) : horizons.clearlyBelow(sun.sight));
+    const bool open = seen || (!hidden && !this->PointRays->occludedToward(point, normal, sun.direction));
+    if (open)
+      addSunlight(kernel, sun.flux, sun.duration, result, sunlitHours);
+  }
+  return result;
+}
+
+bool HierarchicalRadiosity::gathersAtPoints() const
+{
+  // Nothing to gather without a sky where no surface sends light.
+  return this->Options.gatherSamples > 0 && (this->Sky || this->LargestRadiosity > 0.0);
+}
+
+void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hornNormals)
+{
+  if (!this->gathersAtPoints() || !this->PostHorizons || &this->postGrid(root) != this->HeightFieldGrid)
+    return;
+  this->Lattice.reset(); // its own posts gather from the leaves, with pilots
+  this->Gather->setPostLattice(nullptr);
+  const TerrainGrid& grid = this->postGrid(root);
+  // With a work split, each process holds the lattice within its posts' halo (the
+  // detail distance's) of its window.
+  auto lattice = std::make_unique<PostLattice>(
+    grid.postsX(), grid.postsY(), PostLattice::defaultStep, this->Split, this->PostsHalo);
+  // Every second lattice post first; then the rest of the cells whose corners disagree
+  // (see Tuning::latticeRefineAllowance), decided alike by every process from the shared first
+  // pass.
+  for (const bool first : { true, false })
+  {
+    if (!first)
+      lattice->refine(Tuning::latticeRefineAllowance * this->Options.gatherError);
+    WorkSplit::partThenShare(
+      this->Split, [&]() { this->gatherLatticePosts(root, hornNormals, first, *lattice); },
+      [&]() { lattice->share(); });
+  }
+  this->Lattice = std::move(lattice);
+  this->Gather->setPostLattice(this->Lattice.get());
+}
+
+void HierarchicalRadiosity::gatherLatticePosts(
+  const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const
+{
+  const TerrainGrid& grid = this->postGrid(root);
+  const int step = lattice.step();
+  tbb::parallel_for(0, (grid.postsY() - 1) / step + 1, [&](int lj) {
+    const int j = lj * step;
+    for (int i = 0; i < grid.postsX(); i += step)
+    {
+      if (!PostLattice::gathers(i, j, this->Split) || !lattice.gatheredInPass(i, j, firstPass))
+        continue;
+      const TerrainPatch* leaf = grid.postUsed(i, j) ? this->leafAtPost(root, i, j) : nullptr;
+      if (!leaf)
+        continue;
+      const Vec3 normal = grid.normalAt(i, j, hornNormals);
+      const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), normal);
+      // What the gather found beyond the post's horizons' sky.
+      PostSky::Value sky;
+      if (!this->PostSkies || !this->PostSkies->found({ true, static_cast<std::size_t>(j) * grid.postsX() + i }, normal, sky))
+        continue;
+      PostLattice::Gathered gathered;
+      gathered.reflected = result.irradiance[ReflectedLight];
+      for (int band = 0; band < maxBands; ++band)
+        gathered.skyCorrection[band] = result.irradiance[SkyLight][band] - sky.irradiance[band];
+      gathered.skyViewCorrection = result.skyViewFactor - sky.skyViewFactor;
+      gathered.variance = result.gatherVariance;
+      gathered.terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
+      gathered.received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
+      lattice.set(i, j, gathered);
+    }
+  });
+}
+
+void HierarchicalRadiosity::gatherLeaves(bool terrains)
+{
+  this->Gather->setLeafLight(nullptr);
+  this->Leaves.reset();
+  if (!this->gathersAtPoints())
+    return;
+  std::vector<PolygonElement*> leaves;
+  for (const auto& element : this->Store->all())
+  {
+    if (!element->isSurface())
+      continue;
+    auto& surface = static_cast<PolygonElement&>(*element);
+    const auto* patch = dynamic_cast<const TerrainPatch*>(&surface);
+    if (!surface.hasChildren() &&
+      !(patch && (!terrains || this->HierarchyTerrain || (this->PostSkies && this->HeightFieldGrid && patch->terrain() == 0))))
+      leaves.push_back(&surface);
+  }
+  if (leaves.empty())
+    return;
+  // Each leaf's id, and how far its points are lifted: as points are (three ray
+  // offsets), above a rough patch's crease; a non-planar quad's points (on its bilinear
+  // surface) also by how far the input quad's corners leave its plane, above both
+  // triangles rays meet (else, on a displaced vtkPlaneSource, points under them saw
+  // backs and nearly every leaf looked buried, at four times the rays).
+  std::vector<std::uint64_t> ids(leaves.size());
+  std::vector<double> lifts(leaves.size(), 3.0 * this->Rays->offset());
+  for (std::size_t k = 0; k < leaves.size(); ++k)
+  {
+    ids[k] = leaves[k]->id();
+    if (dynamic_cast<const TerrainPatch*>(leaves[k]))
+      continue;
+    const PolygonElement* root = leaves[k];
+    while (root->Parent && root->Parent->isSurface())
+      root = static_cast<const PolygonElement*>(root->Parent);
+    for (int c = 0; c < root->cornerCount(); ++c)
+      lifts[k] = std::max(lifts[k],
+        3.0 * this->Rays->offset() + std::abs(glm::dot(root->corners()[c] - root->centre(), root->normal())));
+  }
+  // A few points of each leaf, a few rays from each, no pilot: a point's rays meet many
+  // leaves, whose noise averages out.
+  constexpr int points = 4, morePoints = 16;
+  GatherBudget budget;
+  budget.pilot = 0;
+  budget.minimum = budget.maximum = std::max(1, std::min(Tuning::leafGatherRays, this->Options.gatherSamples) / points);
+  const bool surfacesSend = this->LargestRadiosity > 0.0;
+  std::unique_ptr<LeafLight> light;
+  for (int pass = 0; pass < Tuning::leafGatherPasses; ++pass)
+  {
+    // The first pass gathers over the hierarchy's values, the next over the last pass's.
+    auto next = std::make_unique<LeafLight>(this->Store->size(), ids);
+    tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
+      const PolygonElement& leaf = *leaves[k];
+      SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
+      std::vector<LeafLight::Sample> seen;
+      int buried = 0;
+      auto gatherAt = [&](int p, int n) {
+        const SurfaceSample at = leaf.sample(p, n, random);
+        const Vec3 from = at.position + lifts[k] * at.normal;
+        const GatheredLight received = this->Gather->irradianceAt(
+          from, at.normal, budget, this->Rays->seedOf(from) ^ static_cast<std::uint64_t>(pass), 0.0, surfacesSend);
+        // A point whose rays meet the backs of surfaces lies inside something (the part
+        // of a house's wall below the ground): the light of the leaf is that of its
+        // other points, which hits can reach.
+        if (4 * received.backRays > received.count)
+          ++buried;
+        else
+          seen.push_back({ at.position, received.sky, received.surfaces });
+      };
+      for (int p = 0; p < points; ++p)
+        gatherAt(p, points);
+      // A partly buried leaf: its open part may be a thin strip (a wall's foot above
+      // sloping ground), which hits meet most from nearby; sought with more points.
+      if (buried > 0)
+      {
+        seen.clear();
+        for (int p = 0; p < morePoints; ++p)
+          gatherAt(p, morePoints);
+      }
+      next->set(k, leaf.normal(), seen);
+    });
+    this->Gather->setLeafLight(next.get());
+    light = std::move(next);
+  }
+  // The leaves' own values become the gathered means (what averaged outputs show),
+  // once every gather has read the hierarchy's.
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
+    PolygonElement& leaf = *leaves[k];
+    if (!light->mean(leaf.id(), leaf.Irradiance[SkyLight], leaf.Irradiance[ReflectedLight]))
+      return;
+    leaf.Radiosity = radiosityOf(leaf.emission(), leaf.reflectance(),
+      totalIrradiance(leaf.Irradiance[SunLight], leaf.Irradiance[SkyLight], leaf.Irradiance[ReflectedLight]));
+  });
+  this->Leaves = std::move(light);
+  this->Gather->setLeafLight(this->Leaves.get());
+}
+
+void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,
+  const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const std::vector<Vec3>& towards,
+  std::vector<PointIrradiance>& results) const
+{
+  results.resize(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(),
+    [&](std::size_t k) { results[k] = this->irradianceAt(*leaves[k], points[k], normals[k], towards[k]); });
+}
+
+} // namespace terralux

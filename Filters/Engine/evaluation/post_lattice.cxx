@@ -1,0 +1,219 @@
+#include "evaluation/post_lattice.h"
+
+#include "base/error.h"
+#include "terrain/grid_interpolation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace terralux
+{
+namespace
+{
+/// Lattice posts a process holds beyond its window: those within `postsHalo` posts,
+/// and the cells read there (a coarse cell is two lattice cells a side, and its
+/// corners decide whether it is refined).
+int latticeHalo(int postsHalo, int step)
+{
+  return postsHalo < 0 ? -1 : (postsHalo + step - 1) / step + 3;
+}
+} // namespace
+
+PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* split, int postsHalo)
+  : Step(std::max(1, step))
+  , Nx((std::max(1, postsX) - 1) / Step + 1)
+  , Ny((std::max(1, postsY) - 1) / Step + 1)
+  , CoarseX(std::max(1, Nx / 2))
+  , CoarseY(std::max(1, Ny / 2))
+  , Held(Nx, Ny, split, latticeHalo(postsHalo, Step), Step)
+{
+  const WorkSplit::Window own = this->Held.own();
+  if (!own.empty())
+    this->HeldCells = WorkSplit::Window{ own.i0 / 2, own.i1 / 2, own.j0 / 2, own.j1 / 2 }.clampedTo(CoarseX, CoarseY);
+  const std::size_t posts = this->Held.count();
+  this->Reflected.resize(posts);
+  this->Variance.assign(posts, -1.0);
+  this->PerTerrain.resize(posts);
+  this->Received.assign(posts, 0.0);
+  this->TerrainSeen.assign(posts, 0.0);
+  const std::size_t cells = this->HeldCells.empty() ? 0
+    : static_cast<std::size_t>(this->HeldCells.i1 - this->HeldCells.i0 + 1) * (this->HeldCells.j1 - this->HeldCells.j0 + 1);
+  this->Refined.assign(cells, CellRefined); // every cell fine until refine decides
+}
+
+std::size_t PostLattice::coarseCell(int li, int lj) const
+{
+  const int ci = std::min(li / 2, this->CoarseX - 1), cj = std::min(lj / 2, this->CoarseY - 1);
+  if (!this->HeldCells.holds(ci, cj))
+    throw Error("a gather ray read the lattice's light beyond what this process holds: its detail distance's "
+                "halo is too narrow for this grid");
+  return static_cast<std::size_t>(cj - this->HeldCells.j0) * (this->HeldCells.i1 - this->HeldCells.i0 + 1) +
+    (ci - this->HeldCells.i0);
+}
+
+bool PostLattice::gatheredInPass(int i, int j, bool first) const
+{
+  if (!this->onLattice(i, j))
+    return false;
+  const int li = i / this->Step, lj = j / this->Step;
+  const bool coarse = li % 2 == 0 && lj % 2 == 0;
+  if (first || coarse)
+    return first && coarse;
+  // A corner of a lattice cell (li - 1 or li, lj - 1 or lj) of a refined coarse cell.
+  for (int b = std::max(0, lj - 1); b <= std::min(lj, this->Ny - 2); ++b)
+    for (int a = std::max(0, li - 1); a <= std::min(li, this->Nx - 2); ++a)
+      if (this->Refined[this->coarseCell(a, b)] != CellCoarse)
+        return true;
+  return false;
+}
+
+double PostLattice::largestPerTerrainSeen(std::size_t k) const
+{
+  const Scaled& scaled = this->PerTerrain[k];
+  double largest = -std::numeric_limits<double>::infinity();
+  for (int band = 0; band < maxBands; ++band)
+    largest = std::max(largest, scaled[band] + scaled[maxBands + band]);
+  return largest;
+}
+
+void PostLattice::refine(double allowedSpread)
+{
+  const WorkSplit::Window& cells = this->HeldCells;
+  for (int cj = cells.j0; cj <= cells.j1; ++cj)
+    for (int ci = cells.i0; ci <= cells.i1; ++ci)
+    {
+      const Cell coarse{ 2 * ci, 2 * cj, 2 };
+      std::uint8_t& refined = this->Refined[this->coarseCell(coarse.li, coarse.lj)];
+      refined = CellCoarse;
+      if (2 * ci + 2 > this->Nx - 1 || 2 * cj + 2 > this->Ny - 1) // no coarse corner at the far side
+        refined = CellRefined;
+      else if (!this->Held.holds(2 * ci, 2 * cj) || !this->Held.holds(2 * ci + 2, 2 * cj + 2))
+        refined = CellUndecided;
+      else
+      {
+        const Around corners = this->aroundCell(coarse);
+        this->forEachCorner(coarse, [&](std::size_t k) {
+          if (this->Variance[k] < 0.0 ||
+            this->TerrainSeen[k] * (corners.largestPerTerrainSeen - corners.leastPerTerrainSeen) >
+              allowedSpread * this->Received[k])
+            refined = CellRefined;
+        });
+      }
+    }
+}
+
+PostLattice::Cell PostLattice::cellAt(double u, double v) const
+{
+  const int li = std::clamp(static_cast<int>(std::floor(u / this->Step)), 0, std::max(0, this->Nx - 2));
+  const int lj = std::clamp(static_cast<int>(std::floor(v / this->Step)), 0, std::max(0, this->Ny - 2));
+  switch (this->Refined[this->coarseCell(li, lj)])
+  {
+    case CellCoarse:
+      return { li - li % 2, lj - lj % 2, 2 };
+    case CellRefined:
+      return { li, lj, 1 };
+    default:
+      throw Error("a gather ray read the lattice's light where this process does not hold the corners that "
+                  "decide it: its detail distance's halo is too narrow for this grid");
+  }
+}
+
+template <class Value, class NodeValue>
+bool PostLattice::interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const
+{
+  // Bilinear between the corners of the cell's own lattice (every post, or every second).
+  const Cell cell = this->cellAt(u, v);
+  const double size = static_cast<double>(this->Step * cell.side);
+  const int nodesX = cell.side == 1 ? this->Nx : (this->Nx - 1) / 2 + 1;
+  const int nodesY = cell.side == 1 ? this->Ny : (this->Ny - 1) / 2 + 1;
+  return interpolateNodes(u / size, v / size, nodesX, nodesY,
+    [&](int a, int b, Value& value) {
+      const std::size_t k = this->index(a * cell.side, b * cell.side);
+      if (this->Variance[k] < 0.0)
+        return false;
+      value = nodeValue(k);
+      return true;
+    },
+    result);
+}
+
+void PostLattice::set(int i, int j, const Gathered& gathered)
+{
+  const std::size_t k = this->index(i / this->Step, j / this->Step);
+  this->Reflected[k] = gathered.reflected;
+  this->Variance[k] = std::max(0.0, gathered.variance);
+  // A post that sees next to no terrain tells nothing per terrain seen: 0.
+  Scaled scaled{};
+  if (gathered.terrainSeen > 1e-6)
+  {
+    for (int band = 0; band < maxBands; ++band)
+    {
+      scaled[band] = gathered.reflected[band] / gathered.terrainSeen;
+      scaled[maxBands + band] = gathered.skyCorrection[band] / gathered.terrainSeen;
+    }
+    scaled[2 * maxBands] = gathered.skyViewCorrection / gathered.terrainSeen;
+  }
+  this->PerTerrain[k] = scaled;
+  this->Received[k] = gathered.received;
+  this->TerrainSeen[k] = gathered.terrainSeen;
+}
+
+void PostLattice::share()
+{
+  constexpr int latticeTag = 903; // after the posts' skies' and suns' (post_sky.cxx, post_sunlight.cxx)
+  this->Held.share(this->Reflected, latticeTag);
+  this->Held.share(this->Variance, latticeTag + 1);
+  this->Held.share(this->PerTerrain, latticeTag + 2);
+  this->Held.share(this->Received, latticeTag + 3);
+  this->Held.share(this->TerrainSeen, latticeTag + 4);
+}
+
+template <class Corner>
+void PostLattice::forEachCorner(const Cell& cell, const Corner& corner) const
+{
+  for (int dj = 0; dj < 2 && cell.lj + dj * cell.side < this->Ny; ++dj)
+    for (int di = 0; di < 2 && cell.li + di * cell.side < this->Nx; ++di)
+      corner(this->index(cell.li + di * cell.side, cell.lj + dj * cell.side));
+}
+
+PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
+{
+  Around result;
+  result.leastPerTerrainSeen = std::numeric_limits<double>::infinity();
+  this->forEachCorner(cell, [&](std::size_t k) {
+    if (this->Variance[k] < 0.0)
+      return;
+    const double largest = this->largestPerTerrainSeen(k);
+    result.variance = std::max(result.variance, this->Variance[k]);
+    result.largestPerTerrainSeen = std::max(result.largestPerTerrainSeen, largest);
+    result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
+  });
+  return result;
+}
+
+PostLattice::Around PostLattice::around(int i, int j) const
+{
+  return this->aroundCell(this->cellAt(i, j));
+}
+
+bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
+{
+  return this->interpolate(u, v, [&](std::size_t k) { return this->Reflected[k]; }, reflected);
+}
+
+bool PostLattice::perTerrainSeenAt(double u, double v, PerTerrainSeen& value) const
+{
+  Scaled scaled;
+  if (!this->interpolate(u, v, [&](std::size_t k) { return this->PerTerrain[k]; }, scaled))
+    return false;
+  for (int band = 0; band < maxBands; ++band)
+  {
+    value.reflected[band] = scaled[band];
+    value.skyCorrection[band] = scaled[maxBands + band];
+  }
+  value.skyViewCorrection = scaled[2 * maxBands];
+  return true;
+}
+} // namespace terralux

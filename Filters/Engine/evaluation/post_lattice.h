@@ -1,0 +1,151 @@
+#pragma once
+// A coarse lattice of a terrain's posts (every `step` posts each way), gathered before
+// the others. What it learns serves the rest in two ways:
+// - Light from surfaces: a ray's hit sends its reflectance times what it receives; the
+//   light it receives from other surfaces is, from its leaf, the hierarchy's, which
+//   misses the many small exchanges inside rough terrain (issue: about half of them on
+//   a steep fractal DEM). Read between the lattice's gathered posts instead, a hit's
+//   second bounce is as exact as their first.
+// - Rays: a post's gather takes as many rays as a pilot of its own says are needed. The
+//   lattice's posts tell their neighbours the spread of one ray's estimate instead (the
+//   largest at a corner of the lattice cell: neighbours see much the same terrain),
+//   from which each post sets its count against its own irradiance, with no pilot.
+//   The count comes from other posts' rays, not from the post's own, so its estimate
+//   stays unbiased.
+// Its posts are gathered in two passes: every second one each way first (a cell of
+// 2 step posts), then the others only in the cells whose corners disagree (refine):
+// where terrain is smooth per post the first pass tells enough, and the 4097^2 fractal's
+// lattice took a quarter of the rays. A post reads between the corners of the finest
+// cell gathered around it.
+// With a work split and a detail distance, a process holds the lattice posts of its
+// window and its halo only (HeldPosts): gather rays read the lattice at hits within the
+// detail distance, and refine decides the cells whose corners it holds.
+
+#include "parallel/held_posts.h"
+#include "hierarchy/radiosity_types.h"
+#include "parallel/work_split.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace terralux
+{
+class PostLattice
+{
+public:
+  static constexpr int defaultStep = 4;
+  /// With `split` and a `postsHalo` >= 0 (HeldPosts::haloFor a detail distance), the
+  /// lattice posts within that many posts of this process's window, and the margin its
+  /// cells read; every lattice post otherwise.
+  PostLattice(int postsX, int postsY, int step = defaultStep, const WorkSplit* split = nullptr, int postsHalo = -1);
+
+  int step() const { return this->Step; }
+  bool onLattice(int i, int j) const { return i % this->Step == 0 && j % this->Step == 0; }
+  /// Whether lattice post (i, j) is gathered in the first pass (`first`), or in the
+  /// second, after refine: a corner of a cell of a refined coarse cell, not gathered
+  /// in the first.
+  bool gatheredInPass(int i, int j, bool first) const;
+  /// After the first pass (and its share): the coarse cells to refine, those where a
+  /// corner's spread of what the corners found per terrain seen exceeds
+  /// `allowedSpread` x what that corner receives, or where a corner has no data; and the
+  /// cells at the lattice's far edges, which have no coarse corners there. Cells with a
+  /// corner this process does not hold stay undecided (a read there throws).
+  void refine(double allowedSpread);
+  /// What a lattice post's gather found beyond the sky of its horizons.
+  struct Gathered
+  {
+    Spectrum reflected{};          ///< light from surfaces
+    Spectrum skyCorrection{};      ///< sky its rays found where the interpolated horizon was wrong
+    double skyViewCorrection = 0.0;
+    double variance = 0.0;         ///< of one ray's estimate
+    double terrainSeen = 0.0;      ///< 1 - its horizons' sky view factor
+    double received = 0.0;         ///< from the sun and its horizons' sky (largest bands)
+  };
+  /// Records a lattice post's gather (from any thread, each post once).
+  void set(int i, int j, const Gathered& gathered);
+  /// With `split`, whether this process gathers lattice post (i, j): those of its
+  /// window; and, once each has gathered its own, share receives those it holds of the
+  /// others' windows from their processes.
+  static bool gathers(int i, int j, const WorkSplit* split)
+  {
+    return !split || split->window(split->part()).holds(i, j);
+  }
+  void share();
+
+  /// The largest variance at a corner of the lattice cell holding post (i, j) (the
+  /// finest gathered there, as for every reading below); -1 where none is known.
+  double varianceAround(int i, int j) const { return this->around(i, j).variance; }
+  /// What the gathered corners of the lattice cell holding post (i, j) found: the
+  /// largest variance (-1 where none was gathered), and the largest and least light
+  /// beyond their horizons' sky per terrain seen (largest band; see perTerrainSeenAt).
+  struct Around
+  {
+    double variance = -1.0;
+    double largestPerTerrainSeen = 0.0;
+    double leastPerTerrainSeen = 0.0;
+  };
+  Around around(int i, int j) const;
+  /// Light from surfaces at grid parameters (u, v), bilinear between the lattice's
+  /// posts; false where none around holds a value.
+  bool reflectedAt(double u, double v, Spectrum& reflected) const;
+  /// What the lattice's posts found beyond their horizons' sky (light from surfaces,
+  /// the sky's corrections), each over the part of their hemisphere that is terrain (1 -
+  /// sky view factor), bilinear between them at grid parameters (u, v): a post there
+  /// that sees terrainSeen of terrain receives about terrainSeen times this. False where
+  /// none around holds a value.
+  struct PerTerrainSeen
+  {
+    Spectrum reflected{};
+    Spectrum skyCorrection{};
+    double skyViewCorrection = 0.0;
+  };
+  bool perTerrainSeenAt(double u, double v, PerTerrainSeen& value) const;
+
+private:
+  /// Where lattice post (li, lj) is in the held values; throws unless held.
+  std::size_t index(int li, int lj) const
+  {
+    this->Held.requireHeld(li, lj, "lattice's light");
+    return this->Held.index(li, lj);
+  }
+  /// The coarse cell (2 x 2 lattice cells) holding lattice cell (li, lj), in Refined;
+  /// throws unless held.
+  std::size_t coarseCell(int li, int lj) const;
+  enum : std::uint8_t
+  {
+    CellCoarse = 0,
+    CellRefined = 1,
+    CellUndecided = 2 // a corner is not held here
+  };
+  /// The cell that grid parameters (u, v) read from: its lowest corner and its side, in
+  /// lattice posts (1 in a refined coarse cell, else 2).
+  struct Cell
+  {
+    int li, lj, side;
+  };
+  Cell cellAt(double u, double v) const;
+  /// Calls corner(k) for each corner of `cell` on the lattice (k: its index).
+  template <class Corner>
+  void forEachCorner(const Cell& cell, const Corner& corner) const;
+  /// What the gathered corners of `cell` found (see around).
+  Around aroundCell(const Cell& cell) const;
+  template <class Value, class NodeValue>
+  bool interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const;
+  double largestPerTerrainSeen(std::size_t k) const;
+  // Per lattice post, over terrain seen: reflected, sky correction (maxBands each), sky
+  // view correction.
+  using Scaled = std::array<double, 2 * maxBands + 1>;
+
+  int Step, Nx, Ny; // lattice posts each way
+  int CoarseX, CoarseY; // coarse cells each way
+  HeldPosts Held; // the lattice posts this process holds
+  WorkSplit::Window HeldCells; // the coarse cells over them
+  std::vector<Spectrum> Reflected; // per held lattice post, as the vectors below
+  std::vector<double> Variance; // -1: not gathered (no data there, or not asked for)
+  std::vector<Scaled> PerTerrain;
+  std::vector<double> Received, TerrainSeen;
+  std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells
+};
+} // namespace terralux

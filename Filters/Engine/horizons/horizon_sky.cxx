@@ -1,0 +1,415 @@
+#include "horizons/horizon_sky.h"
+
+#include "base/angles.h"
+#include "horizons/horizon_map.h"
+#include "evaluation/open_sky.h"
+#include "visibility/sampling.h"
+#include "visibility/visibility.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+// Directions are d(u, phi) = cos u (cos phi, sin phi, 0) + sin u (0, 0, 1), u the
+// elevation. Toward a plane of unit normal n, n . d = cos u (nx cos phi + ny sin phi) +
+// sin u nz, so the projected solid angle of the sky between elevations u0, u1 and
+// azimuths phi0, phi1, the integral of (n . d) cos u du dphi, separates:
+//   [across(phi1) - across(phi0)] [along(u1) - along(u0)] + nz (phi1 - phi0) [up(u1) - up(u0)]
+// with across = nx sin phi - ny cos phi, along = u / 2 + sin u cos u / 2 (of cos^2 u) and
+// up = sin^2 u / 2 (of sin u cos u). The sines and cosines of the sky's cell boundaries
+// and of the sectors' pieces are tabulated once: they are most of the work otherwise.
+namespace terralux
+{
+HorizonSky::ElevationTerms HorizonSky::elevationTerms(double u, double sinU, double cosU)
+{
+  return { 0.5 * u + 0.5 * sinU * cosU, 0.5 * sinU * sinU };
+}
+
+HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const HorizonMap* map)
+  : Rays(rays)
+  , Sky(sky)
+  , Bands(sky.bands())
+  , Map(map)
+  , Side(sky.cellsPerSide())
+{
+  this->CellHeight = 0.5 * pi / this->Side;
+  this->CellWidth = 2.0 * pi / this->Side;
+  // Azimuth cell boundaries sit at CellStart + m CellWidth (the sky's azimuth v runs
+  // west from south: v = 3 pi / 2 - phi); the cell between boundaries m and m + 1 has
+  // v index FirstColumn - m - 1 (mod Side).
+  this->CellStart = std::fmod(1.5 * pi, this->CellWidth);
+  this->FirstColumn = static_cast<int>(std::lround((1.5 * pi - this->CellStart) / this->CellWidth));
+  for (int k = 0; k <= fineTerms; ++k)
+  {
+    const double u = k * 0.5 * pi / fineTerms;
+    this->Terms.push_back(elevationTerms(u, std::sin(u), std::cos(u)));
+  }
+  this->ColumnSums.resize(static_cast<std::size_t>(this->Side) * (this->Side + 1));
+  for (int iv = 0; iv < this->Side; ++iv)
+  {
+    RadianceTerms sum{};
+    RadianceTerms* column = &this->ColumnSums[static_cast<std::size_t>(iv) * (this->Side + 1)];
+    column[0] = sum;
+    for (int row = 0; row < this->Side; ++row)
+    {
+      const ElevationTerms& low = this->Terms[row * (fineTerms / this->Side)];
+      const ElevationTerms& high = this->Terms[(row + 1) * (fineTerms / this->Side)];
+      const Spectrum& l = sky.cellRadiance(row, iv);
+      for (int band = 0; band < maxBands; ++band)
+      {
+        sum.along[band] += l[band] * (high.along - low.along);
+        sum.up[band] += l[band] * (high.up - low.up);
+      }
+      column[row + 1] = sum;
+    }
+  }
+  for (int m = 0; m < this->Side; ++m)
+  {
+    const double phi = this->CellStart + m * this->CellWidth;
+    this->ColumnBoundaries.push_back({ std::sin(phi), std::cos(phi) });
+  }
+  const double piece = 2.0 * pi / (sectors * piecesPerSector);
+  for (int p = 0; p <= sectors * piecesPerSector; ++p)
+  {
+    this->PieceBoundaries.push_back({ std::sin(p * piece), std::cos(p * piece) });
+    this->PieceMiddles.push_back({ std::sin((p + 0.5) * piece), std::cos((p + 0.5) * piece) });
+  }
+  auto sinCos = [](double phi) { return SinCos{ std::sin(phi), std::cos(phi) }; };
+  if (map)
+  {
+    MapAzimuths& table = this->MapTable;
+    const std::vector<double>& azimuths = map->azimuths();
+    for (std::size_t a = 0; a < azimuths.size(); ++a)
+    {
+      table.directions.push_back(sinCos(azimuths[a]));
+      const double from = azimuths[a];
+      const double to = a + 1 < azimuths.size() ? azimuths[a + 1] : azimuths[0] + 2.0 * pi;
+      const double width = (to - from) / piecesPerSector;
+      for (int j = 0; j < piecesPerSector; ++j)
+      {
+        const double phi0 = from + j * width;
+        MapPiece mapPiece{ phi0, phi0 + width, sinCos(phi0), sinCos(phi0 + width), sinCos(phi0 + 0.5 * width), 0.0, 0.0, 0.0, {} };
+        this->sumPiece(mapPiece);
+        table.pieces.push_back(std::move(mapPiece));
+      }
+      MapPiece sector{ from, to, sinCos(from), sinCos(to), sinCos(0.5 * (from + to)), 0.0, 0.0, 0.0, {} };
+      this->sumPiece(sector);
+      table.sectors.push_back(std::move(sector));
+    }
+  }
+}
+
+HorizonSky::ElevationTerms HorizonSky::termsAt(double u) const
+{
+  // Linear between the table's entries: within 1e-7 of the exact terms (they are
+  // smooth, their second derivatives at most 1), for a lookup instead of a sine.
+  const double x = std::clamp(u / (0.5 * pi) * fineTerms, 0.0, static_cast<double>(fineTerms));
+  const int k = std::min(static_cast<int>(x), fineTerms - 1);
+  const double f = x - k;
+  const ElevationTerms& a = this->Terms[k];
+  const ElevationTerms& b = this->Terms[k + 1];
+  return { a.along + f * (b.along - a.along), a.up + f * (b.up - a.up) };
+}
+
+HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed, bool coarse) const
+{
+  HiddenSky result;
+  // Coarse: every other azimuth of the tables, each spanning twice the pieces.
+  const int stride = coarse ? 2 : 1, azimuths = sectors / stride, pieces = piecesPerSector * stride;
+  const double halfPi = 0.5 * pi, sector = 2.0 * pi / azimuths, piece = sector / pieces;
+  // Evenly spaced azimuths, turned by a random angle per point so that neighbouring
+  // posts' small errors do not line up.
+  const double turn = sector * SampleGenerator(seed).uniform();
+  const SinCos turned{ std::sin(turn), std::cos(turn) };
+  auto rotate = [&](const SinCos& a) {
+    return SinCos{ turned.sin * a.cos + turned.cos * a.sin, turned.cos * a.cos - turned.sin * a.sin };
+  };
+  auto lowerAt = [&](const SinCos& a) { return lowerBound(normal, a); };
+
+  // Each sampled azimuth's horizon lies between the highest elevation found blocked and
+  // the lowest found open (both the lower bound where that is open).
+  struct Horizon
+  {
+    double blocked, open;
+  };
+  std::array<Horizon, sectors> horizons; // the first `azimuths` used
+  // The search starts at the previous azimuth's horizon: neighbouring azimuths have
+  // similar horizons, so a few rays bracket the new one.
+  double previous = -1.0;
+  for (int k = 0; k < azimuths; ++k)
+  {
+    const SinCos azimuth = rotate(this->PieceBoundaries[k * pieces]);
+    const double lower = lowerAt(azimuth);
+    Horizon& horizon = horizons[k];
+    horizon = { lower, lower };
+    if (!(lower < halfPi - 1e-9))
+      continue;
+    // A ray toward elevation u; `terms` receives the elevation's terms of
+    // projectedBand from the same sine and cosine.
+    auto occluded = [&](double u, ElevationTerms& terms) {
+      ++result.rays;
+      const double s = std::sin(u), c = std::cos(u);
+      terms = elevationTerms(u, s, c);
+      return this->Rays.occludedToward(point, normal, Vec3(c * azimuth.cos, c * azimuth.sin, s));
+    };
+    const double hint = previous;
+    previous = lower;
+    ElevationTerms blockedTerms{}, openTerms{}, terms{};
+    if (!occluded(lower + 1e-4, terms))
+      continue; // open down to the lower bound
+    double blocked = lower, open = halfPi;
+    if (hint > blocked + 1e-3 && hint < open)
+      (occluded(hint, terms) ? blocked : open) = hint;
+    // Still no upper bracket: upward in doubling steps (most horizons are low).
+    if (open == halfPi)
+      for (double step = 2.0 * degree; blocked + step < open; step *= 2.0)
+      {
+        if (!occluded(blocked + step, terms))
+        {
+          open = blocked + step;
+          break;
+        }
+        blocked += step;
+      }
+    blockedTerms = this->termsAt(blocked);
+    openTerms = this->termsAt(open);
+    // Bisection until the band left holds at most bandTolerance of the sector's share
+    // of the whole sky's projected solid angle (pi / azimuths): bands near the plane's
+    // own horizon, where the cosine vanishes, end early.
+    const double across = normal.x * azimuth.cos + normal.y * azimuth.sin;
+    const double bandLimit = bandTolerance * pi / azimuths;
+    for (int step = 0; step < maximumBisections &&
+         sector * (across * (openTerms.along - blockedTerms.along) + normal.z * (openTerms.up - blockedTerms.up)) >
+           bandLimit;
+         ++step)
+    {
+      const double middle = 0.5 * (blocked + open);
+      if (occluded(middle, terms))
+        blocked = middle, blockedTerms = terms;
+      else
+        open = middle, openTerms = terms;
+    }
+    horizon = { blocked, open };
+    previous = 0.5 * (blocked + open);
+  }
+
+  auto hide = [&](int p, double u0, double u1, double share) {
+    const double phi0 = turn + p * piece;
+    this->hideBand(phi0, phi0 + piece, rotate(this->PieceBoundaries[p]), rotate(this->PieceBoundaries[p + 1]), u0, u1,
+      share, normal, result);
+  };
+  // Between two sampled azimuths the horizon's bounds are interpolated linearly, over
+  // pieces narrow enough for that to hold (the midpoint rule of a linear horizon).
+  for (int k = 0; k < azimuths; ++k)
+  {
+    const Horizon& from = horizons[k];
+    const Horizon& to = horizons[(k + 1) % azimuths];
+    if (from.open == from.blocked && to.open == to.blocked)
+      continue; // both azimuths open down to their lower bounds: so is the sky between
+    for (int j = 0; j < pieces; ++j)
+    {
+      const int p = k * pieces + j;
+      const double t = (j + 0.5) / pieces;
+      const double lower = lowerAt(rotate(this->PieceMiddles[p]));
+      const double blocked = std::max(lower, (1.0 - t) * from.blocked + t * to.blocked);
+      const double open = std::max(blocked, (1.0 - t) * from.open + t * to.open);
+      // Below the horizon all is hidden, the band where it lies half (the mean of the
+      // two bounds, whatever the band's shape).
+      hide(p, lower, blocked, 1.0);
+      hide(p, blocked, open, 0.5);
+    }
+  }
+  this->repeatLastBand(result);
+  return result;
+}
+
+void HorizonSky::repeatLastBand(HiddenSky& result) const
+{
+  for (int band = this->Bands; band < maxBands; ++band)
+    result.irradiance[band] = result.irradiance[this->Bands - 1];
+}
+
+double HorizonSky::lowerBound(const Vec3& normal, const SinCos& a)
+{
+  // Below the plane's own horizon the plane receives nothing, below the world's the
+  // sky sends nothing.
+  const double toward = normal.x * a.cos + normal.y * a.sin;
+  if (toward >= 0.0 && normal.z > 0.0)
+    return 0.0;
+  // The plane's elevation there, asin(-toward / |(toward, nz)|), by its sine.
+  return normal.z > 0.0 ? std::asin(-toward / std::sqrt(toward * toward + normal.z * normal.z))
+                        : std::max(0.0, std::atan2(-toward, normal.z));
+}
+
+void HorizonSky::sumPiece(MapPiece& piece) const
+{
+  std::array<Column, 16> columns;
+  const int count = this->columnsOf(piece.phi0, piece.phi1, piece.start, piece.end, columns);
+  piece.rows.assign(this->Side + 1, PieceRow{});
+  for (int c = 0; c < count; ++c)
+  {
+    const Column& column = columns[c];
+    piece.dSin += column.dSin;
+    piece.dCos += column.dCos;
+    piece.width += column.width;
+    const RadianceTerms* sums = &this->ColumnSums[static_cast<std::size_t>(column.iv) * (this->Side + 1)];
+    for (int row = 0; row <= this->Side; ++row)
+    {
+      PieceRow& r = piece.rows[row];
+      const Spectrum* l = row < this->Side ? &this->Sky.cellRadiance(row, column.iv) : nullptr;
+      for (int band = 0; band < maxBands; ++band)
+      {
+        r.s[band] += column.dSin * sums[row].along[band];
+        r.c[band] += column.dCos * sums[row].along[band];
+        r.w[band] += column.width * sums[row].up[band];
+        if (l)
+        {
+          r.rowS[band] += column.dSin * (*l)[band];
+          r.rowC[band] += column.dCos * (*l)[band];
+          r.rowW[band] += column.width * (*l)[band];
+        }
+      }
+    }
+  }
+}
+
+void HorizonSky::hidePiece(const MapPiece& piece, double u0, double u1, const Vec3& normal, HiddenSky& result) const
+{
+  // As hideBand, over the piece's columns at once (a piece behind the plane on balance
+  // counts nothing).
+  if (!(u0 < u1))
+    return;
+  const ElevationTerms low = this->termsAt(u0), high = this->termsAt(u1);
+  const double weight = (normal.x * piece.dSin - normal.y * piece.dCos) * (high.along - low.along) +
+    normal.z * piece.width * (high.up - low.up);
+  if (!(weight > 0.0))
+    return;
+  auto sumAt = [&](double u, const ElevationTerms& terms, int band) {
+    const int row = std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1);
+    const PieceRow& r = piece.rows[row];
+    const ElevationTerms& boundary = this->Terms[row * (fineTerms / this->Side)];
+    const double along = terms.along - boundary.along, up = terms.up - boundary.up;
+    return normal.x * (r.s[band] + r.rowS[band] * along) - normal.y * (r.c[band] + r.rowC[band] * along) +
+      normal.z * (r.w[band] + r.rowW[band] * up);
+  };
+  result.projectedSolidAngle += weight;
+  for (int band = 0; band < this->Bands; ++band)
+    result.irradiance[band] += std::max(0.0, sumAt(u1, high, band) - sumAt(u0, low, band));
+}
+
+int HorizonSky::columnsOf(
+  double phi0, double phi1, const SinCos& start, const SinCos& end, std::array<Column, 16>& columns) const
+{
+  // The sky's azimuth cells the range crosses, each clipped to it.
+  int count = 0;
+  int m = static_cast<int>(std::floor((phi0 - this->CellStart) / this->CellWidth)) + 1;
+  double b = phi0;
+  SinCos at = start;
+  while (b < phi1 && count < static_cast<int>(columns.size()))
+  {
+    const double boundary = this->CellStart + m * this->CellWidth;
+    const bool last = boundary >= phi1;
+    const SinCos next = last ? end : this->ColumnBoundaries[((m % this->Side) + this->Side) % this->Side];
+    const double bEnd = last ? phi1 : boundary;
+    const int iv = (((this->FirstColumn - m) % this->Side) + this->Side) % this->Side;
+    columns[count++] = { next.sin - at.sin, next.cos - at.cos, bEnd - b, iv };
+    b = bEnd;
+    at = next;
+    ++m;
+  }
+  return count;
+}
+
+void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1,
+  double share, const Vec3& normal, HiddenSky& result) const
+{
+  // The sky between azimuths phi0 and phi1 and elevations u0 and u1 taken as hidden,
+  // with weight `share`, column by column of the sky.
+  if (!(u0 < u1))
+    return;
+  std::array<Column, 16> columns;
+  const int count = this->columnsOf(phi0, phi1, start, end, columns);
+  // Each column at once, from the running sums of its radiance-weighted terms (the
+  // cosine is linear in them, so it needs no cell-by-cell loop). A column whose band
+  // lies behind the plane on balance counts nothing.
+  const ElevationTerms low = this->termsAt(u0), high = this->termsAt(u1);
+  for (int c = 0; c < count; ++c)
+  {
+    const Column& column = columns[c];
+    const double across = normal.x * column.dSin - normal.y * column.dCos;
+    const double weight = share *
+      (across * (high.along - low.along) + normal.z * column.width * (high.up - low.up));
+    if (!(weight > 0.0))
+      continue;
+    const RadianceTerms bottom = this->columnSumAt(column.iv, u0, low);
+    const RadianceTerms top = this->columnSumAt(column.iv, u1, high);
+    result.projectedSolidAngle += weight;
+    for (int band = 0; band < this->Bands; ++band)
+      result.irradiance[band] += std::max(0.0, share *
+        (across * (top.along[band] - bottom.along[band]) +
+          normal.z * column.width * (top.up[band] - bottom.up[band])));
+  }
+}
+
+HorizonSky::RadianceTerms HorizonSky::columnSumAt(int iv, double u, const ElevationTerms& terms) const
+{
+  // The sums up to the row boundary below u, and the part of u's row up to u.
+  const int row = std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1);
+  RadianceTerms sum = this->ColumnSums[static_cast<std::size_t>(iv) * (this->Side + 1) + row];
+  const ElevationTerms& boundary = this->Terms[row * (fineTerms / this->Side)];
+  const Spectrum& l = this->Sky.cellRadiance(row, iv);
+  for (int band = 0; band < maxBands; ++band)
+  {
+    sum.along[band] += l[band] * (terms.along - boundary.along);
+    sum.up[band] += l[band] * (terms.up - boundary.up);
+  }
+  return sum;
+}
+
+void HorizonSky::mapHorizons(const HorizonMap::Post& post, const Vec3& normal, MapElevations& elevations,
+  std::array<bool, HorizonMap::maximumAzimuths>& rises) const
+{
+  const std::vector<SinCos>& directions = this->MapTable.directions;
+  const std::size_t cell = this->Map->cellOf(post);
+  for (std::size_t a = 0; a < directions.size(); ++a)
+  {
+    const double lower = lowerBound(normal, directions[a]);
+    const double horizon = this->Map->elevationAt(cell, static_cast<int>(a));
+    rises[a] = horizon > lower;
+    elevations[a] = std::max(lower, horizon);
+  }
+}
+
+HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const
+{
+  // The map's azimuths, each with its horizon, interpolated between them over pieces
+  // as the sampled azimuths are.
+  HiddenSky result;
+  const MapAzimuths& table = this->MapTable;
+  const int count = static_cast<int>(table.directions.size());
+  MapElevations elevations;
+  std::array<bool, HorizonMap::maximumAzimuths> rises;
+  this->mapHorizons(post, normal, elevations, rises);
+  for (int a = 0; a < count; ++a)
+  {
+    const int b = (a + 1) % count;
+    if (!rises[a] && !rises[b])
+      continue;
+    if (std::max(elevations[a], elevations[b]) <= lowSector)
+    {
+      const MapPiece& sector = table.sectors[a];
+      this->hidePiece(sector, lowerBound(normal, sector.middle), 0.5 * (elevations[a] + elevations[b]), normal, result);
+      continue;
+    }
+    for (int j = 0; j < piecesPerSector; ++j)
+    {
+      const MapPiece& piece = table.pieces[a * piecesPerSector + j];
+      const double t = (j + 0.5) / piecesPerSector;
+      this->hidePiece(piece, lowerBound(normal, piece.middle), (1.0 - t) * elevations[a] + t * elevations[b], normal,
+        result);
+    }
+  }
+  this->repeatLastBand(result);
+  return result;
+}
+} // namespace terralux

@@ -1,0 +1,108 @@
+#include "horizons/post_sky.h"
+
+#include "base/angles.h"
+#include "terrain/grid_interpolation.h"
+#include "horizons/horizon_sky.h"
+#include "evaluation/open_sky.h"
+#include "terrain/terrain_grid.h"
+#include "parallel/work_split.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace terralux
+{
+namespace
+{
+constexpr int skyTag = 900; // apart from the horizons' hand-off (a tag per azimuth)
+}
+
+PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals,
+  const WorkSplit* split, int halo)
+  : Terrain(terrain)
+  , HornNormals(hornNormals)
+  , Held(terrain.postsX(), terrain.postsY(), split, halo)
+{
+  const int nx = terrain.postsX(), ny = terrain.postsY();
+  const std::size_t posts = this->Held.count();
+  // With a split, each process finds the skies of its window's posts (whose horizons
+  // it holds), and gets the others' (gather rays read them wherever they land).
+  const WorkSplit::Window own = WorkSplit::ownWindow(split, nx, ny);
+  WorkSplit::partThenShare(
+    split,
+    [&]() {
+      this->Values.resize(posts);
+      this->Used.assign(posts, 0);
+      tbb::parallel_for(own.j0, own.j1 + 1, [&](int j) {
+        for (int i = own.i0; i <= own.i1; ++i)
+        {
+          HorizonMap::Post post;
+          post.found = true;
+          post.index = static_cast<std::size_t>(j) * nx + i;
+          const std::size_t held = this->Held.index(i, j);
+          this->Values[held] = {};
+          if (!terrain.postUsed(i, j))
+            continue;
+          const Value value = at(post, terrain.normalAt(i, j, hornNormals), horizons, sky);
+          for (int band = 0; band < maxBands; ++band)
+            this->Values[held][band] = static_cast<float>(value.irradiance[band]);
+          this->Values[held][maxBands] = static_cast<float>(value.skyViewFactor);
+          this->Used[held] = 1;
+        }
+      });
+    },
+    [&]() {
+      this->Held.share(this->Values, skyTag);
+      this->Held.share(this->Used, skyTag + 1);
+    });
+}
+
+PostSky::Value PostSky::at(const HorizonMap::Post& post, const Vec3& normal, const HorizonSky& horizons, const OpenSky& sky)
+{
+  Value result;
+  Spectrum open{};
+  double openOmega = 0.0;
+  sky.irradiance(normal, open, openOmega);
+  const HiddenSky hidden = horizons.hiddenAt(post, normal);
+  for (int band = 0; band < maxBands; ++band)
+    result.irradiance[band] = std::max(0.0, open[band] - hidden.irradiance[band]);
+  result.skyViewFactor = std::max(0.0, openOmega - hidden.projectedSolidAngle) / pi;
+  return result;
+}
+
+bool PostSky::found(const HorizonMap::Post& post, const Vec3& normal, Value& value) const
+{
+  const int nx = this->Terrain.postsX();
+  if (!post || nx < 1)
+    return false;
+  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
+  if (!this->Held.holds(i, j) || !this->Used[this->Held.index(i, j)])
+    return false;
+  // Stored as floats: the same normal to 1e-6 gives the same sky to about 1e-6.
+  if (glm::length(this->Terrain.normalAt(i, j, this->HornNormals) - normal) > 1e-6)
+    return false;
+  const std::array<float, maxBands + 1>& held = this->Values[this->Held.index(i, j)];
+  for (int band = 0; band < maxBands; ++band)
+    value.irradiance[band] = held[band];
+  value.skyViewFactor = held[maxBands];
+  return true;
+}
+
+bool PostSky::interpolate(double u, double v, Spectrum& irradiance) const
+{
+  const int nx = this->Terrain.postsX();
+  return interpolateNodes(u, v, nx, this->Terrain.postsY(),
+    [&](int i, int j, Spectrum& value) {
+      this->Held.requireHeld(i, j, "sky");
+      const std::size_t index = this->Held.index(i, j);
+      if (!this->Used[index])
+        return false;
+      for (int band = 0; band < maxBands; ++band)
+        value[band] = this->Values[index][band];
+      return true;
+    },
+    irradiance);
+}
+} // namespace terralux

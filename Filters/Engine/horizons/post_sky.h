@@ -1,0 +1,62 @@
+#pragma once
+// The sky each post of a height-field terrain receives, found once from the horizons'
+// map, and read between posts where a final gather's ray meets the terrain. What a hit
+// sends is its reflectance times what it receives; taken from its leaf, the sky part is
+// the leaf's average, and a leaf that holds a pit or the foot of a slope averages the
+// open sky of its rims into the shadowed bottom (on a rough fractal DEM, posts in pits
+// then gathered 2 to 4 times the reference's reflected light from their walls).
+// Between posts the sky is interpolated bilinearly from the posts of the hit's cell.
+
+#include "parallel/held_posts.h"
+#include "horizons/horizon_map.h"
+#include "hierarchy/radiosity_types.h"
+#include "base/uninitialized_vector.h"
+
+#include <array>
+#include <vector>
+
+namespace terralux
+{
+class HorizonSky;
+class OpenSky;
+class TerrainGrid;
+class WorkSplit;
+
+class PostSky
+{
+public:
+  /// Every used post of the map's terrain, on its normal (Horn's where `hornNormals`,
+  /// the area-weighted one otherwise: the outputs' choice), in parallel; with `split`,
+  /// each process its window's posts, then the others' it holds received: every post,
+  /// or with a `halo` >= 0 (HeldPosts::haloFor a detail distance) those within it of
+  /// its window.
+  PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals = false,
+    const WorkSplit* split = nullptr, int halo = -1);
+
+  struct Value
+  {
+    Spectrum irradiance{};
+    double skyViewFactor = 0.0;
+  };
+  /// The sky a post receives on a plane of unit normal n: the open sky less what its
+  /// horizon hides (as the final gather takes it at a post).
+  static Value at(const HorizonMap::Post& post, const Vec3& normal, const HorizonSky& horizons, const OpenSky& sky);
+
+  /// The sky found for a post, when `normal` is the one it was found on; false
+  /// otherwise.
+  bool found(const HorizonMap::Post& post, const Vec3& normal, Value& value) const;
+
+  /// The sky irradiance at grid parameters (u, v), between the used posts of its cell;
+  /// false where the cell has none. Throws where this process does not hold them.
+  bool interpolate(double u, double v, Spectrum& irradiance) const;
+
+private:
+  const TerrainGrid& Terrain;
+  bool HornNormals;
+  HeldPosts Held;
+  // Per held post, row by row: irradiance, sky view factor, each written by a parallel loop
+  // or a share without a serial zeroing first (read only where Used).
+  UninitializedVector<std::array<float, maxBands + 1>> Values;
+  std::vector<std::uint8_t> Used;
+};
+} // namespace terralux

@@ -1,0 +1,47 @@
+#pragma once
+// The radiosity engine's tuned constants, in one place. What each one trades, and the
+// measurement behind its value, is in docs/tuning.md: change both together.
+
+#include <cstddef>
+
+namespace terralux
+{
+struct Tuning
+{
+  // Direct sun at posts (HierarchicalRadiosity::findSunHorizons).
+  /// Suns from which the horizon map is built to prove suns seen or hidden (~20 rays a post).
+  static constexpr std::size_t sunsForHorizonMap = 48;
+  /// Suns from which the horizon map is dense: 64 azimuths instead of 32.
+  static constexpr std::size_t sunsForDenseHorizons = 1000;
+
+  // The hierarchy's suns (HierarchicalRadiosity::mergeSuns).
+  /// Suns beyond which those within mergedSunDegrees of each other are merged into one.
+  static constexpr std::size_t maximumSolveSuns = 64;
+  static constexpr double mergedSunDegrees = 2.0;
+
+  // The open sky of a point's plane (OpenSky::tabulate).
+  /// Points from which its table over normals is 128 a side instead of 64.
+  static constexpr std::size_t openSkyTablePoints = 200000;
+
+  // The leaves' own gather (LeafLight): rays per leaf and passes (bounces).
+  static constexpr int leafGatherRays = 256;
+  static constexpr int leafGatherPasses = 3;
+
+  // A post's final gather, below its horizon (TerrainDirections).
+  /// Its rays are capped at the gather's maximum over this.
+  static constexpr int postGatherDivisor = 4;
+  /// Its pilot where no lattice tells the spread, and its rays where one does.
+  static constexpr int postPilotRays = 16;
+  static constexpr int latticeKnownRays = 9;
+  /// Visibility samples from a point, per link sample, where the link saw its sender in part.
+  static constexpr int partialVisibilityFactor = 8;
+
+  // The lattice of posts gathered first (PostLattice).
+  /// A post reads between lattice posts that agree within latticeSpreadAllowance x
+  /// gatherError when its light from surfaces is at most smallReflectedShare of it.
+  static constexpr double smallReflectedShare = 0.01;
+  static constexpr double latticeSpreadAllowance = 2.0;
+  /// A lattice cell is refined where its corners spread more than this x gatherError.
+  static constexpr double latticeRefineAllowance = 1.0;
+};
+} // namespace terralux

@@ -1,0 +1,67 @@
+#include "visibility/scene_geometry.h"
+
+#include "horizons/horizon_map.h"
+#include "terrain/terrain_grid.h"
+#include "visibility/visibility.h"
+
+namespace terralux
+{
+SceneGeometry::SceneGeometry(const RadiosityScene& scene, const FarSight& far)
+  : Points(scene.points)
+  , Polygons(scene.polygons)
+  , Terrains(scene.terrains)
+  , Far(far)
+  , GivenFar(scene.farTerrain)
+  , Rays(std::make_unique<Visibility>(scene, far))
+  , Horizons(scene.terrains.size())
+  , DenseHorizons(scene.terrains.size())
+{
+}
+
+SceneGeometry::~SceneGeometry() = default;
+
+const Visibility& SceneGeometry::hierarchyRays() const
+{
+  return this->Rays->farRays();
+}
+
+const HorizonMap& SceneGeometry::horizons(std::size_t index, bool dense, const WorkSplit* split)
+{
+  const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
+  auto build = [&](bool denseMap) {
+    // A window with its far terrain given sees that terrain beyond the detail distance.
+    if (this->GivenFar.grid && this->Far.detailDistance > 0.0)
+      return std::make_unique<HorizonMap>(*this->Terrains[index], this->GivenFar, this->Far.detailDistance, denseMap);
+    return std::make_unique<HorizonMap>(*this->Terrains[index], denseMap, split);
+  };
+  if (dense || this->DenseHorizons[index])
+  {
+    if (!this->DenseHorizons[index])
+      this->DenseHorizons[index] = build(true);
+    return *this->DenseHorizons[index];
+  }
+  if (!this->Horizons[index])
+    this->Horizons[index] = build(false);
+  return *this->Horizons[index];
+}
+
+bool SceneGeometry::sameShape(const RadiosityScene& scene, const FarSight& far) const
+{
+  if (!(far == this->Far) || scene.points != this->Points || scene.polygons.size() != this->Polygons.size() ||
+    scene.terrains.size() != this->Terrains.size())
+    return false;
+  for (std::size_t k = 0; k < scene.polygons.size(); ++k)
+  {
+    const ScenePolygon &a = scene.polygons[k], &b = this->Polygons[k];
+    if (a.vertexCount != b.vertexCount || a.vertices != b.vertices)
+      return false;
+  }
+  for (std::size_t k = 0; k < scene.terrains.size(); ++k)
+    if (!scene.terrains[k]->sameSurface(*this->Terrains[k]))
+      return false;
+  const GivenFarTerrain &a = scene.farTerrain, &b = this->GivenFar;
+  if (!a.grid || !b.grid)
+    return !a.grid && !b.grid;
+  return a.stride == b.stride && a.i0 == b.i0 && a.j0 == b.j0 && a.grid->sameSurface(*b.grid);
+}
+} // namespace terralux

@@ -1,0 +1,711 @@
+#include "vtkRadiosityFilter.h"
+
+#include "vtkCompositeDataSet.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityOutputs.h"
+#include "vtkRadiosityScene.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStructuredGrid.h"
+#include "vtkTerraLuxFieldData.h"
+#include "vtkTerrainPieces.h"
+#include "vtkTerrainSource.h"
+
+#include "base/error.h"
+#include "base/finite_parameters.h"
+#include "visibility/scene_geometry.h"
+#include "solver/solver.h"
+#include "visibility/visibility.h"
+#include "parallel/terrain_window.h"
+#include "parallel/work_split.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <string>
+#include <vector>
+
+struct vtkRadiosityFilter::KeptSolver
+{
+  std::unique_ptr<vtkRadiosityScene> GeometryScene; // the grids its rays were built on
+  std::unique_ptr<vtkRadiosityScene> SolverScene;   // its elements', when not the same
+  // Declared last: freed before the grids it shares.
+  std::unique_ptr<terralux::HierarchicalRadiosity> Solver;
+};
+
+namespace
+{
+// The leaf data sets of port 0, in connection order, composites flattened.
+std::vector<vtkDataSet*> inputDataSets(vtkInformationVector* port)
+{
+  std::vector<vtkDataSet*> result;
+  for (int k = 0; k < port->GetNumberOfInformationObjects(); ++k)
+  {
+    const std::vector<vtkDataSet*> dataSets =
+      vtkRadiosityScene::DataSetsOf(port->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()));
+    result.insert(result.end(), dataSets.begin(), dataSets.end());
+  }
+  return result;
+}
+
+class FilterProgress : public terralux::RadiosityProgress
+{
+public:
+  explicit FilterProgress(vtkRadiosityFilter* filter)
+    : Filter(filter)
+  {
+  }
+  bool report(double fraction) override
+  {
+    this->Filter->UpdateProgress(0.1 + 0.8 * fraction);
+    return !this->Filter->GetAbortExecute();
+  }
+
+private:
+  vtkRadiosityFilter* Filter;
+};
+// Output 0: the inputs, same points and cells and the same composite structure (several
+// connections: a multiblock of them), with the point arrays; a terrain piece's posts
+// only when `pieceExtent` is given.
+void addPointArrays(vtkInformationVector* geometry, const terralux::HierarchicalRadiosity& solver,
+  const vtkRadiosityScene& scene, vtkRadiosityOutputs::PointOptions pointOptions, const int* pieceExtent,
+  vtkDataObject* output)
+{
+  int index = 0;
+  auto withResults = [&](vtkDataSet* input) {
+    vtkSmartPointer<vtkDataSet> copy;
+    copy.TakeReference(input->NewInstance());
+    copy->ShallowCopy(input);
+    vtkRadiosityOutputs::AddPointArrays(solver, scene, index++, pointOptions, copy);
+    return copy;
+  };
+  auto copyComposite = [&](vtkCompositeDataSet* input) {
+    vtkSmartPointer<vtkCompositeDataSet> copy;
+    copy.TakeReference(input->NewInstance());
+    copy->CopyStructure(input);
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(input->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      if (auto* dataSet = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+        copy->SetDataSet(it, withResults(dataSet));
+    return copy;
+  };
+  const int connections = geometry->GetNumberOfInformationObjects();
+  auto inputAt = [&](int k) { return geometry->GetInformationObject(k)->Get(vtkDataObject::DATA_OBJECT()); };
+  if (connections == 1 && vtkCompositeDataSet::SafeDownCast(inputAt(0)))
+  {
+    output->ShallowCopy(copyComposite(vtkCompositeDataSet::SafeDownCast(inputAt(0))));
+  }
+  else if (auto* multiblock = vtkMultiBlockDataSet::SafeDownCast(output))
+  {
+    multiblock->SetNumberOfBlocks(static_cast<unsigned int>(connections));
+    for (int k = 0; k < connections; ++k)
+    {
+      vtkDataObject* input = inputAt(k);
+      if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+        multiblock->SetBlock(static_cast<unsigned int>(k), copyComposite(composite));
+      else if (auto* dataSet = vtkDataSet::SafeDownCast(input))
+        multiblock->SetBlock(static_cast<unsigned int>(k), withResults(dataSet));
+    }
+  }
+  else
+  {
+    auto* dataSet = vtkDataSet::SafeDownCast(output);
+    dataSet->ShallowCopy(scene.Inputs[0].data);
+    // Only the piece's posts; a terrain's piece cropped first, so that its arrays take
+    // the piece's memory (each rank's share of the whole grid's).
+    const bool cropFirst = pieceExtent && scene.Inputs[0].terrain >= 0;
+    if (pieceExtent)
+    {
+      // The piece's posts in the input's grid (a window of the whole, with a far terrain).
+      int extent[6] = { 0, 0, 0, 0, 0, 0 };
+      if (auto* grid = vtkStructuredGrid::SafeDownCast(scene.Inputs[0].data))
+        grid->GetExtent(extent);
+      for (int k = 0; k < 4; ++k)
+        pointOptions.posts[k] = pieceExtent[k] - extent[k - k % 2];
+    }
+    if (cropFirst)
+      vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), pieceExtent);
+    pointOptions.croppedToPosts = cropFirst;
+    vtkRadiosityOutputs::AddPointArrays(solver, scene, 0, pointOptions, dataSet);
+    if (pieceExtent && !cropFirst)
+      vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), pieceExtent);
+  }
+}
+
+// Field data: sizes, rays and seconds per phase, so a user sees where the time went.
+struct PointsPhase
+{
+  double seconds = 0.0;
+  double latticeSeconds = 0.0; // of those, the lattice's gathers
+  std::size_t latticeRays = 0;
+};
+void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
+  const PointsPhase& points, vtkFieldData* fieldData)
+{
+  const terralux::RadiosityStatistics& stats = solver.statistics();
+  auto addValue = [&](const char* name, double value) { vtkRadiosityOutputs::AddFieldValue(fieldData, name, value); };
+  addValue("Elements", static_cast<double>(stats.elements));
+  addValue("Links", static_cast<double>(stats.links));
+  addValue("Rays", static_cast<double>(solver.raysCast())); // the solve's and the points'
+  addValue("Iterations", stats.iterations);
+  addValue("Residual", stats.residual);
+  addValue("DegeneratePolygons", static_cast<double>(solver.degeneratePolygons()));
+  addValue("SkippedCells", static_cast<double>(scene.SkippedCells)); // vertices, lines: no area
+  addValue("SecondsHierarchyBuild", stats.secondsHierarchyBuild);
+  addValue("SecondsVisibilityBuild", stats.secondsVisibilityBuild);
+  addValue("SecondsRefine", stats.secondsRefine);
+  addValue("SecondsGather", stats.secondsGather);
+  addValue("SecondsPushPull", stats.secondsPushPull);
+  addValue("SecondsHorizons", stats.secondsHorizons);
+  addValue("SecondsPoints", points.seconds);
+  addValue("SecondsLattice", points.latticeSeconds);
+  addValue("RaysRefine", static_cast<double>(stats.raysRefine));
+  addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
+  addValue("RaysPoints", static_cast<double>(solver.raysCast() - stats.rays));
+  addValue("RaysLattice", static_cast<double>(points.latticeRays));
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkRadiosityFilter::vtkRadiosityFilter(int inputPorts, int farTerrainPort)
+  : FarTerrainPort(farTerrainPort)
+  , ReuseGeometry(1)
+  , ErrorTolerance(1e-3)
+  , MinimumElementArea(0.0)
+  , VisibilitySamples(4)
+  , MaximumGatherRays(4096)
+  , GatherError(0.003)
+  , DetailDistance(0.0)
+  , FarTerrainStride(1)
+  , MaximumIterations(30)
+  , ConvergenceTolerance(1e-3)
+  , MaximumNumberOfElements(1000000)
+  , DefaultReflectance(0.2)
+  , UseTerrainHierarchy(1)
+  , SkyFromHorizons(1)
+  , EvaluateAtPoints(1)
+  , NumberOfBands(1)
+  , PostNormals(AREA_WEIGHTED_NORMALS)
+{
+  this->SetNumberOfInputPorts(inputPorts);
+  this->SetNumberOfOutputPorts(3);
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityFilter::SetFarTerrainConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(this->FarTerrainPort, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityFilter::SetFarTerrainData(vtkStructuredGrid* far)
+{
+  this->SetInputDataObject(this->FarTerrainPort, far);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRadiosityFilter::UsesFarTerrainInput(vtkInformationVector** inputVector)
+{
+  return this->DetailDistance > 0.0 && inputVector[this->FarTerrainPort]->GetNumberOfInformationObjects() == 1;
+}
+
+//------------------------------------------------------------------------------
+vtkRadiosityFilter::~vtkRadiosityFilter()
+{
+}
+
+//------------------------------------------------------------------------------
+int vtkRadiosityFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == this->FarTerrainPort)
+  {
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkStructuredGrid");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  if (port != 0)
+    return 0; // a subclass's own port
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkStructuredGrid");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkRadiosityFilter::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkDataObject" : "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkRadiosityFilter::GetLeafMeshOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkRadiosityFilter::GetLinksOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(2));
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityFilter::SetCellArrayToProcess(int index, const char* name)
+{
+  // Unchanged (the same name, already a cell array): not Modified.
+  vtkInformation* info = this->GetInputArrayInformation(index);
+  const char* current = info->Get(vtkDataObject::FIELD_NAME());
+  const std::string wanted = name ? name : "";
+  if (wanted == (current ? current : "") && info->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+    info->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS)
+    return;
+  this->SetInputArrayToProcess(index, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, wanted.c_str());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkRadiosityFilter::CellArrayToProcess(int index)
+{
+  vtkInformation* info = this->GetInputArrayInformation(index);
+  const char* name = info->Get(vtkDataObject::FIELD_NAME());
+  // "None": what ParaView's array list passes when none is chosen.
+  if (!name || !*name || std::string(name) == NoArrayName)
+    return nullptr;
+  return name;
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityFilter::CheckCellArraysToProcess()
+{
+  for (int index : { ReflectanceArray, EmissionArray })
+  {
+    vtkInformation* info = this->GetInputArrayInformation(index);
+    if (this->CellArrayToProcess(index) && info->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+      info->Get(vtkDataObject::FIELD_ASSOCIATION()) != vtkDataObject::FIELD_ASSOCIATION_CELLS)
+      throw terralux::Error(std::string("the ") + (index == ReflectanceArray ? "reflectance" : "emission") +
+        " array '" + this->CellArrayToProcess(index) + "' must be a cell array: call SetInputArrayToProcess(" +
+        std::to_string(index) + ", 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, name)");
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkRadiosityFilter::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // A terrain's piece (an MPI rank's, a stream's) is a sub-extent of output 0.
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  if (inputVector[0]->GetNumberOfInformationObjects() == 1 &&
+    info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+    info->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkRadiosityFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The whole scene and whole sky are needed whatever piece is asked of output 0:
+  // every piece solves the same scene (the same hierarchy, deterministically) and
+  // evaluates its own posts.
+  vtkTerraLuxFieldData::RequestWholeInputs(inputVector, this->GetNumberOfInputPorts());
+  // With a far terrain, a terrain's piece needs the full resolution only within its
+  // halo (TerrainWindow): the piece grown by it, from a multiple of the lattice's cell
+  // (the window's lattice is the whole grid's), is what is asked for.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo =
+    inputVector[0]->GetNumberOfInformationObjects() == 1 ? inputVector[0]->GetInformationObject(0) : nullptr;
+  if (!this->UsesFarTerrainInput(inputVector) || !inInfo || !inInfo->Has(vtkTerrainSource::POST_SPACING()) ||
+    !inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()) ||
+    !outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+    return 1;
+  const int halo = terralux::TerrainWindow::haloPosts(this->DetailDistance, inInfo->Get(vtkTerrainSource::POST_SPACING()));
+  if (halo < 0)
+    return 1;
+  int whole[6], piece[6];
+  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  vtkTerrainPieces::RequestedPiece(outInfo, piece);
+  if (piece[1] < piece[0] || piece[3] < piece[2])
+    return 1;
+  const terralux::TerrainWindow::Extent asked = terralux::TerrainWindow::requested(
+    { whole[0], whole[1], whole[2], whole[3] }, { piece[0], piece[1], piece[2], piece[3] }, halo);
+  int window[6] = { asked.i0, asked.i1, asked.j0, asked.j1, whole[4], whole[5] };
+  // Not EXACT_EXTENT: the pipeline would crop a larger grid it holds (from another
+  // consumer's request) without its georeference; a larger window serves as well.
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), window, 6);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkRadiosityFilter::RequestDataObject(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // One input: output 0 has its type (a composite keeps its structure); several: a
+  // multiblock with a block per input.
+  vtkDataObject* first = inputVector[0]->GetNumberOfInformationObjects() == 1
+    ? inputVector[0]->GetInformationObject(0)->Get(vtkDataObject::DATA_OBJECT())
+    : nullptr;
+  vtkSmartPointer<vtkDataObject> wanted;
+  if (first && (first->IsA("vtkPolyData") || first->IsA("vtkStructuredGrid") || first->IsA("vtkDataObjectTree")))
+  {
+    wanted.TakeReference(first->NewInstance());
+  }
+  else
+  {
+    wanted = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  }
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  vtkDataObject* current = info->Get(vtkDataObject::DATA_OBJECT());
+  if (!current || strcmp(current->GetClassName(), wanted->GetClassName()) != 0)
+  {
+    info->Set(vtkDataObject::DATA_OBJECT(), wanted);
+  }
+  for (int port = 1; port < 3; ++port)
+  {
+    vtkInformation* portInfo = outputVector->GetInformationObject(port);
+    if (!vtkPolyData::SafeDownCast(portInfo->Get(vtkDataObject::DATA_OBJECT())))
+    {
+      portInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
+    }
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkRadiosityFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
+  vtkPolyData* leafMesh = vtkPolyData::GetData(outputVector, 1);
+  vtkPolyData* links = vtkPolyData::GetData(outputVector, 2);
+  auto clearOutputs = [&]() {
+    output->Initialize();
+    leafMesh->Initialize();
+    links->Initialize();
+  };
+  clearOutputs();
+  // Pieces: a terrain's piece is the sub-extent asked of output 0; other geometry is
+  // not split, piece 0 carries it and the leaf mesh and links, the others are empty.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  const int piece = pieces > 1 ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) : 0;
+  int extent[6];
+  const bool terrainPiece = pieces > 1 && vtkStructuredGrid::SafeDownCast(output) &&
+    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
+  if (terrainPiece)
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  }
+  else if (piece > 0)
+  {
+    return 1;
+  }
+  try
+  {
+    PieceRequest request{ terrainPiece ? extent : nullptr, piece == 0, piece, pieces };
+    const int status = this->Solve(inputVector, request, output, leafMesh, links);
+    if (status == 0)
+      clearOutputs();
+    return status;
+  }
+  catch (const terralux::Error& error)
+  {
+    vtkErrorMacro(<< error.what());
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory: raise ErrorTolerance or MinimumElementArea, lower "
+                  "MaximumNumberOfElements, or give fewer posts (vtkTerrainSource's Stride).");
+  }
+  catch (const std::exception& error)
+  {
+    vtkErrorMacro("Radiosity failed: " << error.what());
+  }
+  clearOutputs();
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<vtkRadiosityScene> vtkRadiosityFilter::BuildScene(vtkInformationVector** inputVector)
+{
+  terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
+    { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
+    { "DefaultReflectance", this->DefaultReflectance }, { "GatherError", this->GatherError },
+    { "DetailDistance", this->DetailDistance } });
+  this->CheckCellArraysToProcess();
+  auto scene = std::make_unique<vtkRadiosityScene>();
+  // A far terrain first: the terrain's posts take its origin, the same on every rank.
+  const bool far = this->UsesFarTerrainInput(inputVector);
+  if (far)
+  {
+    vtkStructuredGrid* grid = vtkStructuredGrid::GetData(inputVector[this->FarTerrainPort], 0);
+    vtkDataArray* stride = grid ? grid->GetFieldData()->GetArray(vtkTerraLuxFieldData::FarTerrainStrideName()) : nullptr;
+    if (!grid || !stride || stride->GetNumberOfTuples() != 1 || !(stride->GetTuple1(0) >= 2))
+      throw terralux::Error("the far terrain must be vtkTerrainSource's output port 1 (a structured grid with "
+                            "field data FarTerrainStride >= 2): SetFarTerrainConnection(source.GetOutputPort(1))");
+    scene->SetFarTerrain(grid, static_cast<int>(stride->GetTuple1(0)), this->DefaultReflectance,
+      this->CellArrayToProcess(ReflectanceArray), this->CellArrayToProcess(EmissionArray));
+  }
+  else if (this->DetailDistance <= 0.0 && inputVector[this->FarTerrainPort]->GetNumberOfInformationObjects() > 0)
+  {
+    vtkWarningMacro("The far terrain is ignored: it needs a DetailDistance > 0, beyond which rays see it.");
+  }
+  for (vtkDataSet* input : inputDataSets(inputVector[0]))
+    scene->AddDataSet(input, this->DefaultReflectance, this->CellArrayToProcess(ReflectanceArray),
+      this->CellArrayToProcess(EmissionArray), this->UseTerrainHierarchy != 0);
+  if (far)
+  {
+    // The window's first post in the whole grid: its extent from the whole extent's.
+    vtkInformation* info = inputVector[0]->GetInformationObject(0);
+    auto* terrain = vtkStructuredGrid::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT()));
+    int extent[6] = { 0, 0, 0, 0, 0, 0 }, whole[6] = { 0, 0, 0, 0, 0, 0 };
+    if (terrain)
+      terrain->GetExtent(extent);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+    scene->FindWindowInFarTerrain(extent[0] - whole[0], extent[2] - whole[2]);
+  }
+  if (!this->AddLights(inputVector, *scene) && !scene->HasEmission)
+    throw terralux::Error("no light source: connect a vtkSunSource or vtkSkySource with "
+                          "AddLightConnection(), or give an EmissionArrayName");
+  return scene;
+}
+
+//------------------------------------------------------------------------------
+terralux::HierarchicalRadiosity& vtkRadiosityFilter::PrepareSolver(std::unique_ptr<vtkRadiosityScene>& scene)
+{
+  terralux::RadiosityOptions options;
+  options.errorTolerance = this->ErrorTolerance;
+  options.minimumElementArea = this->MinimumElementArea;
+  options.visibilitySamples = this->VisibilitySamples;
+  options.gatherSamples = this->MaximumGatherRays;
+  options.gatherError = this->GatherError;
+  options.gatherDetailDistance = this->DetailDistance;
+  options.farTerrainStride = this->FarTerrainStride;
+  options.skyFromHorizons = this->SkyFromHorizons != 0;
+  options.maximumIterations = this->MaximumIterations;
+  options.convergenceTolerance = this->ConvergenceTolerance;
+  options.maximumElements = static_cast<std::size_t>(this->MaximumNumberOfElements);
+  std::unique_ptr<KeptSolver>& kept = this->Kept;
+  if (!this->ReuseGeometry)
+    kept.reset(); // turned off since the last update
+  if (kept && kept->Solver->serves(scene->Scene, options))
+  {
+    // The same scene as the last update's: only the lights are new. The solver's grids
+    // stay the kept scene's, equal to this one's.
+    kept->Solver->clearSources();
+    return *kept->Solver;
+  }
+  // A new hierarchy, over the kept rays and horizons if the shape is the same.
+  std::shared_ptr<terralux::SceneGeometry> geometry;
+  std::unique_ptr<vtkRadiosityScene> geometryScene;
+  if (kept && kept->Solver->geometry()->sameShape(scene->Scene, options.farSight()))
+  {
+    geometry = kept->Solver->geometry();
+    geometryScene = std::move(kept->GeometryScene);
+  }
+  kept.reset(); // the old solver, and a geometry of another shape, freed first
+  auto next = std::make_unique<KeptSolver>();
+  next->Solver = std::make_unique<terralux::HierarchicalRadiosity>(scene->Scene, options, geometry);
+  // The scenes it shares grids with move here; the caller's references stay valid.
+  next->SolverScene = geometryScene ? std::move(scene) : nullptr;
+  next->GeometryScene = geometryScene ? std::move(geometryScene) : std::move(scene);
+  kept = std::move(next);
+  return *kept->Solver;
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityFilter::ReleaseSolution()
+{
+  if (this->Kept && this->ReuseGeometry)
+    this->Kept->Solver->clearSources(); // its sky belongs to a scene that ends with the update
+  else
+    this->Kept.reset();
+}
+
+//------------------------------------------------------------------------------
+bool vtkRadiosityFilter::SolveHierarchy(vtkInformationVector** inputVector, Hierarchy& hierarchy)
+{
+  hierarchy.OwnScene = this->BuildScene(inputVector);
+  hierarchy.Scene = hierarchy.OwnScene.get();
+  if (this->GetAbortExecute()) // asked while the lights were made (vtkSolarIrradiation's steps)
+    return false;
+  terralux::HierarchicalRadiosity& solver = *(hierarchy.Solver = &this->PrepareSolver(hierarchy.OwnScene));
+  if (solver.degeneratePolygons() > 0)
+  {
+    vtkWarningMacro("Skipped " << solver.degeneratePolygons() << " degenerate polygon(s) with zero area.");
+  }
+  if (this->FarTerrainStride > 1 && !solver.seesFarTerrain() &&
+    !hierarchy.Scene->Scene.farTerrain.grid)
+  {
+    vtkWarningMacro("FarTerrainStride " << this->FarTerrainStride << " is ignored: it needs a DetailDistance > 0 "
+      "and a scene of one terrain alone (this one has " << hierarchy.Scene->Scene.terrains.size()
+      << " terrain(s) and " << hierarchy.Scene->Scene.polygons.size()
+      << " polygon(s)); rays see the full resolution everywhere.");
+  }
+  for (const vtkRadiosityScene::SunLight& sun : hierarchy.Scene->Suns)
+  {
+    solver.addSun(sun.direction, sun.irradiance, sun.hours);
+  }
+  solver.setSky(hierarchy.Scene->Sky.get());
+  this->UpdateProgress(0.1);
+  FilterProgress progress(this);
+  return solver.solve(&progress);
+}
+
+//------------------------------------------------------------------------------
+int vtkRadiosityFilter::Solve(vtkInformationVector** inputVector, const PieceRequest& piece,
+  vtkDataObject* output, vtkPolyData* leafMesh, vtkPolyData* links)
+{
+  Hierarchy hierarchy; // its scene outlives the kept solver's hold on its lights
+  // However the update ends, the kept solver lets go of its lights and solution.
+  struct Release
+  {
+    vtkRadiosityFilter* Filter;
+    ~Release() { this->Filter->ReleaseSolution(); }
+  } release{ this };
+  // Ranks that each evaluate their piece of one terrain split what all of them need at
+  // every post (horizons, posts' skies, the lattice), each computing its share.
+  // A terrain window with its far terrain computes all it needs itself: no split.
+  const bool window = this->UsesFarTerrainInput(inputVector);
+  const std::unique_ptr<terralux::WorkSplit> split = piece.extent && !window
+    ? vtkTerrainPieces::SplitAmongRanks(piece.piece, piece.pieces, piece.extent)
+    : nullptr;
+  bool solved = false;
+  std::exception_ptr failure;
+  try
+  {
+    solved = this->SolveHierarchy(inputVector, hierarchy);
+  }
+  catch (...)
+  {
+    failure = std::current_exception();
+  }
+  // Until here each rank worked alone. One that stopped (an error, an abort, out of
+  // memory) must not leave the others waiting in the shared steps' broadcasts: all
+  // learn it and stop alike.
+  const bool everyRankSolved = !split || split->allSucceeded(solved && !failure);
+  if (failure)
+    std::rethrow_exception(failure);
+  if (!solved)
+  {
+    vtkWarningMacro("Aborted.");
+    return 1;
+  }
+  if (!everyRankSolved)
+  {
+    vtkErrorMacro("Another MPI rank stopped before the ranks' shared steps (its error or warning says why): "
+                  "this rank stops too, with empty outputs.");
+    return 0;
+  }
+  vtkRadiosityScene& scene = *hierarchy.Scene;
+  terralux::HierarchicalRadiosity* solver = hierarchy.Solver;
+  if (window && piece.extent)
+    this->CheckWindowHalo(scene, inputVector[0], piece.extent);
+  const terralux::RadiosityStatistics& stats = solver->statistics();
+  if (stats.elementBudgetReached)
+  {
+    vtkWarningMacro("Refinement stopped at MaximumNumberOfElements ("
+      << this->MaximumNumberOfElements << " elements, or four times as many links): the solution is coarser "
+      << "than ErrorTolerance "
+      << this->ErrorTolerance << " asks. Raise ErrorTolerance or MaximumNumberOfElements.");
+  }
+  if (!stats.converged)
+  {
+    vtkWarningMacro("Radiosity did not converge in MaximumIterations (" << this->MaximumIterations
+      << "): the estimated remaining change of radiosity is " << stats.residual
+      << " of the largest, above ConvergenceTolerance " << this->ConvergenceTolerance
+      << ". Raise MaximumIterations.");
+  }
+
+  const bool hornNormals = this->PostNormals == HORN_NORMALS;
+  terralux::EvaluationPlan plan;
+  plan.atPoints = this->EvaluateAtPoints != 0;
+  plan.hornNormals = hornNormals;
+  plan.split = split.get();
+  const terralux::EvaluationStatistics prepared = solver->prepareEvaluation(plan);
+  // Output 0: the inputs, same points and cells and the same composite structure,
+  // with the point arrays.
+  const auto pointsStart = std::chrono::steady_clock::now();
+  PointsPhase points;
+  points.latticeSeconds = prepared.latticeSeconds;
+  points.latticeRays = prepared.latticeRays;
+  vtkRadiosityOutputs::PointOptions pointOptions;
+  pointOptions.bands = this->NumberOfBands;
+  pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;
+  pointOptions.hornNormals = hornNormals;
+  pointOptions.sunshine = scene.SunshineDuration;
+  addPointArrays(inputVector[0], *solver, scene, pointOptions, piece.extent, output);
+  points.seconds =
+    prepared.latticeSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
+  addStatistics(*solver, scene, points, output->GetFieldData());
+
+  if (piece.withMeshAndLinks)
+  {
+    vtkRadiosityOutputs::BuildLeafMesh(*solver, this->NumberOfBands, scene.Sky != nullptr, leafMesh);
+    vtkRadiosityOutputs::BuildLinks(*solver, links);
+  }
+  this->FinishOutputs(output, leafMesh);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityFilter::CheckWindowHalo(
+  const vtkRadiosityScene& scene, vtkInformationVector* geometry, const int* pieceExtent)
+{
+  // What the piece's posts need, on the posts as they are.
+  if (scene.Scene.terrains.size() != 1)
+    return;
+  vtkInformation* info = geometry->GetInformationObject(0);
+  int extent[6], whole[6];
+  vtkStructuredGrid::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT()))->GetExtent(extent);
+  info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  terralux::TerrainWindow::checkHeld(*scene.Scene.terrains.front(), this->DetailDistance,
+    { whole[0], whole[1], whole[2], whole[3] }, { extent[0], extent[1], extent[2], extent[3] },
+    { pieceExtent[0], pieceExtent[1], pieceExtent[2], pieceExtent[3] });
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityFilter::FinishOutputs(vtkDataObject*, vtkPolyData*) {}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ErrorTolerance: " << this->ErrorTolerance << "\n";
+  os << indent << "MinimumElementArea: " << this->MinimumElementArea << "\n";
+  os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
+  os << indent << "MaximumGatherRays: " << this->MaximumGatherRays << "\n";
+  os << indent << "GatherError: " << this->GatherError << "\n";
+  os << indent << "DetailDistance: " << this->DetailDistance << "\n";
+  os << indent << "FarTerrainStride: " << this->FarTerrainStride << "\n";
+  os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
+  os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
+  os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";
+  os << indent << "DefaultReflectance: " << this->DefaultReflectance << "\n";
+  const char* reflectance = this->GetReflectanceArrayName();
+  const char* emission = this->GetEmissionArrayName();
+  os << indent << "ReflectanceArrayName: " << (reflectance ? reflectance : "(none)") << "\n";
+  os << indent << "EmissionArrayName: " << (emission ? emission : "(none)") << "\n";
+  os << indent << "EvaluateAtPoints: " << (this->EvaluateAtPoints ? "On" : "Off") << "\n";
+  os << indent << "NumberOfBands: " << this->NumberOfBands << "\n";
+  os << indent << "PostNormals: " << (this->PostNormals == HORN_NORMALS ? "Horn" : "AreaWeighted") << "\n";
+  os << indent << "UseTerrainHierarchy: " << (this->UseTerrainHierarchy ? "On" : "Off") << "\n";
+  os << indent << "SkyFromHorizons: " << (this->SkyFromHorizons ? "On" : "Off") << "\n";
+  os << indent << "ReuseGeometry: " << (this->ReuseGeometry ? "On" : "Off") << "\n";
+}
