@@ -46,7 +46,9 @@
  * rays per phase (`RaysRefine`, `RaysPushPull` for gather and push-pull, `RaysPoints`,
  * of which `RaysLattice`).
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
- * `Level`, and the same point arrays (SkyViewFactor: the leaves' own, under a sky),
+ * `Level`, `InputIndex` and `InputCell` (the leaf's input data set, in connection and
+ * composite order, and its cell there: results map back to the input's blocks), and
+ * the same point arrays (SkyViewFactor: the leaves' own, under a sky),
  * continuous across elements (values at T-vertices interpolated along the coarser
  * edge; a terrain leaf's polygon holds the T-vertices of its edges, so the mesh has no
  * cracks).

@@ -656,7 +656,7 @@ int vtkRadiosityFilter::Solve(vtkInformationVector** inputVector, const PieceReq
 
   if (piece.withMeshAndLinks)
   {
-    vtkRadiosityOutputs::BuildLeafMesh(*solver, this->NumberOfBands, scene.Sky != nullptr, leafMesh);
+    vtkRadiosityOutputs::BuildLeafMesh(*solver, scene, this->NumberOfBands, scene.Sky != nullptr, leafMesh);
     vtkRadiosityOutputs::BuildLinks(*solver, links);
   }
   this->FinishOutputs(output, leafMesh);

@@ -7,6 +7,7 @@
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -23,6 +24,7 @@
 #include "evaluation/polygon_leaf_mesh.h"
 #include "terrain/terrain_mesh.h"
 #include "hierarchy/terrain_patch.h"
+#include "terrain/terrain_grid.h"
 
 #include <algorithm>
 #include <array>
@@ -117,6 +119,18 @@ private:
   vtkSmartPointer<vtkDoubleArray> SkyViewFactor, Sunshine;
 };
 
+// The cell of the scene's terrain grid that holds a terrain leaf's centre; -1 where the
+// hierarchy is solved on the far terrain, whose leaves span cells of another grid.
+vtkIdType postGridCell(const terralux::HierarchicalRadiosity& solver, const terralux::TerrainPatch& leaf)
+{
+  if (solver.hierarchyTerrain())
+    return -1;
+  const terralux::ParameterRange& range = leaf.range();
+  const terralux::TerrainGrid& grid = leaf.grid();
+  const int i = std::min(grid.postsX() - 2, static_cast<int>(0.5 * (range.u0 + range.u1)));
+  const int j = std::min(grid.postsY() - 2, static_cast<int>(0.5 * (range.v0 + range.v1)));
+  return static_cast<vtkIdType>(j) * (grid.postsX() - 1) + i;
+}
 } // namespace
 
 void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& solver,
@@ -163,8 +177,8 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
   arrays.addTo(output->GetPointData());
 }
 
-void vtkRadiosityOutputs::BuildLeafMesh(
-  const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output)
+void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& solver,
+  const vtkRadiosityScene& scene, int bands, bool withSky, vtkPolyData* output)
 {
   // The engine's leaf meshes, continuous across T-vertices: the polygons', then each
   // terrain's; their vertex values flattened as PointValues lays them out.
@@ -173,6 +187,16 @@ void vtkRadiosityOutputs::BuildLeafMesh(
   vtkNew<vtkCellArray> polygons;
   vtkNew<vtkIntArray> level;
   level->SetName("Level");
+  // Where each leaf lies in the input: which of port 0's data sets (the leaf data sets
+  // in connection and composite order, as output 0 holds them) and which of its cells.
+  vtkNew<vtkIntArray> inputIndex;
+  inputIndex->SetName(InputIndexName());
+  vtkNew<vtkIdTypeArray> inputCell;
+  inputCell->SetName(InputCellName());
+  std::vector<int> terrainOwners(scene.Terrains.size(), -1);
+  for (std::size_t k = 0; k < scene.Inputs.size(); ++k)
+    if (scene.Inputs[k].terrain >= 0)
+      terrainOwners[static_cast<std::size_t>(scene.Inputs[k].terrain)] = static_cast<int>(k);
   auto appendVertices = [&](std::size_t count, const std::function<Vec3(std::size_t)>& positionOf,
                           const std::vector<double>& values) {
     for (std::size_t k = 0; k < count; ++k)
@@ -188,6 +212,10 @@ void vtkRadiosityOutputs::BuildLeafMesh(
     ids.assign(polygonMesh.corners(k).begin(), polygonMesh.corners(k).begin() + polygonMesh.leaves()[k]->cornerCount());
     polygons->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     level->InsertNextValue(polygonMesh.leaves()[k]->level());
+    const terralux::ScenePolygon& input =
+      scene.Scene.polygons[static_cast<std::size_t>(polygonMesh.leaves()[k]->rootPolygon())];
+    inputIndex->InsertNextValue(input.owner);
+    inputCell->InsertNextValue(static_cast<vtkIdType>(input.cell));
   }
   for (const terralux::TerrainPatch* root : solver.terrainRoots())
   {
@@ -204,6 +232,8 @@ void vtkRadiosityOutputs::BuildLeafMesh(
         ids.push_back(first + static_cast<vtkIdType>(vertex));
       polygons->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
       level->InsertNextValue(mesh.leaves()[k]->level());
+      inputIndex->InsertNextValue(terrainOwners[static_cast<std::size_t>(root->terrain())]);
+      inputCell->InsertNextValue(postGridCell(solver, *mesh.leaves()[k]));
     }
   }
 
@@ -221,6 +251,8 @@ void vtkRadiosityOutputs::BuildLeafMesh(
   output->SetPolys(polygons);
   arrays.addTo(output->GetPointData());
   output->GetCellData()->AddArray(level);
+  output->GetCellData()->AddArray(inputIndex);
+  output->GetCellData()->AddArray(inputCell);
 }
 
 const char* vtkRadiosityOutputs::QuantityName(int quantity)

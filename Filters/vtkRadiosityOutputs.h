@@ -28,6 +28,11 @@ struct vtkRadiosityOutputs
   /// The other point arrays: hours of direct sun, the sky view factor.
   static const char* SunshineDurationName() { return "SunshineDuration"; }
   static const char* SkyViewFactorName() { return "SkyViewFactor"; }
+  /// The leaf mesh's cell arrays that map each leaf back to the input: the index of
+  /// port 0's leaf data set (in connection and composite order) and its cell there
+  /// (for a terrain leaf, the grid cell holding its centre; -1 on a far terrain).
+  static const char* InputIndexName() { return "InputIndex"; }
+  static const char* InputCellName() { return "InputCell"; }
   /// Every point array the filters write, in the order above (what a writer picks).
   static std::vector<const char*> AllNames();
 
@@ -55,8 +60,8 @@ struct vtkRadiosityOutputs
   static void AddPointArrays(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
     int index, const PointOptions& options, vtkDataSet* output);
   /// withSky: add SkyViewFactor (the leaves' own, continuous like the other arrays).
-  static void BuildLeafMesh(
-    const terralux::HierarchicalRadiosity& solver, int bands, bool withSky, vtkPolyData* output);
+  static void BuildLeafMesh(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
+    int bands, bool withSky, vtkPolyData* output);
   static void BuildLinks(const terralux::HierarchicalRadiosity& solver, vtkPolyData* output);
   /// Adds a one-value double array to field data (counts, seconds).
   static void AddFieldValue(vtkFieldData* fieldData, const char* name, double value);

@@ -23,11 +23,16 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace
 {
 // Per-cell spectrum from an optional cell array; values checked against [low, high).
+// Emission above this (W/m^2) is refused: the sun's surface emits 6.3e7, and sums of
+// larger values over a scene's area leave the range of a double.
+constexpr double largestEmission = 1e12;
+
 class CellSpectrum
 {
 public:
@@ -53,9 +58,10 @@ public:
         const double v = this->Array->GetComponent(k, c);
         if (!(v >= low && v < high))
         {
-          throw terralux::Error(std::string(what) + " array '" + name + "' holds " + std::to_string(v) +
-            " at cell " + std::to_string(k) + ": values must lie in [" + std::to_string(low) + ", " +
-            (std::isinf(high) ? std::string("inf") : std::to_string(high)) + ")");
+          std::ostringstream message;
+          message << what << " array '" << name << "' holds " << v << " at cell " << k << ": values must lie in ["
+                  << low << ", " << high << ")";
+          throw terralux::Error(message.str());
         }
       }
   }
@@ -415,7 +421,7 @@ void vtkRadiosityScene::AddDataSet(vtkDataSet* data, double defaultReflectance, 
   const char* emissionName, bool terrainHierarchy)
 {
   const CellSpectrum reflectance(data, reflectanceName, defaultReflectance, 0.0, 1.0, "reflectance");
-  const CellSpectrum emission(data, emissionName, 0.0, 0.0, INFINITY, "emission");
+  const CellSpectrum emission(data, emissionName, 0.0, 0.0, largestEmission, "emission");
   this->HasEmission = this->HasEmission || emission.present();
   const vtkIdType first = static_cast<vtkIdType>(this->Scene.points.size());
   const int owner = static_cast<int>(this->Inputs.size());
@@ -448,7 +454,7 @@ void vtkRadiosityScene::SetFarTerrain(vtkStructuredGrid* far, int stride, double
   const char* reflectanceName, const char* emissionName)
 {
   const CellSpectrum reflectance(far, reflectanceName, defaultReflectance, 0.0, 1.0, "reflectance");
-  const CellSpectrum emission(far, emissionName, 0.0, 0.0, INFINITY, "emission");
+  const CellSpectrum emission(far, emissionName, 0.0, 0.0, largestEmission, "emission");
   const std::array<int, 3> dims = surfaceDimensions(far, -1);
   if (dims[0] < 2 || dims[1] < 2)
     throw terralux::Error("the far terrain has fewer than 2 x 2 posts: connect vtkTerrainSource's output port 1, "

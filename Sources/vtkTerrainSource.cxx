@@ -24,6 +24,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "raster/dem_raster.h"
+#include "raster/geographic_window.h"
 #include "base/error.h"
 #include "geodesy/local_frame.h"
 #include "geodesy/map_projection.h"
@@ -100,6 +101,24 @@ void vtkTerrainSource::SetGeoOrigin(const double origin[3])
 }
 
 //------------------------------------------------------------------------------
+void vtkTerrainSource::SetGeoBounds(double south, double north, double west, double east)
+{
+  const double bounds[4] = { south, north, west, east };
+  if (!std::equal(bounds, bounds + 4, this->GeoBounds) || !this->UseGeoBounds)
+  {
+    std::copy(bounds, bounds + 4, this->GeoBounds);
+    this->UseGeoBounds = 1;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTerrainSource::SetGeoBounds(const double bounds[4])
+{
+  this->SetGeoBounds(bounds[0], bounds[1], bounds[2], bounds[3]);
+}
+
+//------------------------------------------------------------------------------
 int vtkTerrainSource::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
@@ -121,24 +140,22 @@ void vtkTerrainSource::ResolveRasterRequest(RasterRequest& request)
     throw terralux::Error("both PixelWindow and GeoBounds are set: use one of them "
                           "(SetPixelWindow(0, 0, 0, 0) or UseGeoBoundsOff() clears it)");
   }
+  const double* b = this->GeoBounds;
+  if (!std::all_of(b, b + 4, [](double v) { return std::isfinite(v); }))
+  {
+    message << "GeoBounds (" << b[0] << ", " << b[1] << ", " << b[2] << ", " << b[3]
+            << ") is not a geographic box: give finite south < north and west < east, in degrees";
+    throw terralux::Error(message.str());
+  }
   if (useBounds)
   {
-    const double* b = this->GeoBounds;
-    if (!(b[0] >= -90.0 && b[1] <= 90.0 && b[0] < b[1] && b[2] < b[3] && b[2] >= -180.0 && b[3] <= 360.0))
-    {
-      message << "GeoBounds (" << b[0] << ", " << b[1] << ", " << b[2] << ", " << b[3]
-              << ") is not a geographic box: give south < north within [-90, 90] and "
-                 "west < east, in degrees";
-      throw terralux::Error(message.str());
-    }
     if (info.crsWkt.empty())
     {
       throw terralux::Error(std::string("GeoBounds needs a georeferenced raster, but '") +
         this->FileName + "' has no CRS: use SetPixelWindow() instead");
     }
     terralux::MapProjection projection(info.crsWkt);
-    const auto map = projection.boundsFromGeographic(b[0], b[1], b[2], b[3]);
-    request.window = request.raster->windowCovering(map[0], map[1], map[2], map[3]);
+    request.window = terralux::windowOfGeographicBox(*request.raster, projection, b[0], b[1], b[2], b[3]);
     if (request.window.isEmpty())
     {
       message << "GeoBounds (" << b[0] << ", " << b[1] << ", " << b[2] << ", " << b[3]

@@ -138,12 +138,15 @@ public:
 
   ///@{
   /**
-   * Set/Get a geographic box (south, north, west, east) in WGS84 degrees; with
-   * UseGeoBounds on, the output covers the raster's pixels that overlap it, and it must
-   * be a box (south < north in [-90, 90], west < east), else RequestData fails; it
-   * cannot be combined with a PixelWindow. Default is (0, 0, 0, 0).
+   * Set/Get a geographic box (south, north, west, east) in WGS84 degrees; setting it
+   * turns UseGeoBounds on. The output covers the raster's pixels that overlap it; it
+   * must be a box (south < north in [-90, 90], west < east) that overlaps the raster,
+   * else RequestData fails, and it cannot be combined with a PixelWindow. A box may
+   * cross the antimeridian (west 179.9, east 180.2) where the raster's longitudes hold
+   * it. NaN in it is refused even with UseGeoBounds off. Default is (0, 0, 0, 0).
    */
-  vtkSetVector4Macro(GeoBounds, double);
+  virtual void SetGeoBounds(double south, double north, double west, double east);
+  virtual void SetGeoBounds(const double bounds[4]);
   vtkGetVector4Macro(GeoBounds, double);
   ///@}
 

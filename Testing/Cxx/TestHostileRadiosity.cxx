@@ -5,6 +5,7 @@
 #include "test_lights.h"
 #include "vtk_test_support.h"
 
+#include "vtkCell.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCubeSource.h"
@@ -364,6 +365,52 @@ TEST(HostileRadiosity, CompositeStructureIsKept)
   EXPECT_NE(box->GetPointData()->GetArray("Irradiance"), nullptr);
   // The input is untouched.
   EXPECT_EQ(cube->GetOutput()->GetPointData()->GetArray("Irradiance"), nullptr);
+
+  // Every leaf of the leaf mesh names its input data set (the leaf data sets in
+  // order: the empty one, the square, the cube) and its cell there, which holds it.
+  vtkPolyData* leaves = radiosity->GetLeafMeshOutput();
+  vtkDataArray* inputIndex = leaves->GetCellData()->GetArray("InputIndex");
+  vtkDataArray* inputCell = leaves->GetCellData()->GetArray("InputCell");
+  ASSERT_NE(inputIndex, nullptr);
+  ASSERT_NE(inputCell, nullptr);
+  vtkPolyData* inputs[3] = { empty, plane, cube->GetOutput() };
+  int perInput[3] = { 0, 0, 0 };
+  for (vtkIdType k = 0; k < leaves->GetNumberOfCells(); ++k)
+  {
+    const int index = static_cast<int>(inputIndex->GetComponent(k, 0));
+    ASSERT_TRUE(index == 1 || index == 2) << index;
+    ++perInput[index];
+    const vtkIdType cell = static_cast<vtkIdType>(inputCell->GetComponent(k, 0));
+    ASSERT_GE(cell, 0);
+    ASSERT_LT(cell, inputs[index]->GetNumberOfCells());
+    double leafBounds[6], cellBounds[6];
+    leaves->GetCell(k)->GetBounds(leafBounds);
+    inputs[index]->GetCell(cell)->GetBounds(cellBounds);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      EXPECT_GE(leafBounds[2 * axis], cellBounds[2 * axis] - 1e-6) << k;
+      EXPECT_LE(leafBounds[2 * axis + 1], cellBounds[2 * axis + 1] + 1e-6) << k;
+    }
+  }
+  EXPECT_GE(perInput[1], plane->GetNumberOfCells());
+  EXPECT_GE(perInput[2], cube->GetOutput()->GetNumberOfCells());
+}
+
+TEST(HostileRadiosity, EmissionBeyondAnyLightSourceIsRefused)
+{
+  // 1e308 W/m^2 would overflow the scene's power; no surface emits more than the
+  // sun's 6.3e7 W/m^2.
+  auto ground = square(10.0, 2);
+  vtkNew<vtkDoubleArray> emission;
+  emission->SetName("Emission");
+  emission->SetNumberOfTuples(ground->GetNumberOfCells());
+  emission->Fill(1e308);
+  ground->GetCellData()->AddArray(emission);
+  vtkNew<vtkHierarchicalRadiosity> radiosity;
+  radiosity->SetInputData(ground);
+  radiosity->SetEmissionArrayName("Emission");
+  expectRefused(radiosity, "emission array 'Emission' holds 1e+308");
+  EXPECT_EQ(emission->GetValue(0), 1e308); // the input untouched
 }
 
 TEST(HostileRadiosity, NaNParametersAreRefused)

@@ -6,6 +6,7 @@
 #include "vtk_test_support.h"
 
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkHierarchicalRadiosity.h"
 #include "vtkImageData.h"
@@ -22,6 +23,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <tuple>
 
 using terralux_test::MessageCatcher;
 using terralux_test::RasterSpec;
@@ -218,6 +221,68 @@ TEST(HostileSources, BadBoxesAndSpacingsAreRefused)
   }
 }
 
+TEST(HostileSources, GeoBoundsAreUsedOnceSetAndNaNAnywhereIsRefused)
+{
+  const std::string path = writeRaster("setboxes.tif", planeSpec({ 380000.0, 30.0, 0, 5080000.0, 0, -30.0 }));
+  // Setting a box turns UseGeoBounds on: a box beside the raster is an error, not the
+  // whole raster with a warning.
+  vtkNew<vtkTerrainSource> beside;
+  beside->SetFileName(path.c_str());
+  beside->SetGeoBounds(10.0, 11.0, 10.0, 11.0);
+  EXPECT_TRUE(beside->GetUseGeoBounds());
+  vtkNew<MessageCatcher> messages;
+  EXPECT_EQ(runPipeline(beside, messages), 0);
+  EXPECT_NE(messages->Errors.find("does not overlap"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(beside->GetOutput()->GetNumberOfPoints(), 0);
+  // NaN is refused even with the box turned off.
+  vtkNew<vtkTerrainSource> nan;
+  nan->SetFileName(path.c_str());
+  nan->SetGeoBounds(NAN, 45.9, 7.4, 7.5);
+  nan->UseGeoBoundsOff();
+  vtkNew<MessageCatcher> nanMessages;
+  EXPECT_EQ(runPipeline(nan, nanMessages), 0);
+  EXPECT_NE(nanMessages->Errors.find("not a geographic box"), std::string::npos) << nanMessages->Errors;
+  EXPECT_EQ(nan->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(HostileSources, GeoBoundsAcrossTheAntimeridianReadTheRightWindow)
+{
+  // Geographic rasters of 0.01 deg pixels around the antimeridian: one from 179 to
+  // 181 E, one from -181 to -179, one the whole globe. The box runs from 179.9 E to
+  // 180.2 E (-179.8): 30 columns where a raster holds it whole.
+  auto raster = [](const char* name, double west, int width, double pixel) {
+    RasterSpec spec;
+    spec.width = width;
+    spec.height = 40;
+    spec.crs = "EPSG:4326";
+    spec.geoTransform = { west, pixel, 0.0, 50.0, 0.0, -pixel };
+    spec.elevation = [](int col, int) { return 100.0 + col; };
+    return writeRaster(name, spec);
+  };
+  for (const auto& [name, west, expectedWest] : { std::tuple<const char*, double, double>{ "east.tif", 179.0, 179.9 },
+         std::tuple<const char*, double, double>{ "west.tif", -181.0, -180.1 } })
+  {
+    vtkNew<vtkTerrainSource> terrain;
+    terrain->SetFileName(raster(name, west, 200, 0.01).c_str());
+    terrain->SetGeoBounds(49.8, 49.9, 179.9, 180.2);
+    vtkNew<MessageCatcher> messages;
+    ASSERT_EQ(runPipeline(terrain, messages), 1) << name << messages->Errors;
+    int dims[3];
+    terrain->GetOutput()->GetDimensions(dims);
+    EXPECT_NEAR(dims[0], 30, 1) << name;
+    vtkDataArray* transform = terrain->GetOutput()->GetFieldData()->GetArray("GeoTransform");
+    ASSERT_NE(transform, nullptr);
+    EXPECT_NEAR(transform->GetComponent(0, 0), expectedWest, 0.011) << name;
+  }
+  vtkNew<vtkTerrainSource> globe;
+  globe->SetFileName(raster("globe.tif", -180.0, 360, 1.0).c_str());
+  globe->SetGeoBounds(49.0, 50.0, 179.9, 180.2);
+  vtkNew<MessageCatcher> messages;
+  EXPECT_EQ(runPipeline(globe, messages), 0);
+  EXPECT_NE(messages->Errors.find("wraps around the raster's edge"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(globe->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 TEST(HostileSources, NaNParametersOfTheSunAndSkyAreRefused)
 {
   using SunSetter = void (*)(vtkSunSource*);
@@ -305,6 +370,29 @@ TEST(HostileSources, WriterRefusesWhatItCannotWrite)
   hugeWriter->SetFileName(hugeOut.c_str());
   ASSERT_EQ(hugeWriter->Write(), 1);
   EXPECT_EQ(rasterValue(hugeOut, 3, 3), -9999.0);
+
+  // A georeference that is not one (NaN, or a singular transform) writes no file.
+  for (double bad : { double(NAN), 0.0 })
+  {
+    vtkNew<vtkStructuredGrid> badGrid;
+    badGrid->DeepCopy(terrain->GetOutput());
+    vtkDataArray* transform = badGrid->GetFieldData()->GetArray("GeoTransform");
+    transform->SetComponent(1, 0, bad);
+    transform->SetComponent(2, 0, 0.0);
+    vtkNew<vtkTerrainRasterWriter> badWriter;
+    badWriter->SetInputData(badGrid);
+    badWriter->AddArrayName("Elevation");
+    const std::string badOut = terralux_test::scratchDir() + "/bad-transform.tif";
+    std::remove(badOut.c_str());
+    badWriter->SetFileName(badOut.c_str());
+    vtkNew<MessageCatcher> badMessages;
+    badWriter->AddObserver(vtkCommand::ErrorEvent, badMessages);
+    EXPECT_EQ(badWriter->Write(), 0);
+    EXPECT_NE(badMessages->Errors.find("GeoTransform"), std::string::npos) << badMessages->Errors;
+    EXPECT_EQ(std::fopen(badOut.c_str(), "rb"), nullptr);
+    // The input keeps its (bad) field data: nothing of it was modified.
+    EXPECT_EQ(std::isnan(transform->GetComponent(1, 0)), std::isnan(bad));
+  }
 }
 
 // Regression tests of the fuzzers' findings (Testing/Fuzz/corpus/*/finding-*).

@@ -30,6 +30,13 @@ GeoTiffWriter::GeoTiffWriter(const std::string& fileName, const RasterGrid& grid
   {
     throw Error("nothing to write: the grid is empty or no array was chosen");
   }
+  if (!grid.geoTransform.isValid())
+  {
+    const auto& c = grid.geoTransform.coefficients;
+    throw Error("the GeoTransform (" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " +
+      std::to_string(c[2]) + ", " + std::to_string(c[3]) + ", " + std::to_string(c[4]) + ", " + std::to_string(c[5]) +
+      ") is not finite and invertible: write grids whose field data GeoTransform vtkTerrainSource made");
+  }
   GDALAllRegister();
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   const bool tiled = grid.width >= 512 && grid.height >= 512;
