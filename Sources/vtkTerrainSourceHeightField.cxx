@@ -10,7 +10,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStructuredGrid.h"
 #include "vtkTerraLuxFieldData.h"
-#include "vtkTerrainHeights.h"
+#include "vtkTerrainSourceInternals.h"
 
 #include "base/error.h"
 #include "geodesy/local_frame.h"
@@ -19,7 +19,7 @@
 #include <cmath>
 #include <limits>
 
-using namespace vtkTerrainHeights;
+using namespace TerrainSourceHeights;
 
 //------------------------------------------------------------------------------
 bool vtkTerrainSource::CheckHeightField(vtkImageData* input)

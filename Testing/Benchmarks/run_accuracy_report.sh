@@ -8,6 +8,8 @@
 #   TERRALUX_REFERENCE_SAMPLES  directions per point for the reference (default 32768)
 #   TERRALUX_REPORT_DETAIL_DISTANCE  DetailDistance (m) of every solve (default 0)
 #   TERRALUX_REPORT_FAR_STRIDE  FarTerrainStride of every solve (default 1)
+#   TERRALUX_REPORT_DOC         also write the tables and plots as this page (the project's
+#                               docs/validation.md, with OUT_DIR docs/validation)
 #   TERRALUX_REPORT_PREVIOUS    the build folder of a previous release: its solves at
 #                               points join the report as "previous release", the
 #                               new curve beside the old
@@ -45,4 +47,4 @@ for scene in "${scenes[@]}"; do
     done
   done
 done
-/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/accuracy_report.py" "${runs}" "${out_dir}"
+/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/accuracy_report.py" "${runs}" "${out_dir}" ${TERRALUX_REPORT_DOC:+"${TERRALUX_REPORT_DOC}"}

@@ -1,0 +1,132 @@
+// The lattice of posts gathered first (post_lattice.h): what posts between lattice
+// posts read, and which cells are refined.
+
+#include "sky/cie_sky.h"
+#include "base/angles.h"
+#include "horizons/horizon_map.h"
+#include "horizons/horizon_sky.h"
+#include "evaluation/open_sky.h"
+#include "evaluation/post_lattice.h"
+#include "horizons/post_sky.h"
+#include "visibility/sampling.h"
+#include "sky/sky_hierarchy.h"
+#include "sky/sky_model.h"
+#include "terrain/terrain_directions.h"
+#include "terrain_grids.h"
+#include "visibility/visibility.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace terralux;
+using namespace terralux_test;
+
+// Two passes: every second lattice post first; the others only in the coarse cells
+// whose corners disagree (relative to what each receives) or lack data, and at the far
+// edges; a post reads between the corners of the finest cell gathered around it.
+TEST(PostLattice, RefinesOnlyTheCellsWhoseCornersDisagree)
+{
+  // 21 x 17 posts, every 4th: lattice posts 0..5 x 0..4, coarse cells of 8 x 8 posts:
+  // (0, 0), (1, 0) complete; the column at i = 16..20 lacks its far corners.
+  PostLattice lattice(21, 17, 4);
+  EXPECT_TRUE(lattice.gatheredInPass(8, 8, true));
+  EXPECT_FALSE(lattice.gatheredInPass(4, 0, true));
+  EXPECT_FALSE(lattice.gatheredInPass(8, 8, false));
+  auto gathered = [](double reflected, double received) {
+    PostLattice::Gathered g;
+    g.reflected = uniformSpectrum(reflected);
+    g.variance = 1.0;
+    g.terrainSeen = 0.5;
+    g.received = received;
+    return g;
+  };
+  // Cell (0, 0): its corners find 10 and 10.2 W/m^2 per half of terrain seen, a spread
+  // of 0.2 per 1 terrain seen, 0.1 at theirs: within 0.001 x their 200 W/m^2. Cell
+  // (1, 0): 10 and 14.
+  for (int j : { 0, 8, 16 })
+    for (int i : { 0, 8, 16 })
+      lattice.set(i, j, gathered(i == 16 ? 14.0 : (j == 8 ? 10.1 : 10.0), 200.0));
+  lattice.refine(0.001);
+  EXPECT_FALSE(lattice.gatheredInPass(4, 0, false));  // inside cell (0, 0) alone
+  EXPECT_TRUE(lattice.gatheredInPass(12, 0, false));  // inside cell (1, 0)
+  EXPECT_TRUE(lattice.gatheredInPass(8, 4, false));   // on their common side
+  EXPECT_TRUE(lattice.gatheredInPass(20, 12, false)); // the edge column: always
+  EXPECT_FALSE(lattice.gatheredInPass(4, 12, false)); // cell (0, 1) agrees too
+  // Cell (0, 0) reads between its coarse corners: at (4, 4), the mean of 20, 20, 20.2,
+  // 20.2 per terrain seen.
+  PostLattice::PerTerrainSeen per;
+  ASSERT_TRUE(lattice.perTerrainSeenAt(4.0, 4.0, per));
+  EXPECT_DOUBLE_EQ(per.reflected[0], 0.5 * (20.0 + 20.2));
+  EXPECT_DOUBLE_EQ(lattice.around(5, 5).largestPerTerrainSeen, 20.2);
+  EXPECT_DOUBLE_EQ(lattice.around(5, 5).leastPerTerrainSeen, 20.0);
+  // Cell (1, 0) reads between its lattice posts once the second pass has them.
+  lattice.set(12, 0, gathered(12.0, 200.0));
+  lattice.set(12, 4, gathered(12.0, 200.0));
+  lattice.set(8, 4, gathered(10.0, 200.0));
+  lattice.set(16, 4, gathered(14.0, 200.0));
+  EXPECT_DOUBLE_EQ(lattice.around(13, 1).largestPerTerrainSeen, 28.0); // (16, 0), (16, 4)
+  EXPECT_DOUBLE_EQ(lattice.around(13, 1).leastPerTerrainSeen, 24.0);  // (12, 0), (12, 4)
+  Spectrum read;
+  ASSERT_TRUE(lattice.reflectedAt(12.0, 2.0, read));
+  EXPECT_DOUBLE_EQ(read[0], 12.0);
+  // Refined too where a corner has no data.
+  PostLattice holes(17, 17, 4);
+  for (int j : { 0, 8, 16 })
+    for (int i : { 0, 8, 16 })
+      if (!(i == 16 && j == 16))
+        holes.set(i, j, gathered(10.0, 200.0));
+  holes.refine(0.001);
+  EXPECT_FALSE(holes.gatheredInPass(4, 4, false));
+  EXPECT_TRUE(holes.gatheredInPass(12, 12, false));
+}
+
+TEST(PostLattice, ReadsBetweenItsPostsAndTellsTheLargestSpreadAround)
+{
+  // 10 x 7 posts, every 4th: lattice posts at i = 0, 4, 8 and j = 0, 4.
+  PostLattice lattice(10, 7, 4);
+  EXPECT_TRUE(lattice.onLattice(8, 4));
+  EXPECT_FALSE(lattice.onLattice(2, 4));
+  EXPECT_EQ(lattice.varianceAround(5, 1), -1.0); // nothing gathered yet
+  Spectrum read;
+  EXPECT_FALSE(lattice.reflectedAt(5.0, 1.0, read));
+  auto gathered = [](double reflected, double variance, double terrainSeen, double skyCorrection = 0.0) {
+    PostLattice::Gathered g;
+    g.reflected = uniformSpectrum(reflected);
+    g.skyCorrection = uniformSpectrum(skyCorrection);
+    g.skyViewCorrection = skyCorrection / 100.0;
+    g.variance = variance;
+    g.terrainSeen = terrainSeen;
+    return g;
+  };
+  lattice.set(4, 0, gathered(10.0, 2.0, 0.1));
+  lattice.set(8, 0, gathered(20.0, 5.0, 0.1, -1.0));
+  lattice.set(4, 4, gathered(30.0, 1.0, 0.2));
+  // (8, 4) has no data: the others share its weight.
+  EXPECT_EQ(lattice.varianceAround(5, 1), 5.0);
+  EXPECT_EQ(lattice.varianceAround(9, 6), 5.0); // beyond the last lattice post: its cell
+  ASSERT_TRUE(lattice.reflectedAt(4.0, 0.0, read));
+  EXPECT_DOUBLE_EQ(read[0], 10.0);
+  ASSERT_TRUE(lattice.reflectedAt(6.0, 0.0, read));
+  EXPECT_DOUBLE_EQ(read[0], 15.0);
+  ASSERT_TRUE(lattice.reflectedAt(4.0, 2.0, read));
+  EXPECT_DOUBLE_EQ(read[0], 20.0);
+  // Near the post without data: from the others alone; at it, nothing.
+  ASSERT_TRUE(lattice.reflectedAt(7.0, 3.0, read));
+  EXPECT_GT(read[0], 10.0);
+  EXPECT_LT(read[0], 30.0);
+  EXPECT_FALSE(lattice.reflectedAt(8.0, 4.0, read));
+
+  // Per terrain seen: (4, 0) found 10 / 0.1 = 100, (8, 0) (20 - 1) / 0.1 = 190, (4, 4)
+  // 30 / 0.2 = 150: the spread around is 100 to 190.
+  const PostLattice::Around around = lattice.around(5, 1);
+  EXPECT_DOUBLE_EQ(around.largestPerTerrainSeen, 190.0);
+  EXPECT_DOUBLE_EQ(around.leastPerTerrainSeen, 100.0);
+  PostLattice::PerTerrainSeen per;
+  ASSERT_TRUE(lattice.perTerrainSeenAt(6.0, 0.0, per));
+  EXPECT_DOUBLE_EQ(per.reflected[0], 0.5 * (100.0 + 200.0));
+  EXPECT_DOUBLE_EQ(per.skyCorrection[0], 0.5 * (0.0 - 10.0));
+  EXPECT_DOUBLE_EQ(per.skyViewCorrection, 0.5 * (0.0 - 0.1));
+  EXPECT_FALSE(lattice.perTerrainSeenAt(8.0, 4.0, per));
+}

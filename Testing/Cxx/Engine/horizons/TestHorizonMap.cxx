@@ -1,0 +1,116 @@
+// The horizons of every post found at once (horizon_map.h), against closed forms and
+// against Embree's rays, which know nothing of the sweep.
+
+#include "horizons/horizon_map.h"
+#include "base/angles.h"
+#include "hierarchy/radiosity_types.h"
+#include "horizon_checks.h"
+#include "terrain_grids.h"
+#include "visibility/visibility.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+using namespace terralux;
+using namespace terralux_test;
+
+TEST(HorizonMap, AzimuthsAreEvenlySpreadAndWallsSeenAtTheirTangent)
+{
+  // Flat ground, and a 50 m wall whose top edge runs along x = 700 m.
+  const auto grid = makeGrid(101, 101, 10.0, [](double x, double) { return x >= 699.0 ? 50.0 : 0.0; });
+  const HorizonMap map(*grid);
+  const std::vector<double>& azimuths = map.azimuths();
+  ASSERT_EQ(azimuths.size(), static_cast<std::size_t>(map.azimuthCount()));
+  for (std::size_t a = 0; a < azimuths.size(); ++a)
+  {
+    const double next = a + 1 < azimuths.size() ? azimuths[a + 1] : azimuths[0] + 2.0 * pi;
+    EXPECT_GT(next - azimuths[a], 10.0 * degree);
+    EXPECT_LT(next - azimuths[a], 12.0 * degree);
+  }
+  // From post (20, 50), 500 m west of the edge: toward an azimuth phi within 45 deg of
+  // east the edge is 500 / cos(phi) away; farther round the line leaves the grid
+  // first, and away from the wall nothing rises.
+  const HorizonMap::Post post = map.find(grid->post(20, 50));
+  ASSERT_TRUE(post);
+  for (int a = 0; a < map.azimuthCount(); ++a)
+  {
+    const double c = std::cos(azimuths[a]);
+    const double expected = c >= std::sqrt(0.5) - 1e-9 ? std::atan(0.1 * c) : 0.0;
+    EXPECT_NEAR(map.elevation(post, a), expected, 1e-4) << azimuths[a] / degree;
+  }
+  // Points that are not posts are not found: between posts, above one, off the grid.
+  EXPECT_FALSE(map.find(grid->post(20, 50) + Vec3(3.0, 0.0, 0.0)));
+  EXPECT_FALSE(map.find(grid->post(20, 50) + Vec3(0.0, 0.0, 2.0)));
+  EXPECT_FALSE(map.find(Vec3(-500.0, 0.0, 0.0)));
+}
+
+TEST(HorizonMap, DenseAzimuthsLieBetweenTheStandardOnes)
+{
+  const auto grid = makeGrid(9, 9, 10.0, [](double, double) { return 0.0; });
+  const HorizonMap standard(*grid), dense(*grid, true);
+  ASSERT_EQ(dense.azimuthCount(), 64);
+  const std::vector<double>& a = dense.azimuths();
+  for (std::size_t k = 0; k < a.size(); ++k)
+  {
+    const double next = k + 1 < a.size() ? a[k + 1] : a[0] + 2.0 * pi;
+    EXPECT_GT(next - a[k], 3.0 * degree);
+    EXPECT_LT(next - a[k], 8.2 * degree);
+  }
+  for (const double azimuth : standard.azimuths())
+    EXPECT_NE(std::find_if(a.begin(), a.end(), [&](double b) { return std::abs(b - azimuth) < 1e-12; }), a.end());
+}
+
+TEST(HorizonMap, BearingsWrapAround)
+{
+  const auto grid = makeGrid(9, 9, 10.0, [](double, double) { return 0.0; });
+  const HorizonMap map(*grid);
+  const std::vector<double>& a = map.azimuths();
+  const HorizonMap::Bearing last = map.bearing(a.back() + 0.01);
+  EXPECT_EQ(last.k, map.azimuthCount() - 1);
+  EXPECT_NEAR(last.fromBelow, 0.01, 1e-12);
+  EXPECT_NEAR(last.toAbove, a.front() + twoPi - a.back() - 0.01, 1e-12);
+  const HorizonMap::Bearing negative = map.bearing(a[3] + 0.02 - twoPi);
+  EXPECT_EQ(negative.k, 3);
+  EXPECT_NEAR(negative.fromBelow, 0.02, 1e-9);
+  // A flat plane: every direction above the horizontal is open, and proven so.
+  const HorizonMap::Post post = map.find(grid->post(4, 4));
+  HorizonMap::View view(map, post);
+  EXPECT_TRUE(view.clearlyAbove(map.sight(1.0, 0.01)));
+  EXPECT_FALSE(view.clearlyAbove(map.sight(1.0, 0.0)));
+}
+
+TEST(HorizonMap, PostsNearAnEdgeSeeOutOfTheGridWithoutRays)
+{
+  // A 100 m hill in the middle of flat ground; a post 2 cells from the west edge. Out
+  // of the grid (west) both mapped azimuths' lines end within 20 m, and so does every
+  // bearing between them (no corner lies within): the terrain beyond them is no
+  // terrain, so low suns that way are proven open, although the hill rises 79 deg above
+  // 20 m away. Toward the hill (east) the same elevation is not.
+  const auto grid = makeGrid(129, 129, 10.0, [](double x, double y) {
+    return 100.0 * std::exp(-(std::pow(x - 640.0, 2) + std::pow(y - 640.0, 2)) / (2.0 * 150.0 * 150.0));
+  });
+  const HorizonMap map(*grid);
+  const Visibility rays(sceneOf({ grid.get() }));
+  const Vec3 point = grid->post(2, 64);
+  const HorizonMap::Post post = map.find(point);
+  ASSERT_TRUE(post);
+  HorizonMap::View view(map, post);
+  int proven = 0, tried = 0;
+  for (double azimuth = 135.0 * degree; azimuth <= 225.0 * degree; azimuth += 2.5 * degree)
+  {
+    const HorizonMap::Sight sight = map.sight(azimuth, 5.0 * degree);
+    ++tried;
+    if (view.clearlyAbove(sight))
+    {
+      ++proven;
+      EXPECT_FALSE(rays.occludedToward(point, Vec3(0, 0, 1), directionOf(azimuth, 5.0 * degree)));
+    }
+  }
+  EXPECT_EQ(proven, tried);
+  // Toward the hill: its top rises about 8 deg.
+  EXPECT_FALSE(view.clearlyAbove(map.sight(0.0, 5.0 * degree)));
+  EXPECT_TRUE(rays.occludedToward(point, Vec3(0, 0, 1), directionOf(0.0, 5.0 * degree)));
+}
