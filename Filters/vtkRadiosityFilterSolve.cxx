@@ -126,14 +126,8 @@ void addPointArrays(vtkInformationVector* geometry, const terralux::Hierarchical
 }
 
 // Field data: sizes, rays and seconds per phase, so a user sees where the time went.
-struct PointsPhase
-{
-  double seconds = 0.0;
-  double latticeSeconds = 0.0; // of those, the lattice's gathers
-  std::size_t latticeRays = 0;
-};
 void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
-  const PointsPhase& points, vtkFieldData* fieldData)
+  const terralux::EvaluationStatistics& lattice, double pointsSeconds, vtkFieldData* fieldData)
 {
   const terralux::RadiosityStatistics& stats = solver.statistics();
   auto addValue = [&](const char* name, double value) { vtkRadiosityOutputs::AddFieldValue(fieldData, name, value); };
@@ -150,12 +144,12 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
   addValue("SecondsGather", stats.secondsGather);
   addValue("SecondsPushPull", stats.secondsPushPull);
   addValue("SecondsHorizons", stats.secondsHorizons);
-  addValue("SecondsPoints", points.seconds);
-  addValue("SecondsLattice", points.latticeSeconds);
+  addValue("SecondsPoints", pointsSeconds); // the lattice's gathers included
+  addValue("SecondsLattice", lattice.latticeSeconds);
   addValue("RaysRefine", static_cast<double>(stats.raysRefine));
   addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
   addValue("RaysPoints", static_cast<double>(solver.raysCast() - stats.rays));
-  addValue("RaysLattice", static_cast<double>(points.latticeRays));
+  addValue("RaysLattice", static_cast<double>(lattice.latticeRays));
 }
 
 } // namespace
@@ -316,18 +310,15 @@ int vtkRadiosityFilter::Solve(vtkInformationVector** inputVector, const PieceReq
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.
   const auto pointsStart = std::chrono::steady_clock::now();
-  PointsPhase points;
-  points.latticeSeconds = prepared.latticeSeconds;
-  points.latticeRays = prepared.latticeRays;
   vtkRadiosityOutputs::PointOptions pointOptions;
   pointOptions.bands = this->NumberOfBands;
   pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;
   pointOptions.hornNormals = hornNormals;
   pointOptions.sunshine = scene.SunshineDuration;
   addPointArrays(inputVector[0], *solver, scene, pointOptions, piece.extent, output);
-  points.seconds =
+  const double pointsSeconds =
     prepared.latticeSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
-  addStatistics(*solver, scene, points, output->GetFieldData());
+  addStatistics(*solver, scene, prepared, pointsSeconds, output->GetFieldData());
 
   if (piece.withMeshAndLinks)
   {
