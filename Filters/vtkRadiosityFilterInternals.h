@@ -11,11 +11,25 @@
 
 #include <memory>
 
+// A solver kept between updates (ReuseGeometry) with the scenes whose grids its
+// elements and geometry point into; it alone owns them, and frees the solver first.
 struct vtkRadiosityFilter::KeptSolver
 {
-  std::unique_ptr<vtkRadiosityScene> GeometryScene; // the grids its rays were built on
-  std::unique_ptr<vtkRadiosityScene> SolverScene;   // its elements', when not the same
-  // Declared last: freed before the grids it shares.
+  /// `geometryScene`: the grids the geometry's rays were built on; `solverScene`: the
+  /// elements' grids when not the same (null otherwise).
+  KeptSolver(std::unique_ptr<terralux::HierarchicalRadiosity> solver,
+    std::unique_ptr<vtkRadiosityScene> geometryScene, std::unique_ptr<vtkRadiosityScene> solverScene)
+    : GeometryScene(std::move(geometryScene))
+    , SolverScene(std::move(solverScene))
+    , Solver(std::move(solver))
+  {
+  }
+  ~KeptSolver() { this->Solver.reset(); }
+  KeptSolver(const KeptSolver&) = delete;
+  KeptSolver& operator=(const KeptSolver&) = delete;
+
+  std::unique_ptr<vtkRadiosityScene> GeometryScene;
+  std::unique_ptr<vtkRadiosityScene> SolverScene;
   std::unique_ptr<terralux::HierarchicalRadiosity> Solver;
 };
 

@@ -26,6 +26,7 @@
 #include "base/error.h"
 #include "base/finite_parameters.h"
 #include "visibility/scene_geometry.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "visibility/visibility.h"
 #include "parallel/terrain_window.h"
@@ -59,7 +60,7 @@ private:
 // Output 0: the inputs, same points and cells and the same composite structure (several
 // connections: a multiblock of them), with the point arrays; a terrain piece's posts
 // only when `pieceExtent` is given.
-void addPointArrays(vtkInformationVector* geometry, const terralux::HierarchicalRadiosity& solver,
+void addPointArrays(vtkInformationVector* geometry, const terralux::PointEvaluator& evaluator,
   const vtkRadiosityScene& scene, vtkRadiosityOutputs::PointOptions pointOptions, const int* pieceExtent,
   vtkDataObject* output)
 {
@@ -68,7 +69,7 @@ void addPointArrays(vtkInformationVector* geometry, const terralux::Hierarchical
     vtkSmartPointer<vtkDataSet> copy;
     copy.TakeReference(input->NewInstance());
     copy->ShallowCopy(input);
-    vtkRadiosityOutputs::AddPointArrays(solver, scene, index++, pointOptions, copy);
+    vtkRadiosityOutputs::AddPointArrays(evaluator, scene, index++, pointOptions, copy);
     return copy;
   };
   auto copyComposite = [&](vtkCompositeDataSet* input) {
@@ -119,7 +120,7 @@ void addPointArrays(vtkInformationVector* geometry, const terralux::Hierarchical
     if (cropFirst)
       vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), pieceExtent);
     pointOptions.croppedToPosts = cropFirst;
-    vtkRadiosityOutputs::AddPointArrays(solver, scene, 0, pointOptions, dataSet);
+    vtkRadiosityOutputs::AddPointArrays(evaluator, scene, 0, pointOptions, dataSet);
     if (pieceExtent && !cropFirst)
       vtkTerrainPieces::CropToPiece(vtkStructuredGrid::SafeDownCast(dataSet), pieceExtent);
   }
@@ -127,7 +128,7 @@ void addPointArrays(vtkInformationVector* geometry, const terralux::Hierarchical
 
 // Field data: sizes, rays and seconds per phase, so a user sees where the time went.
 void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
-  const terralux::EvaluationStatistics& lattice, double pointsSeconds, vtkFieldData* fieldData)
+  const terralux::EvaluationStatistics& evaluation, double pointsSeconds, vtkFieldData* fieldData)
 {
   const terralux::RadiosityStatistics& stats = solver.statistics();
   auto addValue = [&](const char* name, double value) { vtkRadiosityOutputs::AddFieldValue(fieldData, name, value); };
@@ -143,13 +144,13 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
   addValue("SecondsRefine", stats.secondsRefine);
   addValue("SecondsGather", stats.secondsGather);
   addValue("SecondsPushPull", stats.secondsPushPull);
-  addValue("SecondsHorizons", stats.secondsHorizons);
+  addValue("SecondsHorizons", evaluation.horizonsSeconds);
   addValue("SecondsPoints", pointsSeconds); // the lattice's gathers included
-  addValue("SecondsLattice", lattice.latticeSeconds);
+  addValue("SecondsLattice", evaluation.latticeSeconds);
   addValue("RaysRefine", static_cast<double>(stats.raysRefine));
   addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
   addValue("RaysPoints", static_cast<double>(solver.raysCast() - stats.rays));
-  addValue("RaysLattice", static_cast<double>(lattice.latticeRays));
+  addValue("RaysLattice", static_cast<double>(evaluation.latticeRays));
 }
 
 } // namespace
@@ -188,12 +189,12 @@ terralux::HierarchicalRadiosity& vtkRadiosityFilter::PrepareSolver(std::unique_p
     geometryScene = std::move(kept->GeometryScene);
   }
   kept.reset(); // the old solver, and a geometry of another shape, freed first
-  auto next = std::make_unique<KeptSolver>();
-  next->Solver = std::make_unique<terralux::HierarchicalRadiosity>(scene->Scene, options, geometry);
+  auto solver = std::make_unique<terralux::HierarchicalRadiosity>(scene->Scene, options, geometry);
   // The scenes it shares grids with move here; the caller's references stay valid.
-  next->SolverScene = geometryScene ? std::move(scene) : nullptr;
-  next->GeometryScene = geometryScene ? std::move(geometryScene) : std::move(scene);
-  kept = std::move(next);
+  if (geometryScene)
+    kept = std::make_unique<KeptSolver>(std::move(solver), std::move(geometryScene), std::move(scene));
+  else
+    kept = std::make_unique<KeptSolver>(std::move(solver), std::move(scene), nullptr);
   return *kept->Solver;
 }
 
@@ -306,7 +307,8 @@ int vtkRadiosityFilter::Solve(vtkInformationVector** inputVector, const PieceReq
   plan.atPoints = this->EvaluateAtPoints != 0;
   plan.hornNormals = hornNormals;
   plan.split = split.get();
-  const terralux::EvaluationStatistics prepared = solver->prepareEvaluation(plan);
+  const terralux::PointEvaluator evaluator(*solver, plan);
+  const terralux::EvaluationStatistics& prepared = evaluator.statistics();
   // Output 0: the inputs, same points and cells and the same composite structure,
   // with the point arrays.
   const auto pointsStart = std::chrono::steady_clock::now();
@@ -315,7 +317,7 @@ int vtkRadiosityFilter::Solve(vtkInformationVector** inputVector, const PieceReq
   pointOptions.evaluateAtPoints = this->EvaluateAtPoints != 0;
   pointOptions.hornNormals = hornNormals;
   pointOptions.sunshine = scene.SunshineDuration;
-  addPointArrays(inputVector[0], *solver, scene, pointOptions, piece.extent, output);
+  addPointArrays(inputVector[0], evaluator, scene, pointOptions, piece.extent, output);
   const double pointsSeconds =
     prepared.latticeSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - pointsStart).count();
   addStatistics(*solver, scene, prepared, pointsSeconds, output->GetFieldData());

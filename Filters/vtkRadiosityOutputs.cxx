@@ -20,6 +20,7 @@
 
 #include "evaluation/point_values.h"
 #include "hierarchy/polygon_element.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "evaluation/polygon_leaf_mesh.h"
 #include "terrain/terrain_mesh.h"
@@ -133,9 +134,10 @@ vtkIdType postGridCell(const terralux::HierarchicalRadiosity& solver, const terr
 }
 } // namespace
 
-void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& solver,
+void vtkRadiosityOutputs::AddPointArrays(const terralux::PointEvaluator& evaluator,
   const vtkRadiosityScene& scene, int index, const PointOptions& options, vtkDataSet* output)
 {
+  const terralux::HierarchicalRadiosity& solver = evaluator.solver();
   const vtkRadiosityScene::Input& input = scene.Inputs[index];
   const vtkIdType count = output->GetNumberOfPoints();
   terralux::PointEvaluation how;
@@ -160,7 +162,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
         const std::size_t i = post % nx, j = post / nx;
         return static_cast<vtkIdType>((j - posts[2]) * pieceX + (i - posts[0]));
       };
-      terralux::terrainPostValues(solver, *root, posts, how,
+      terralux::terrainPostValues(evaluator, *root, posts, how,
         [&](std::size_t post, const terralux::PointValues& v) { arrays.set(pointOf(post), v); });
     }
   }
@@ -169,7 +171,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::HierarchicalRadiosity& 
     // A terrain grid's posts take one normal (the GIS convention, as terrain patches do).
     std::vector<bool> reached;
     const std::vector<terralux::PointValues> values = terralux::polygonPointValues(
-      solver, scene.Scene, index, input.firstPoint, static_cast<std::size_t>(count), terrainGrid, how, reached);
+      evaluator, scene.Scene, index, input.firstPoint, static_cast<std::size_t>(count), terrainGrid, how, reached);
     for (vtkIdType p = 0; p < count; ++p)
       if (reached[p]) // points on no polygon (no-data posts, loose vertices) stay NaN
         arrays.set(p, values[p]);

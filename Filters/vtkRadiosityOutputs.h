@@ -15,6 +15,7 @@ class vtkRadiosityScene;
 namespace terralux
 {
 class HierarchicalRadiosity;
+class PointEvaluator;
 }
 
 struct vtkRadiosityOutputs
@@ -57,7 +58,7 @@ struct vtkRadiosityOutputs
   /// With evaluateAtPoints off, each point takes the area-weighted average of the
   /// leaves that have it as a corner instead (fast; values smeared over the elements
   /// around the point; no SkyViewFactor).
-  static void AddPointArrays(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,
+  static void AddPointArrays(const terralux::PointEvaluator& evaluator, const vtkRadiosityScene& scene,
     int index, const PointOptions& options, vtkDataSet* output);
   /// withSky: add SkyViewFactor (the leaves' own, continuous like the other arrays).
   static void BuildLeafMesh(const terralux::HierarchicalRadiosity& solver, const vtkRadiosityScene& scene,

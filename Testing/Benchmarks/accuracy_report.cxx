@@ -178,24 +178,13 @@ void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
   out.firstWeight.resize(out.points.size(), 1.0);
 }
 
-std::vector<terralux_reference::ReferenceSun> sunsOf(const vtkRadiosityScene& scene)
-{
-  std::vector<terralux_reference::ReferenceSun> suns;
-  // As TerraLux defines it, a sun at or below the horizon lights nothing (beyond the
-  // scene's edge the ground would hide it).
-  for (const auto& sun : scene.Suns)
-    if (sun.direction.z > 0.0)
-      suns.push_back({ glm::normalize(sun.direction), sun.irradiance[0] });
-  return suns;
-}
-
 int computeReference(const terralux_bench::AccuracyScene& input, const std::string& path, int samples)
 {
   ScenePoints s;
   loadScene(input, s);
   const auto start = std::chrono::steady_clock::now();
   const terralux_reference::ReferenceScene reference(s.scene.Scene);
-  const terralux_reference::PathTracer tracer(reference, s.scene.Sky.get(), sunsOf(s.scene));
+  const terralux_reference::PathTracer tracer(reference, s.scene.Sky.get(), terralux_reference::referenceSuns(s.scene.Suns));
   auto estimates = tracer.irradianceAt(s.points, s.normals, samples);
   if (!s.moreSides.empty())
   {
@@ -247,7 +236,7 @@ int computeReference(const terralux_bench::AccuracyScene& input, const std::stri
   {
     const auto& e = estimates[k];
     bool facing = false;
-    for (const auto& sun : sunsOf(s.scene))
+    for (const auto& sun : terralux_reference::referenceSuns(s.scene.Suns))
       facing = facing || glm::dot(s.normals[k], sun.direction) > 0.0;
     values[k] = { s.used[k] ? 1.0 : 0.0, facing ? 1.0 : 0.0, e.sun.mean, e.sky.mean, e.sky.standardError,
       e.reflected.mean, e.reflected.standardError, e.global.mean, e.global.standardError };
@@ -420,10 +409,10 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   ScenePoints s;
   loadScene(input, s);
   double floorSeconds = 0.0;
-  if (!sunsOf(s.scene).empty())
+  if (!terralux_reference::referenceSuns(s.scene.Suns).empty())
   {
     const terralux_reference::ReferenceScene rays(s.scene.Scene);
-    const Vec3 toward = sunsOf(s.scene).front().direction;
+    const Vec3 toward = terralux_reference::referenceSuns(s.scene.Suns).front().direction;
     std::atomic<int> lit{ 0 };
     const auto floorStart = std::chrono::steady_clock::now();
     tbb::parallel_for(std::size_t(0), s.points.size(), [&](std::size_t k) {

@@ -27,6 +27,19 @@ struct ReferenceSun
   double normalIrradiance = 0.0;
 };
 
+/// The suns of a scene's lights (anything with a `direction` toward the sun and an
+/// `irradiance` by band) as the reference takes them: as TerraLux defines it, a sun at
+/// or below the horizon lights nothing; the first band.
+template <typename Suns>
+std::vector<ReferenceSun> referenceSuns(const Suns& suns)
+{
+  std::vector<ReferenceSun> result;
+  for (const auto& sun : suns)
+    if (sun.direction.z > 0.0)
+      result.push_back({ glm::normalize(sun.direction), sun.irradiance[0] });
+  return result;
+}
+
 /// Mean and standard error of one component, W/m^2.
 struct Estimate
 {

@@ -34,32 +34,29 @@ Vec3 CosineFrame::direction(double s, double t) const
     r * std::cos(phi) * this->U + r * std::sin(phi) * this->V + std::sqrt(std::max(0.0, 1.0 - s)) * this->N);
 }
 
-FinalGather::FinalGather(const Visibility& rays, const std::vector<PolygonElement*>& polygons,
-  const std::vector<TerrainPatch*>& terrains, const std::vector<HElement*>& suns)
-  : Rays(rays)
-  , Polygons(polygons)
-  , Terrains(terrains)
-  , Suns(suns)
+FinalGather::FinalGather(const GatherInputs& inputs)
+  : Rays(inputs.rays)
+  , Polygons(inputs.polygons)
+  , Terrains(inputs.terrains)
+  , Suns(inputs.suns)
+  , Sky(inputs.sky)
+  , Horizons(inputs.horizons)
+  , PostSkies(inputs.postSkies)
+  , Lattice(inputs.lattice)
+  , PostSuns(inputs.postSunlight)
+  , Leaves(inputs.leafLight)
+  , DetailDistance(inputs.detailDistance)
+  , HierarchyTerrain(inputs.hierarchyTerrain)
+  , SkySamples(inputs.sky ? std::make_unique<SkyImportance>(*inputs.sky) : nullptr)
 {
-}
-
-FinalGather::~FinalGather() = default;
-
-void FinalGather::setSky(const OpenSky* sky)
-{
-  this->Sky = sky;
-  this->SkySamples = sky ? std::make_unique<SkyImportance>(*sky) : nullptr;
-}
-
-void FinalGather::prepareSuns()
-{
-  this->SunCumulative.clear();
   if (this->Suns.size() <= maximumSunsPerHit)
     return;
   double sum = 0.0;
   for (const HElement* sun : this->Suns)
     this->SunCumulative.push_back(sum += largestBand(sun->emittance()));
 }
+
+FinalGather::~FinalGather() = default;
 
 Spectrum FinalGather::radiosityAt(
   const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front, double sunSample, const Vec3& from) const

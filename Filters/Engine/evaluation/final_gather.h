@@ -60,13 +60,51 @@ struct GatherBudget
   double knownSurfaces = 0.0;
 };
 
+/// What a final gather reads, fixed for its life. The optional parts (null: absent)
+/// each replace a cruder reading of the same light.
+struct GatherInputs
+{
+  const Visibility& rays;
+  /// The roots of the input polygons and of the terrains (null entries allowed), as the
+  /// solver holds them; their leaves' radiosity is read at each gather.
+  const std::vector<PolygonElement*>& polygons;
+  const std::vector<TerrainPatch*>& terrains;
+  const std::vector<HElement*>& suns; ///< the hierarchy's: the suns hits take
+  /// The sky at points: the open sky of each point's plane minus what the scene hides.
+  const OpenSky* sky = nullptr;
+  /// With horizons (a scene that is a height field), the sky the scene hides comes from
+  /// the point's horizon instead of the rays, which then gather surfaces alone. Without
+  /// them, the hidden sky comes from occlusion rays drawn by the sky's radiance. At a
+  /// post of the horizons' map, the surfaces' rays are drawn below the post's horizon
+  /// only (TerrainDirections): the sky above it is the horizons' part.
+  const HorizonSky* horizons = nullptr;
+  /// The skies of the posts of the scene's one terrain (a height field): a hit on it
+  /// sends the sky read between them instead of its leaf's average.
+  const PostSky* postSkies = nullptr;
+  /// Posts of that terrain gathered first: a hit on it receives their light from
+  /// surfaces, read between them, instead of its leaf's.
+  const PostLattice* lattice = nullptr;
+  /// Which suns the posts of that terrain are proven to see or not (in the order of
+  /// `suns`): a hit on it whose cell's posts all agree takes no shadow ray for that sun.
+  const PostSunlight* postSunlight = nullptr;
+  /// What leaves receive, gathered from each: a hit on one of them sends that instead
+  /// of the hierarchy's values.
+  const LeafLight* leafLight = nullptr;
+  /// Beyond this distance (m, horizontally) from the gathering point, a hit on that
+  /// terrain reads nothing of its posts (skies, proven suns, lattice) and sends its
+  /// leaf's light, as a hit on other surfaces does: what a far hit adds is small, and a
+  /// process evaluating a piece of the terrain then needs its posts' values only within
+  /// this distance of the piece (HeldPosts). 0: every hit reads them.
+  double detailDistance = 0.0;
+  /// The far terrain the hierarchy's terrain leaves are built on (null: the scene's own
+  /// grid): a hit's parameters, the scene grid's, map to its leaves.
+  const FarTerrain* hierarchyTerrain = nullptr;
+};
+
 class FinalGather
 {
 public:
-  /// The roots of the input polygons and of the terrains (null entries allowed), as
-  /// the solver holds them; their leaves' radiosity is read at each gather.
-  FinalGather(const Visibility& rays, const std::vector<PolygonElement*>& polygons,
-    const std::vector<TerrainPatch*>& terrains, const std::vector<HElement*>& suns);
+  explicit FinalGather(const GatherInputs& inputs);
   ~FinalGather();
 
   /// Irradiance (W/m^2) at a point with unit normal from the surfaces it sees: the mean
@@ -79,55 +117,25 @@ public:
   /// part of it: that is taken at the hit itself, with its own triangle's cosine and a
   /// shadow ray (a leaf of several cells of a rough terrain averages slopes the
   /// grazing sun lights very differently), or the answer its cell's posts all prove
-  /// (setPostSunlight).
+  /// (GatherInputs::postSunlight).
   ///
-  /// With a sky (setSky), the sky at the point is the open sky of its plane (exact,
-  /// OpenSky) minus what the scene hides: from the point's horizon (setHorizons), or
+  /// With a sky, the sky at the point is the open sky of its plane (exact,
+  /// OpenSky) minus what the scene hides: from the point's horizon (GatherInputs::horizons), or
   /// from occlusion rays drawn by the sky's radiance with a pilot of their own
   /// (SkyImportance), which also give the sky view factor. `surfacesSend` false skips
   /// what surfaces send (every radiosity 0): no cosine-weighted rays then. `post`: the
   /// terrain post the point stands for, whose horizons the horizons' map holds; there
   /// the rays are drawn below its horizon instead (TerrainDirections), correct the
   /// sky where the interpolated horizon was wrong, and a hit on the terrain sends the
-  /// sky of the posts around it (setPostSkies) and the lattice's light from surfaces
-  /// (setPostLattice) instead of its leaf's.
+  /// sky of the posts around it (GatherInputs::postSkies) and the lattice's light from surfaces
+  /// (GatherInputs::lattice) instead of its leaf's.
   GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
     double directIrradiance, bool surfacesSend = true, const HorizonMap::Post& post = {}) const;
-  void setSky(const OpenSky* sky);
-  /// With horizons (a scene that is a height field), the sky the scene hides comes from
-  /// the point's horizon instead of the rays, which then gather surfaces alone.
-  /// Without them, the hidden sky comes from occlusion rays drawn by the sky's radiance.
-  /// At a post of the horizons' map, the surfaces' rays are drawn below the post's
-  /// horizon only (TerrainDirections): the sky above it is the horizons' part.
-  void setHorizons(const HorizonSky* horizons) { this->Horizons = horizons; }
-  /// The skies of the posts of the scene's one terrain (a height field): a hit on it
-  /// sends the sky read between them instead of its leaf's average.
-  void setPostSkies(const PostSky* skies) { this->PostSkies = skies; }
-  /// Posts of that terrain gathered first: a hit on it receives their light from
-  /// surfaces, read between them, instead of its leaf's.
-  void setPostLattice(const PostLattice* lattice) { this->Lattice = lattice; }
-  /// Which suns the posts of that terrain are proven to see or not (PostSunlight, in
-  /// the order of the suns given): a hit on it whose cell's posts all agree takes no
-  /// shadow ray for that sun.
-  void setPostSunlight(const PostSunlight* sunlight) { this->PostSuns = sunlight; }
-  /// What leaves receive, gathered from each (LeafLight): a hit on one of them sends
-  /// that instead of the hierarchy's values (null: the hierarchy's).
-  void setLeafLight(const LeafLight* leaves) { this->Leaves = leaves; }
-  /// Beyond this distance (m, horizontally) from the gathering point, a hit on that
-  /// terrain reads nothing of its posts (skies, proven suns, lattice) and sends its
-  /// leaf's light, as a hit on other surfaces does: what a far hit adds is small, and
-  /// a process evaluating a piece of the terrain then needs its posts' values only
-  /// within this distance of the piece (HeldPosts). 0: every hit reads them.
-  void setDetailDistance(double metres) { this->DetailDistance = metres; }
-  /// The far terrain the hierarchy's terrain leaves are built on (null: the scene's
-  /// own grid): a hit's parameters, the scene grid's, map to its leaves.
-  void setHierarchyTerrain(const FarTerrain* terrain) { this->HierarchyTerrain = terrain; }
-  /// Call once the suns are known. Up to maximumSunsPerHit suns each take a shadow ray
-  /// at every hit; more (the sun positions of a day or a year, summed in one solve)
-  /// would multiply the gather's rays, so a hit then takes one sun, chosen in
-  /// proportion to its irradiance and weighted by the inverse of that chance (unbiased;
-  /// the gather's error control sees the extra spread and adds rays where it matters).
-  void prepareSuns();
+  /// Up to maximumSunsPerHit suns each take a shadow ray at every hit; more (the sun
+  /// positions of a day or a year, summed in one solve) would multiply the gather's
+  /// rays, so a hit then takes one sun, chosen in proportion to its irradiance and
+  /// weighted by the inverse of that chance (unbiased; the gather's error control sees
+  /// the extra spread and adds rays where it matters).
   static constexpr std::size_t maximumSunsPerHit = 4;
 
   /// How many of strata x strata stratified cosine-weighted rays from a point escape or
@@ -155,14 +163,14 @@ private:
   const std::vector<PolygonElement*>& Polygons;
   const std::vector<TerrainPatch*>& Terrains;
   const std::vector<HElement*>& Suns;
-  const OpenSky* Sky = nullptr;
-  const HorizonSky* Horizons = nullptr;
-  const PostSky* PostSkies = nullptr;
-  const PostLattice* Lattice = nullptr;
-  const PostSunlight* PostSuns = nullptr;
-  const LeafLight* Leaves = nullptr;
-  double DetailDistance = 0.0;
-  const FarTerrain* HierarchyTerrain = nullptr;
+  const OpenSky* Sky;
+  const HorizonSky* Horizons;
+  const PostSky* PostSkies;
+  const PostLattice* Lattice;
+  const PostSunlight* PostSuns;
+  const LeafLight* Leaves;
+  const double DetailDistance;
+  const FarTerrain* HierarchyTerrain;
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };

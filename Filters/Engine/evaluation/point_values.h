@@ -13,7 +13,7 @@
 
 namespace terralux
 {
-class HierarchicalRadiosity;
+class PointEvaluator;
 class PolygonElement;
 struct PointIrradiance;
 class TerrainPatch;
@@ -27,7 +27,7 @@ struct PointValues
 
   /// A leaf's own values (uniform over it, as the hierarchy holds them).
   static PointValues ofLeaf(const PolygonElement& leaf);
-  /// What a point of `leaf` receives (HierarchicalRadiosity::irradianceAt), with the
+  /// What a point of `leaf` receives (PointEvaluator::irradianceAt), with the
   /// radiosity the leaf's material makes of it.
   static PointValues atPoint(const PointIrradiance& received, const PolygonElement& leaf);
   /// sun + sky + reflected
@@ -63,7 +63,7 @@ struct PointEvaluation
 
 /// The posts [i0, i1] x [j0, j1] of a terrain (clipped to its grid): `sink(i + j nx,
 /// values)` for every used post a leaf covers, called in parallel (distinct posts).
-void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& root, const int posts[4],
+void terrainPostValues(const PointEvaluator& evaluator, const TerrainPatch& root, const int posts[4],
   const PointEvaluation& how, const std::function<void(std::size_t, const PointValues&)>& sink);
 
 /// The vertices [firstPoint, firstPoint + count) of the scene's polygons from input
@@ -71,7 +71,7 @@ void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& 
 /// crease, a box's edge, has two sides, each evaluated on its own side), averaged by
 /// area; `oneNormal` (a terrain grid given as polygons) gives every vertex one side.
 /// `reached[k]` is false for a vertex no polygon has (its values are zeros).
-std::vector<PointValues> polygonPointValues(const HierarchicalRadiosity& solver, const RadiosityScene& scene,
+std::vector<PointValues> polygonPointValues(const PointEvaluator& evaluator, const RadiosityScene& scene,
   int owner, std::size_t firstPoint, std::size_t count, bool oneNormal, const PointEvaluation& how,
   std::vector<bool>& reached);
 } // namespace terralux

@@ -2,7 +2,7 @@
 #include "evaluation/point_values.h"
 
 #include "hierarchy/polygon_element.h"
-#include "solver/solver.h"
+#include "evaluation/point_evaluator.h"
 
 #include <tbb/parallel_for.h>
 
@@ -111,11 +111,11 @@ private:
 };
 
 // Every side of every point of input `owner`.
-PointSides sidesOf(const HierarchicalRadiosity& solver, const RadiosityScene& scene, int owner,
+PointSides sidesOf(const PointEvaluator& evaluator, const RadiosityScene& scene, int owner,
   std::size_t firstPoint, std::size_t count, bool oneNormal, bool averaged)
 {
   PointSides sides(count, oneNormal, averaged);
-  const auto& roots = solver.polygonRoots();
+  const auto& roots = evaluator.solver().polygonRoots();
   // The largest part of each cell (a polygon is split into triangles), for vertices
   // that only its degenerate parts reach.
   std::unordered_map<std::int64_t, std::size_t> largestPart;
@@ -151,7 +151,7 @@ PointSides sidesOf(const HierarchicalRadiosity& solver, const RadiosityScene& sc
 
 // One evaluation per side: the side's first leaf, then its other leaves; the clearly
 // most open wins.
-std::vector<PointValues> evaluatedAtPoints(const HierarchicalRadiosity& solver,
+std::vector<PointValues> evaluatedAtPoints(const PointEvaluator& evaluator,
   const std::vector<const Side*>& sides, const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
   const std::vector<Vec3>& towards)
 {
@@ -170,7 +170,7 @@ std::vector<PointValues> evaluatedAtPoints(const HierarchicalRadiosity& solver,
       evaluationOf.push_back(k);
     }
   std::vector<PointIrradiance> results;
-  solver.irradianceAt(leaves, allPoints, allNormals, allTowards, results);
+  evaluator.irradianceAt(leaves, allPoints, allNormals, allTowards, results);
   auto openness = [](const PointIrradiance& r) {
     return r.irradiance[0][0] + r.irradiance[1][0] + r.irradiance[2][0];
   };
@@ -193,7 +193,7 @@ std::vector<PointValues> evaluatedAtPoints(const HierarchicalRadiosity& solver,
 
 // Averaged over the leaves around the point, except direct sun: one ray from the point,
 // so shadows stay sharp.
-std::vector<PointValues> averagedAroundPoints(const HierarchicalRadiosity& solver,
+std::vector<PointValues> averagedAroundPoints(const PointEvaluator& evaluator,
   const std::vector<const Side*>& sides, const std::vector<Vec3>& points, const std::vector<Vec3>& normals)
 {
   std::vector<PointValues> values(points.size());
@@ -202,18 +202,18 @@ std::vector<PointValues> averagedAroundPoints(const HierarchicalRadiosity& solve
     PointValues& v = values[k];
     v.accumulate(side.leafSum, 1.0 / side.leafWeight);
     v.sunlitHours = 0.0;
-    v.irradiance[SunLight] = solver.directSunAt(points[k], normals[k], &v.sunlitHours);
+    v.irradiance[SunLight] = evaluator.directSunAt(points[k], normals[k], &v.sunlitHours);
     v.radiosity = radiosityOf(side.leaf->emission(), side.leaf->reflectance(), v.globalIrradiance());
   });
   return values;
 }
 } // namespace
 
-std::vector<PointValues> polygonPointValues(const HierarchicalRadiosity& solver, const RadiosityScene& scene,
+std::vector<PointValues> polygonPointValues(const PointEvaluator& evaluator, const RadiosityScene& scene,
   int owner, std::size_t firstPoint, std::size_t count, bool oneNormal, const PointEvaluation& how,
   std::vector<bool>& reached)
 {
-  const PointSides sides = sidesOf(solver, scene, owner, firstPoint, count, oneNormal, !how.atPoints);
+  const PointSides sides = sidesOf(evaluator, scene, owner, firstPoint, count, oneNormal, !how.atPoints);
   // One evaluation per side of each point.
   std::vector<const Side*> allSides;
   std::vector<Vec3> points, normals, towards;
@@ -237,8 +237,8 @@ std::vector<PointValues> polygonPointValues(const HierarchicalRadiosity& solver,
       pointOf.push_back(p);
     }
   const std::vector<PointValues> sideValues = how.atPoints
-    ? evaluatedAtPoints(solver, allSides, points, normals, towards)
-    : averagedAroundPoints(solver, allSides, points, normals);
+    ? evaluatedAtPoints(evaluator, allSides, points, normals, towards)
+    : averagedAroundPoints(evaluator, allSides, points, normals);
   // Sides of one point weighted by their area.
   std::vector<PointValues> values(count);
   std::vector<double> weights(count, 0.0);

@@ -2,7 +2,7 @@
 #include "evaluation/point_values.h"
 
 #include "terrain/far_terrain.h"
-#include "solver/solver.h"
+#include "evaluation/point_evaluator.h"
 #include "terrain/terrain_grid.h"
 #include "terrain/terrain_mesh.h"
 #include "hierarchy/terrain_patch.h"
@@ -14,13 +14,13 @@
 
 namespace terralux
 {
-void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& root, const int posts[4],
+void terrainPostValues(const PointEvaluator& evaluator, const TerrainPatch& root, const int posts[4],
   const PointEvaluation& how, const std::function<void(std::size_t, const PointValues&)>& sink)
 {
   // Posts of the scene's grid; the hierarchy's may be the far terrain's (its
   // parameters then mapped between the two).
-  const TerrainGrid& grid = solver.postGrid(root);
-  const FarTerrain* far = solver.hierarchyTerrain();
+  const TerrainGrid& grid = evaluator.solver().postGrid(root);
+  const FarTerrain* far = evaluator.solver().hierarchyTerrain();
   const int nx = grid.postsX(), ny = grid.postsY();
   const int i0 = std::max(0, posts[0]), i1 = std::min(nx - 1, posts[1]);
   const int j0 = std::max(0, posts[2]), j1 = std::min(ny - 1, posts[3]);
@@ -34,10 +34,10 @@ void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& 
     tbb::parallel_for(j0, j1 + 1, [&](int j) {
       for (int i = i0; i <= i1; ++i)
       {
-        const TerrainPatch* leaf = grid.postUsed(i, j) ? solver.leafAtPost(root, i, j) : nullptr;
+        const TerrainPatch* leaf = grid.postUsed(i, j) ? evaluator.solver().leafAtPost(root, i, j) : nullptr;
         if (leaf)
           sink(index(i, j),
-            PointValues::atPoint(solver.irradianceAt(*leaf, grid.post(i, j), grid.normalAt(i, j, how.hornNormals)), *leaf));
+            PointValues::atPoint(evaluator.irradianceAt(*leaf, grid.post(i, j), grid.normalAt(i, j, how.hornNormals)), *leaf));
       }
     });
     return;
@@ -65,7 +65,7 @@ void terrainPostValues(const HierarchicalRadiosity& solver, const TerrainPatch& 
           continue;
         mesh.interpolate(k, vertexValues, PointValues::flatComponents, leafU, leafV, flat);
         PointValues v = PointValues::unflatten(flat);
-        v.irradiance[SunLight] = solver.directSunAt(grid.post(i, j), grid.normalAt(i, j, how.hornNormals), &v.sunlitHours);
+        v.irradiance[SunLight] = evaluator.directSunAt(grid.post(i, j), grid.normalAt(i, j, how.hornNormals), &v.sunlitHours);
         v.radiosity = radiosityOf(leaf.emission(), leaf.reflectance(), v.globalIrradiance());
         sink(index(i, j), v);
       }

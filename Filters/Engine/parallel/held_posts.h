@@ -2,7 +2,7 @@
 // The posts of a terrain whose skies and proven suns a process holds (post_sky.h,
 // post_sunlight.h): gather rays read them at their hits, so one process holds every
 // post; with a detail distance, a gather hit farther than it from the gathering point
-// takes its leaf's light instead (FinalGather::setDetailDistance), and a process that
+// takes its leaf's light instead (GatherInputs::detailDistance), and a process that
 // evaluates a window of posts (a piece, under MPI) needs the posts within that distance
 // of its window only: its window grown by a halo. Each process computes its window's
 // values and receives, from each other process, the part of that one's window inside

@@ -4,15 +4,7 @@
 #include "solver/bf_oracle.h"
 #include "hierarchy/cluster.h"
 #include "base/error.h"
-#include "evaluation/final_gather.h"
-#include "horizons/horizon_map.h"
-#include "horizons/horizon_sky.h"
-#include "evaluation/leaf_light.h"
-#include "evaluation/post_lattice.h"
-#include "horizons/post_sky.h"
-#include "horizons/post_sunlight.h"
 #include "visibility/scene_geometry.h"
-#include "evaluation/open_sky.h"
 #include "solver/link_transport.h"
 #include "hierarchy/polygon_element.h"
 #include "sky/sky_hierarchy.h"
@@ -114,7 +106,6 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   const bool reused = geometry && geometry->sameShape(scene, options.farSight());
   this->Geometry = reused ? std::move(geometry) : std::make_shared<SceneGeometry>(scene, options.farSight());
   this->Rays = &this->Geometry->hierarchyRays();
-  this->PointRays = &this->Geometry->pointRays();
   this->RaysBefore = this->Rays->raysCast();
   this->PointCount = scene.points.size();
   for (const TerrainGrid* terrain : scene.terrains)
@@ -127,9 +118,6 @@ HierarchicalRadiosity::HierarchicalRadiosity(
     const auto stride = static_cast<std::size_t>(scene.farTerrain.stride);
     this->PointCount = static_cast<std::size_t>(far.postsX()) * far.postsY() * stride * stride;
   }
-  this->Gather = std::make_unique<FinalGather>(*this->PointRays, this->Roots, this->TerrainRoots, this->Suns);
-  this->Gather->setDetailDistance(options.gatherDetailDistance);
-  this->Gather->setHierarchyTerrain(this->HierarchyTerrain.get());
   // A window decides by the far terrain, the same on every process.
   this->HeightField = options.skyFromHorizons && scene.polygons.empty() &&
     (this->Window ? this->HierarchyTerrain->grid().facesUp()
@@ -196,34 +184,16 @@ std::size_t HierarchicalRadiosity::elementCount() const
 
 bool HierarchicalRadiosity::seesFarTerrain() const
 {
-  return this->PointRays->farTerrain() != nullptr;
+  return this->Geometry->pointRays().farTerrain() != nullptr;
 }
 
-EvaluationStatistics HierarchicalRadiosity::prepareEvaluation(const EvaluationPlan& plan)
+std::vector<PolygonElement*> HierarchicalRadiosity::surfaceLeaves()
 {
-  // A window computes all it needs itself: its horizons see its far terrain.
-  this->Split = this->Window ? nullptr : plan.split;
-  struct Unsplit
-  {
-    const WorkSplit*& split;
-    ~Unsplit() { this->split = nullptr; }
-  } unsplit{ this->Split };
-  if (plan.atPoints)
-    this->findPostHorizons(plan.hornNormals);
-  this->findSunHorizons();
-  // At points, what gather rays meet; averaged, the polygons' values themselves
-  // (terrain patches keep the hierarchy's: the fast mode of a DEM).
-  this->gatherLeaves(plan.atPoints);
-  EvaluationStatistics statistics;
-  if (plan.atPoints && plan.postLattice && this->TerrainRoots.size() == 1 && this->TerrainRoots.front())
-  {
-    const auto start = std::chrono::steady_clock::now();
-    const std::uint64_t raysBefore = this->raysCast();
-    this->gatherPostLattice(*this->TerrainRoots.front(), plan.hornNormals);
-    statistics.latticeSeconds = secondsSince(start);
-    statistics.latticeRays = this->raysCast() - raysBefore;
-  }
-  return statistics;
+  std::vector<PolygonElement*> leaves;
+  for (const auto& element : this->Store->all())
+    if (element->isSurface() && !static_cast<PolygonElement&>(*element).hasChildren())
+      leaves.push_back(static_cast<PolygonElement*>(element.get()));
+  return leaves;
 }
 
 std::uint64_t HierarchicalRadiosity::raysCast() const
@@ -238,30 +208,13 @@ void HierarchicalRadiosity::addSun(const Vec3& directionTowardSun, const Spectru
   // it gets no element and no links (they would only refine toward edge slopes).
   if (largestBand(normalIrradiance) > 0.0 && glm::length(directionTowardSun) > 0.0 && directionTowardSun.z > 0.0)
     this->PointSuns.push_back(this->Sources->make<SunElement>(0, directionTowardSun, normalIrradiance, duration));
-  // The suns' bearings on the horizon map are those of the suns before this one.
-  this->forgetMappedSuns();
 }
 
 void HierarchicalRadiosity::setSky(const SkyHierarchy* sky)
 {
   this->Sky = sky;
-  this->SkyAtPoints = sky ? std::make_unique<OpenSky>(*sky) : nullptr;
-  this->Gather->setSky(this->SkyAtPoints.get());
-  this->resetHorizons();
   this->SkyRoot =
     sky ? this->Sources->make<SkyPatchElement>(0, this->Sources.get(), sky, SkyPatch{ 0, 0, 0 }) : nullptr;
-}
-
-void HierarchicalRadiosity::resetHorizons()
-{
-  // Until findPostHorizons, the horizons of the rays alone.
-  this->PostHorizons = nullptr;
-  this->forgetMappedSuns();
-  this->Gather->setHorizons(nullptr);
-  this->Horizons = this->SkyAtPoints && this->HeightField
-    ? std::make_unique<HorizonSky>(*this->PointRays, *this->SkyAtPoints, nullptr)
-    : nullptr;
-  this->Gather->setHorizons(this->Horizons.get());
 }
 
 void HierarchicalRadiosity::clearSources()
@@ -270,9 +223,6 @@ void HierarchicalRadiosity::clearSources()
   this->PointSuns.clear();
   this->SkyRoot = nullptr;
   this->Sky = nullptr;
-  this->Gather->setSky(nullptr);
-  this->SkyAtPoints.reset();
-  this->resetHorizons();
   this->Sources = std::make_unique<ElementStore>(firstSourceId);
   this->Sources->MaximumSkyLevel = this->Options.maximumSkyLevel;
 }
@@ -285,15 +235,6 @@ void HierarchicalRadiosity::restart()
   this->LargestRadiosity = 0.0;
   this->Suns.clear();
   this->MergedSuns.reset();
-  this->Gather->setPostSkies(nullptr);
-  this->Gather->setPostLattice(nullptr);
-  this->Gather->setLeafLight(nullptr);
-  this->Gather->setPostSunlight(nullptr);
-  this->PostSkies.reset(); // of the last sky; the posts' horizons stay (the geometry's)
-  this->PostSuns.reset();
-  this->Lattice.reset();
-  this->Leaves.reset();
-  this->resetHorizons();
   // The hierarchy and the geometry were built for the first solve only.
   const RadiosityStatistics built = this->Stats;
   this->Stats = RadiosityStatistics();
@@ -301,83 +242,6 @@ void HierarchicalRadiosity::restart()
   this->Stats.secondsVisibilityBuild = this->Solved ? 0.0 : built.secondsVisibilityBuild;
   this->RaysBefore = this->Rays->raysCast();
   this->Solved = true;
-}
-
-void HierarchicalRadiosity::findPostHorizons(bool hornNormals)
-{
-  if (!this->Horizons || !this->HeightFieldGrid || this->PostSkies)
-    return;
-  // Beyond the map's memory the posts keep the rays' horizons, slower but within the
-  // memory the rest of the solve needs. A window's map sees its far terrain beyond the
-  // detail distance, as its rays do.
-  if (!HorizonMap::fits(*this->HeightFieldGrid))
-    return;
-  const auto start = std::chrono::steady_clock::now();
-  // The one terrain's horizons: built by the first solve over this geometry, reused by
-  // the next ones.
-  this->PostHorizons = &this->Geometry->horizons(0, this->wantsDenseHorizons(), this->Split);
-  this->Horizons = std::make_unique<HorizonSky>(*this->PointRays, *this->SkyAtPoints, this->PostHorizons);
-  this->Gather->setHorizons(this->Horizons.get());
-  // With a split and a detail distance, each process holds the posts' skies and suns
-  // within it of its window only.
-  this->PostsHalo = this->Split ? HeldPosts::haloFor(*this->HeightFieldGrid, this->Options.gatherDetailDistance) : -1;
-  this->PostSkies = std::make_unique<PostSky>(
-    *this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals, this->Split, this->PostsHalo);
-  this->Gather->setPostSkies(this->PostSkies.get());
-  this->Stats.secondsHorizons = secondsSince(start);
-}
-
-bool HierarchicalRadiosity::wantsDenseHorizons() const
-{
-  return this->PointSuns.size() >= Tuning::sunsForDenseHorizons && HorizonMap::fits(*this->HeightFieldGrid, true);
-}
-
-void HierarchicalRadiosity::forgetMappedSuns()
-{
-  this->SunHorizons = nullptr;
-  this->MappedSuns.clear();
-  this->Gather->setPostSunlight(nullptr);
-  this->PostSuns.reset();
-}
-
-void HierarchicalRadiosity::findSunHorizons()
-{
-  this->forgetMappedSuns();
-  const TerrainGrid* grid = this->HeightFieldGrid;
-  if (!grid || this->PointSuns.empty())
-    return;
-  const HorizonMap* map = this->PostHorizons;
-  if (!map && this->PointSuns.size() >= Tuning::sunsForHorizonMap && HorizonMap::fits(*grid))
-  {
-    const auto start = std::chrono::steady_clock::now();
-    map = &this->Geometry->horizons(0, this->wantsDenseHorizons(), this->Split);
-    this->Stats.secondsHorizons += secondsSince(start);
-  }
-  if (!map || !map->complete())
-    return;
-  for (HElement* sun : this->PointSuns)
-  {
-    const ExternalSource& source = *sun->asExternal();
-    const Vec3& d = source.direction();
-    this->MappedSuns.push_back({ map->sight(std::atan2(d.y, d.x), std::asin(std::max(-1.0, std::min(1.0, d.z)))), d,
-      sun->emittance(), source.duration() });
-  }
-  this->SunHorizons = map;
-  // Gather hits on the terrain read the suns its posts prove (where each hit takes
-  // every sun, the hierarchy's suns being the points' own, all parallel).
-  const bool everySunParallel = std::all_of(this->PointSuns.begin(), this->PointSuns.end(),
-    [](const HElement* sun) { return sun->asExternal()->parallel(); });
-  if (this->PostSkies && map == this->PostHorizons && this->Suns == this->PointSuns && everySunParallel &&
-    this->PointSuns.size() <= std::min(PostSunlight::maximumSuns, FinalGather::maximumSunsPerHit))
-  {
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<HorizonMap::Sight> sights;
-    for (const MappedSun& sun : this->MappedSuns)
-      sights.push_back(sun.sight);
-    this->PostSuns = std::make_unique<PostSunlight>(*grid, *map, sights, this->Split, this->PostsHalo);
-    this->Gather->setPostSunlight(this->PostSuns.get());
-    this->Stats.secondsHorizons += secondsSince(start);
-  }
 }
 
 OracleSettings HierarchicalRadiosity::oracleSettings() const
@@ -452,12 +316,7 @@ bool HierarchicalRadiosity::solve(RadiosityProgress* progress)
 {
   this->restart();
   this->mergeSuns();
-  // Many points to evaluate: the open sky of each point's plane from a table over
-  // normals rather than one exact evaluation per point (docs/tuning.md).
-  if (this->SkyAtPoints && this->Options.gatherSamples > 0 && this->PointCount > 2 * 65 * 65)
-    this->SkyAtPoints->tabulate(this->PointCount > Tuning::openSkyTablePoints ? 128 : 64);
   this->Stats.referencePowerW = this->referencePower();
-  this->Gather->prepareSuns();
   std::vector<std::pair<HElement*, Link>> pending;
   auto addInitial = [&](HElement* sender) {
     if (sender)

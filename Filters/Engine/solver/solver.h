@@ -5,29 +5,20 @@
 // converges. Gather and ray casting run in parallel (TBB); element creation is
 // sequential, so results are identical for any thread count.
 // The phases live in files of their own: refinement.cxx, push_pull.cxx (gather and
-// push-pull), point_evaluation.cxx (values at the points users read).
+// push-pull); the values at the points users read are PointEvaluator's.
 
 #include "solver/bf_oracle.h"
 #include "solver/tuning.h"
 #include "terrain/far_terrain.h"
 #include "hierarchy/helement.h"
-#include "horizons/horizon_map.h"
-#include "evaluation/post_lattice.h"
 #include "hierarchy/radiosity_types.h"
 
 #include <memory>
 
 namespace terralux
 {
-class WorkSplit;
 class Cluster;
-class FinalGather;
-class HorizonSky;
-class LeafLight;
-class PostSky;
-class PostSunlight;
 class SceneGeometry;
-class OpenSky;
 class PolygonElement;
 class SkyHierarchy;
 class TerrainPatch;
@@ -55,7 +46,7 @@ struct RadiosityOptions
   /// gather's rays: no sampling noise in the sky.
   bool skyFromHorizons = true;
   /// m; > 0: a gather hit farther than this (horizontally) from its point takes its
-  /// leaf's light, not the one terrain's posts' (FinalGather::setDetailDistance), and
+  /// leaf's light, not the one terrain's posts' (GatherInputs::detailDistance), and
   /// with a work split each process holds the posts' skies and suns only within it of
   /// its window (HeldPosts). 0: every hit reads the posts.
   double gatherDetailDistance = 0.0;
@@ -92,7 +83,6 @@ struct RadiosityStatistics
   double secondsRefine = 0.0;
   double secondsGather = 0.0;
   double secondsPushPull = 0.0;
-  double secondsHorizons = 0.0; ///< the horizons of every post (HorizonMap), with the sky
   /// Rays of each phase of the solve (link visibility in refinement; leaf kernels in
   /// gather and push-pull); the point evaluation's are raysCast() minus their sum.
   std::uint64_t raysRefine = 0;
@@ -115,21 +105,6 @@ public:
   virtual ~RadiosityProgress() = default;
   /// Fraction in [0, 1]; return false to abort.
   virtual bool report(double fraction) = 0;
-};
-
-/// What the outputs read, for HierarchicalRadiosity::prepareEvaluation.
-struct EvaluationPlan
-{
-  bool atPoints = true;      ///< values at points (final gathers); false: the leaves' own
-  bool hornNormals = false;  ///< posts' normals as Horn's (r.slope.aspect), else area-weighted
-  const WorkSplit* split = nullptr; ///< processes sharing the work (MPI ranks); null: alone
-  bool postLattice = true;   ///< at points on one terrain, a lattice of posts gathered first
-};
-
-struct EvaluationStatistics
-{
-  double latticeSeconds = 0.0; ///< the lattice of posts gathered first
-  std::uint64_t latticeRays = 0;
 };
 
 class HierarchicalRadiosity
@@ -161,11 +136,6 @@ public:
   /// hierarchy as it was built (the elements and links of an earlier solve dropped), so
   /// that its values are those of a new solver with the same sources, bit for bit.
   bool solve(RadiosityProgress* progress = nullptr);
-  /// Everything the point values need once the hierarchy is solved, in the engine's
-  /// order (docs/architecture.md): the posts' horizons and skies, the suns they prove,
-  /// the leaves' own gather, the lattice of posts. With plan.split each process
-  /// computes its share and receives the others'; every process must then call it.
-  EvaluationStatistics prepareEvaluation(const EvaluationPlan& plan);
 
   /// Whether this solver's hierarchy is the one `scene` and `options` would build: the
   /// same shape (SceneGeometry::sameShape), materials and options. After clearSources it
@@ -173,10 +143,11 @@ public:
   bool serves(const RadiosityScene& scene, const RadiosityOptions& options) const;
 
   const RadiosityStatistics& statistics() const { return this->Stats; }
+  const RadiosityOptions& options() const { return this->Options; }
   /// The scene's rays and horizons, to hand to the next solve over the same shape.
   const std::shared_ptr<SceneGeometry>& geometry() const { return this->Geometry; }
   /// Rays this solver cast since the last solve began: the solve's and those of later
-  /// point evaluations.
+  /// point evaluations (PointEvaluator).
   std::uint64_t raysCast() const;
   std::size_t degeneratePolygons() const { return this->Degenerate; }
   /// Root element of each input polygon (null for degenerate ones).
@@ -199,61 +170,26 @@ public:
   const ElementStore& elements() const { return *this->Store; }
   const Cluster* root() const { return this->RootCluster; }
 
-  /// Irradiance by light category at a point of a leaf surface, every link that reaches
-  /// the leaf (at any level) re-evaluated at that point: exact form factors and
-  /// visibility sampled from the point. This is what per-vertex outputs use, so
-  /// values at vertices are not smeared over the elements around them.
-  /// The sky view factor needs a sky (it is 0 without one).
-  PointIrradiance irradianceAt(const PolygonElement& leaf, const Vec3& point) const;
-  /// The same with another unit normal at the point (e.g. a terrain post's, averaged over
-  /// the cells around it), still through the links that reach `leaf`.
-  PointIrradiance irradianceAt(const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const;
-  /// The same with the centre the point is moved toward (two ray offsets) given: for a
-  /// vertex of a polygonal surface, the area-weighted centroid of the cells around it
-  /// that share its orientation (the limit of the value from inside that surface,
-  /// whatever leaf holds the point; the accuracy report's reference takes the same).
-  /// The others move toward their leaf's centre.
-  PointIrradiance irradianceAt(
-    const PolygonElement& leaf, const Vec3& point, const Vec3& normal, const Vec3& toward) const;
-  /// Direct sunlight at a point with a unit normal: normal irradiance x cosine, 0 where
-  /// the point is shadowed (one ray per sun); zero without a sun. With `sunlitHours`,
-  /// also the durations of the suns that reach the point.
-  Spectrum directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours = nullptr) const;
-  /// Many points at once, in parallel, each moved toward its own centre (see above).
-  void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
-    const std::vector<Vec3>& normals, const std::vector<Vec3>& towards, std::vector<PointIrradiance>& results) const;
+  /// Every sun added (what points receive) and the hierarchy's: those, or them merged
+  /// (mergeSuns) beyond Tuning::maximumSolveSuns.
+  const std::vector<HElement*>& suns() const { return this->PointSuns; }
+  const std::vector<HElement*>& hierarchySuns() const { return this->Suns; }
+  const SkyHierarchy* sky() const { return this->Sky; }
+  /// Whether the sky hidden from a point comes from its horizons: skyFromHorizons in a
+  /// scene of terrains facing up and nothing else; and the terrain when it is alone.
+  bool skyFromHorizons() const { return this->HeightField; }
+  const TerrainGrid* heightFieldGrid() const { return this->HeightFieldGrid; }
+  /// The terrain is a window of a grid whose far terrain is given (one MPI piece).
+  bool isWindow() const { return this->Window; }
+  /// The largest radiosity of a leaf after the last solve (0: no surface sends light).
+  double largestRadiosity() const { return this->LargestRadiosity; }
+  /// Points and terrain posts the outputs may evaluate (a window: the whole grid's).
+  std::size_t pointCount() const { return this->PointCount; }
+  /// The leaf surfaces of the solution, whose values point evaluation may replace by
+  /// what it gathers at them (PointEvaluator).
+  std::vector<PolygonElement*> surfaceLeaves();
 
 private:
-  // The phases of prepareEvaluation, in its order.
-  /// The horizons of every post of the one height-field terrain under a sky (HorizonMap)
-  /// and each post's sky (PostSky) at the normals the outputs use.
-  void findPostHorizons(bool hornNormals);
-  /// The suns each post's horizons prove seen or hidden (PostSunlight); direct sun casts
-  /// rays only for the rest. Builds the map from Tuning::sunsForHorizonMap suns on.
-  void findSunHorizons();
-  /// What every leaf receives from the sky and from surfaces, gathered from the leaf
-  /// (LeafLight); terrain leaves only when `terrains` and no post reads its own sky.
-  void gatherLeaves(bool terrains);
-  /// A lattice of the terrain's posts gathered first (PostLattice), so that the others
-  /// read from it or take their ray count from its spread.
-  void gatherPostLattice(const TerrainPatch& root, bool hornNormals);
-  /// Whether points take a final gather: rays to cast and something for them to see (a
-  /// sky, or surfaces that send light).
-  bool gathersAtPoints() const;
-  /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
-  /// leaf) unless that sees the back of a surface, then the most open of four points two
-  /// ray offsets from it diagonally in its plane, if clearly more open (the reference's
-  /// rule, Testing/Reference): a post on the line of a house's wall is judged from
-  /// outside the house, not from its dark inside.
-  Vec3 openSideOf(const Vec3& point, const Vec3& inside, const Vec3& normal, std::uint64_t seed) const;
-  // The lattice's posts of one pass this process gathers (its share where the work is
-  // split).
-  void gatherLatticePosts(const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const;
-  /// Post (i, j), between gathered lattice posts that agree on the radiosity of the
-  /// terrain they see, takes its light from surfaces from them and its sky from its
-  /// horizons, without a gather: true, with `result` (its sun already in it) filled.
-  bool readFromLattice(const HorizonMap::Post& post, const Vec3& normal, int i, int j,
-    const PostLattice::Around& around, PointIrradiance& result) const;
   /// Refines pending links; returns how many were split.
   std::size_t refine(std::vector<std::pair<HElement*, Link>>& pending, bool evaluated);
   std::size_t splitShadowedLeaves();
@@ -277,12 +213,6 @@ private:
   OracleSettings oracleSettings() const;
   /// The hierarchy as it was built, without a solution: what every solve starts from.
   void restart();
-  /// The sky's horizons before findPostHorizons: those the rays find (none without a
-  /// sky or outside a height field).
-  void resetHorizons();
-  /// Drops the suns' bearings on the horizons' map (directSunAt casts every ray again).
-  void forgetMappedSuns();
-  bool wantsDenseHorizons() const; // for the suns; HeightFieldGrid must be set
 
   RadiosityOptions Options;
   /// The surfaces and clusters; its first InitialElements are the hierarchy as built.
@@ -296,29 +226,9 @@ private:
   bool Solved = false; // a solve has run since the solver was built
   std::shared_ptr<SceneGeometry> Geometry;
   const Visibility* Rays = nullptr; // the geometry's: the hierarchy's
-  const Visibility* PointRays = nullptr; // and the points' (SceneGeometry::pointRays), one count with Rays
   std::uint64_t RaysBefore = 0;     // what the geometry's rays had cast before this solver
-  std::unique_ptr<FinalGather> Gather;
-  std::unique_ptr<OpenSky> SkyAtPoints;
-  std::unique_ptr<HorizonSky> Horizons;
   bool HeightField = false; // terrains facing up and nothing else: horizons hold (checked only when asked for)
   const TerrainGrid* HeightFieldGrid = nullptr; // the terrain, when HeightField and alone
-  const HorizonMap* PostHorizons = nullptr;      // its posts' horizons (findPostHorizons), the geometry's
-  const HorizonMap* SunHorizons = nullptr;       // the same map, for direct sun (findSunHorizons)
-  const WorkSplit* Split = nullptr;              // the processes sharing the work, during prepareEvaluation
-  int PostsHalo = -1;                            // HeldPosts::haloFor the detail distance, with a split
-  struct MappedSun // each of PointSuns on that map
-  {
-    HorizonMap::Sight sight;
-    Vec3 direction;
-    Spectrum flux;
-    double duration;
-  };
-  std::vector<MappedSun> MappedSuns;
-  std::unique_ptr<PostSky> PostSkies;            // and the sky each of them receives
-  std::unique_ptr<PostSunlight> PostSuns;        // and the suns they prove seen or hidden (findSunHorizons)
-  std::unique_ptr<PostLattice> Lattice;          // its posts gathered first (gatherPostLattice)
-  std::unique_ptr<LeafLight> Leaves;             // what leaves receive, gathered (gatherLeaves)
   std::vector<PolygonElement*> Roots;
   std::vector<TerrainPatch*> TerrainRoots;
   std::vector<const TerrainGrid*> PostGrids;    // the scene's terrains: what outputs read

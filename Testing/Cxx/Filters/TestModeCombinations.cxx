@@ -93,11 +93,8 @@ public:
     scene.AddDataSet(terrain->GetOutput(), reflectance, nullptr, nullptr, true);
     scene.AddLight(sun->GetOutput());
     scene.AddLight(sky->GetOutputDataObject(0));
-    std::vector<terralux_reference::ReferenceSun> suns;
-    for (const auto& s : scene.Suns)
-      suns.push_back({ glm::normalize(s.direction), s.irradiance[0] });
     const terralux_reference::ReferenceScene rays(scene.Scene);
-    const terralux_reference::PathTracer tracer(rays, scene.Sky.get(), suns);
+    const terralux_reference::PathTracer tracer(rays, scene.Sky.get(), terralux_reference::referenceSuns(scene.Suns));
     const terralux::TerrainGrid& grid = *scene.Terrains.front();
     std::vector<terralux::Vec3> points, normals;
     for (int j = 0; j < grid.postsY(); ++j)

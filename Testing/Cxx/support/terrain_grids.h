@@ -4,6 +4,7 @@
 #include "hierarchy/radiosity_types.h"
 #include "terrain/terrain_grid.h"
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -30,6 +31,20 @@ inline std::unique_ptr<terralux::TerrainGrid> makeGrid(int nx, int ny, double sp
   grid->setUniformMaterial(terralux::uniformSpectrum(0.2), terralux::uniformSpectrum(0.0));
   return grid;
 }
+
+/// Rolling hills: crossed waves of `height` metres over `lengthX` x `lengthY` (metres
+/// per radian) plus a diagonal ridge of `ridge` metres every `ridgeLength` radians.
+struct Hills
+{
+  double height, lengthX, lengthY, ridge, ridgeLength;
+  double operator()(double x, double y) const
+  {
+    return this->height * std::sin(x / this->lengthX) * std::cos(y / this->lengthY) +
+      this->ridge * std::sin((x + 2.0 * y) / this->ridgeLength);
+  }
+};
+/// The hills the engine's larger tests share: 260 m of relief over kilometres.
+inline constexpr Hills rollingHills{ 200.0, 900.0, 1300.0, 60.0, 500.0 };
 
 /// Posts [i0, i0 + nx) x [j0, j0 + ny) of `grid`, bit for bit, with its cells' validity
 /// and its material; its origin kept (a window of it, as an MPI process holds).

@@ -10,6 +10,7 @@
 #include "visibility/sampling.h"
 #include "sky/sky_hierarchy.h"
 #include "evaluation/sky_importance.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "visibility/visibility.h"
 
@@ -29,11 +30,12 @@ TEST(FinalGather, ClosedBoxReadsItsRadiosityAtCornersEdgesAndFaces)
   addInwardCube(scene, 1.0, 0.5, 100.0);
   HierarchicalRadiosity solver(scene, RadiosityOptions{});
   ASSERT_TRUE(solver.solve());
+  const PointEvaluator points(solver, EvaluationPlan{});
   const PolygonElement& floor = *solver.polygonRoots()[0];
   for (const Vec3& p : { Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0.5, 0, 0), Vec3(0.5, 0.5, 0), Vec3(0.1, 0.9, 0) })
   {
     const PolygonElement& leaf = *floor.leafHolding(p);
-    const PointIrradiance e = solver.irradianceAt(leaf, p);
+    const PointIrradiance e = points.irradianceAt(leaf, p);
     EXPECT_NEAR(e.irradiance[ReflectedLight][0], 200.0, 2.0) << p.x << " " << p.y;
   }
 }
@@ -52,8 +54,9 @@ TEST(FinalGather, OpenGroundTakesTheFewestRaysAndThePitMore)
   const std::vector<PolygonElement*> none;
   const std::vector<TerrainPatch*> noTerrain;
   const std::vector<HElement*> noSun;
-  FinalGather gather(rays, none, noTerrain, noSun);
-  gather.setSky(&open);
+  GatherInputs inputs{ rays, none, noTerrain, noSun };
+  inputs.sky = &open;
+  const FinalGather gather(inputs);
   const GatherBudget budget;
   const GatheredLight high = gather.irradianceAt(Vec3(5, 5, 0.0), Vec3(0, 0, 1), budget, 1, 0.0);
   EXPECT_EQ(high.rays, 2 * budget.pilot + budget.skyMinimum + budget.minimum);
@@ -78,12 +81,13 @@ TEST(FinalGather, PointsOfOpenGroundTakeTheFewestRays)
   HierarchicalRadiosity solver(scene, RadiosityOptions{});
   solver.setSky(&sky);
   ASSERT_TRUE(solver.solve());
+  const PointEvaluator points(solver, EvaluationPlan{});
   const PolygonElement& ground = *solver.polygonRoots()[0];
   const Vec3 p(1.0, 2.0, 0.0);
   const std::uint64_t before = solver.raysCast();
-  const PointIrradiance open = solver.irradianceAt(*ground.leafHolding(p), p);
+  const PointIrradiance open = points.irradianceAt(*ground.leafHolding(p), p);
   const GatherBudget defaults;
-  // Besides, 36 probes of the point's open side (HierarchicalRadiosity::openSideOf).
+  // Besides, 36 probes of the point's open side (PointEvaluator::openSideOf).
   EXPECT_EQ(solver.raysCast() - before, 2u * defaults.pilot + defaults.skyMinimum + defaults.minimum + 36u);
   EXPECT_NEAR(open.irradiance[SkyLight][0], 100.0, 0.1);
   // Beside a wall the leaf is not open: a pilot and more rays.
@@ -94,8 +98,9 @@ TEST(FinalGather, PointsOfOpenGroundTakeTheFewestRays)
   ASSERT_TRUE(beside.solve());
   const Vec3 q(0.0, 0.5, 0.0);
   const PolygonElement& floor = *beside.polygonRoots()[0];
+  const PointEvaluator besidePoints(beside, EvaluationPlan{});
   const std::uint64_t start = beside.raysCast();
-  beside.irradianceAt(*floor.leafHolding(q), q);
+  besidePoints.irradianceAt(*floor.leafHolding(q), q);
   EXPECT_GT(beside.raysCast() - start, 2u * (2u * defaults.pilot + defaults.skyMinimum + defaults.minimum));
 }
 
@@ -110,12 +115,13 @@ TEST(FinalGather, AWallHidingTheBrightSkyNearTheSunIsFound)
   const std::vector<PolygonElement*> none;
   const std::vector<TerrainPatch*> noTerrain;
   const std::vector<HElement*> noSun;
-  FinalGather gather(rays, none, noTerrain, noSun);
   for (double azimuth : { 0.0, pi })
   {
     const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(70.0 * degree, azimuth)), 100.0, 7);
     const OpenSky open(sky);
-    gather.setSky(&open);
+    GatherInputs inputs{ rays, none, noTerrain, noSun };
+    inputs.sky = &open;
+    const FinalGather gather(inputs);
     const Vec3 n(0, 0, 1);
     for (const Vec3& p : { Vec3(0.0, 2.0, 0.0), Vec3(4.0, 4.0, 0.0), Vec3(-3.0, 1.0, 0.0) })
     {
@@ -170,7 +176,7 @@ TEST(FinalGather, LeavesGatheredFirstBringTheBoxOneBounceCloser)
   HierarchicalRadiosity solver(scene, options);
   ASSERT_TRUE(solver.solve());
   // Points of the floor's triangles (the first 128 polygons): corners, edges, inside.
-  auto meanError = [&]() {
+  auto meanError = [&](const PointEvaluator& points) {
     double sum = 0.0;
     int count = 0;
     for (std::size_t k = 0; k < 2 * cells * cells; k += 7)
@@ -178,16 +184,17 @@ TEST(FinalGather, LeavesGatheredFirstBringTheBoxOneBounceCloser)
       const PolygonElement& cell = *solver.polygonRoots()[k];
       for (const Vec3& p : { cell.centre(), scene.points[scene.polygons[k].vertices[0]] })
       {
-        const double e = solver.irradianceAt(*cell.leafHolding(p), p).irradiance[ReflectedLight][0] - 200.0;
+        const double e = points.irradianceAt(*cell.leafHolding(p), p).irradiance[ReflectedLight][0] - 200.0;
         sum += e;
         ++count;
       }
     }
     return sum / count;
   };
-  const double fromHierarchy = meanError();
-  solver.prepareEvaluation(EvaluationPlan{}); // the leaves gathered
-  const double fromLeaves = meanError();
+  EvaluationPlan hierarchyValues;
+  hierarchyValues.leavesGathered = false;
+  const double fromHierarchy = meanError(PointEvaluator(solver, hierarchyValues));
+  const double fromLeaves = meanError(PointEvaluator(solver, EvaluationPlan{}));
   std::printf("box: mean error %.3f W/m^2 from the hierarchy, %.3f from the leaves\n", fromHierarchy, fromLeaves);
   // (The hierarchy's leaves hold 3.6 % too much here, 0.25 % at tolerance 1e-2: its
   // links overcount the exchange between small triangles; found, not yet fixed.)

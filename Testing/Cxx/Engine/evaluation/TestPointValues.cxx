@@ -7,6 +7,7 @@
 #include "evaluation/point_values.h"
 #include "radiosity_scenes.h"
 #include "sky/sky_hierarchy.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "terrain_grids.h"
 #include "hierarchy/terrain_patch.h"
@@ -47,11 +48,13 @@ std::unique_ptr<HierarchicalRadiosity> solvedUnderTheSun(const RadiosityScene& s
 }
 
 std::vector<PointValues> pointValues(
-  const HierarchicalRadiosity& solver, const RadiosityScene& scene, bool oneNormal, bool atPoints, std::vector<bool>& reached)
+  HierarchicalRadiosity& solver, const RadiosityScene& scene, bool oneNormal, bool atPoints, std::vector<bool>& reached)
 {
   PointEvaluation how;
   how.atPoints = atPoints;
-  return polygonPointValues(solver, scene, 0, 0, scene.points.size(), oneNormal, how, reached);
+  EvaluationPlan plan;
+  plan.atPoints = atPoints;
+  return polygonPointValues(PointEvaluator(solver, plan), scene, 0, 0, scene.points.size(), oneNormal, how, reached);
 }
 } // namespace
 
@@ -133,6 +136,7 @@ TEST(PointValues, TerrainPostsInAWindow)
   solver.addSun(towardSun, uniformSpectrum(sunIrradiance));
   ASSERT_TRUE(solver.solve());
   const TerrainPatch& root = *solver.terrainRoots()[0];
+  const PointEvaluator points(solver, EvaluationPlan{});
   for (const bool atPoints : { true, false })
   {
     PointEvaluation how;
@@ -140,7 +144,7 @@ TEST(PointValues, TerrainPostsInAWindow)
     const int window[4] = { 2, 5, -3, 3 }; // clipped to the grid: j 0 to 3
     std::vector<int> seen(9 * 7, 0);
     std::vector<double> sun(9 * 7, 0.0);
-    terrainPostValues(solver, root, window, how, [&](std::size_t post, const PointValues& v) {
+    terrainPostValues(points, root, window, how, [&](std::size_t post, const PointValues& v) {
       ++seen[post]; // distinct posts only: no race
       sun[post] = v.irradiance[SunLight][0];
     });
@@ -159,11 +163,12 @@ TEST(PointValues, DirectSunAtPostsCastsRaysOnlyWhereHorizonsCannotTell)
 {
   // Hills under 60 suns all round the sky, an hour each: the values and hours at
   // every post are those of one ray per sun, bit for bit, with far fewer rays.
-  const auto grid = makeGrid(97, 97, 30.0, [](double x, double y) {
-    return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0);
-  });
-  auto underSuns = [&]() {
-    auto solver = std::make_unique<HierarchicalRadiosity>(sceneOf(*grid), RadiosityOptions{});
+  const auto grid = makeGrid(97, 97, 30.0, rollingHills);
+  // Without horizons (skyFromHorizons off), every sun takes its ray.
+  auto underSuns = [&](bool horizons) {
+    RadiosityOptions options;
+    options.skyFromHorizons = horizons;
+    auto solver = std::make_unique<HierarchicalRadiosity>(sceneOf(*grid), options);
     for (int s = 0; s < 60; ++s)
     {
       const double azimuth = 0.37 * s, elevation = (2.0 + 68.0 * ((s * 7) % 60) / 59.0) * degree;
@@ -174,11 +179,12 @@ TEST(PointValues, DirectSunAtPostsCastsRaysOnlyWhereHorizonsCannotTell)
     EXPECT_TRUE(solver->solve());
     return solver;
   };
-  const auto byRays = underSuns(), byHorizons = underSuns();
+  const auto rayTraced = underSuns(false), mapped = underSuns(true);
   EvaluationPlan averaged; // the suns' proofs alone: no post's sky, no lattice
   averaged.atPoints = false;
-  byHorizons->prepareEvaluation(averaged);
-  const std::uint64_t raysBefore[2] = { byRays->raysCast(), byHorizons->raysCast() };
+  auto byRays = std::make_unique<PointEvaluator>(*rayTraced, averaged);
+  auto byHorizons = std::make_unique<PointEvaluator>(*mapped, averaged);
+  const std::uint64_t raysBefore[2] = { rayTraced->raysCast(), mapped->raysCast() };
   int lit = 0;
   for (int j = 0; j < 97; ++j)
     for (int i = 0; i < 97; ++i)
@@ -192,15 +198,18 @@ TEST(PointValues, DirectSunAtPostsCastsRaysOnlyWhereHorizonsCannotTell)
         lit += hours[0] > 0.0;
       }
   EXPECT_GT(lit, 97 * 97);
-  const std::uint64_t rays = byRays->raysCast() - raysBefore[0], fewer = byHorizons->raysCast() - raysBefore[1];
+  const std::uint64_t rays = rayTraced->raysCast() - raysBefore[0], fewer = mapped->raysCast() - raysBefore[1];
   EXPECT_LT(fewer, rays / 2) << fewer << " rays against " << rays;
-  // A sun added afterwards has no bearing on the map: every sun takes its ray again.
-  for (auto* solver : { byRays.get(), byHorizons.get() })
+  // A sun added afterwards: new evaluators map it too, and still agree.
+  byRays.reset();
+  byHorizons.reset();
+  for (auto* solver : { rayTraced.get(), mapped.get() })
+  {
     solver->addSun(Vec3(0.3, 0.2, 0.9), uniformSpectrum(500.0), 1.0);
-  const std::uint64_t before = byHorizons->raysCast();
-  EXPECT_EQ(byRays->directSunAt(grid->post(40, 40), grid->postNormal(40, 40)),
-    byHorizons->directSunAt(grid->post(40, 40), grid->postNormal(40, 40)));
-  EXPECT_GE(byHorizons->raysCast() - before, 50u);
+    EXPECT_TRUE(solver->solve());
+  }
+  EXPECT_EQ(PointEvaluator(*rayTraced, averaged).directSunAt(grid->post(40, 40), grid->postNormal(40, 40)),
+    PointEvaluator(*mapped, averaged).directSunAt(grid->post(40, 40), grid->postNormal(40, 40)));
 }
 
 TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
@@ -211,8 +220,7 @@ TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
   // a fraction of the rays; where it is more than a small share, or where ripples (10 m
   // high, 60-80 m long) make the lattice's posts disagree, posts still gather.
   const auto grid = makeGrid(97, 97, 30.0, [](double x, double y) {
-    return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0) +
-      10.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
+    return rollingHills(x, y) + 10.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
   });
   grid->setUniformMaterial(uniformSpectrum(0.2), Spectrum{});
   const Direction sun = directionFromZenithAzimuth(55.0 * degree, 2.0);
@@ -224,10 +232,11 @@ TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
     EXPECT_TRUE(solver->solve());
     EvaluationPlan plan;
     plan.postLattice = lattice;
-    solver->prepareEvaluation(plan);
-    return solver;
+    auto points = std::make_unique<PointEvaluator>(*solver, plan);
+    return std::make_pair(std::move(solver), std::move(points));
   };
-  const auto reading = lit(true), gathering = lit(false);
+  const auto readingLit = lit(true), gatheringLit = lit(false);
+  const HierarchicalRadiosity *reading = readingLit.first.get(), *gathering = gatheringLit.first.get();
   const TerrainPatch& root = *reading->terrainRoots()[0];
   const double gatherError = RadiosityOptions{}.gatherError;
   int read = 0, gathered = 0;
@@ -239,9 +248,9 @@ TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
       const TerrainPatch* leaf = root.mostLitLeafAt(i, j);
       ASSERT_NE(leaf, nullptr);
       const std::uint64_t before[2] = { reading->raysCast(), gathering->raysCast() };
-      const PointIrradiance a = reading->irradianceAt(*leaf, grid->post(i, j), grid->postNormal(i, j));
+      const PointIrradiance a = readingLit.second->irradianceAt(*leaf, grid->post(i, j), grid->postNormal(i, j));
       const PointIrradiance b =
-        gathering->irradianceAt(*gathering->terrainRoots()[0]->mostLitLeafAt(i, j), grid->post(i, j), grid->postNormal(i, j));
+        gatheringLit.second->irradianceAt(*gathering->terrainRoots()[0]->mostLitLeafAt(i, j), grid->post(i, j), grid->postNormal(i, j));
       const std::uint64_t spent = reading->raysCast() - before[0];
       rays[0] += spent;
       rays[1] += gathering->raysCast() - before[1];

@@ -3,6 +3,7 @@
 #include "terrain_patch_checks.h"
 #include "sky/sky_hierarchy.h"
 #include "base/angles.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "hierarchy/terrain_edges.h"
 #include "terrain_grids.h"
@@ -34,15 +35,16 @@ RadiosityOptions terrainOptions(double tolerance)
 
 // Sun and uniform sky at every post of `grid` selected by `where`, through irradianceAt.
 template <typename Check>
-void forEachPost(const HierarchicalRadiosity& solver, const TerrainGrid& grid, Check check)
+void forEachPost(HierarchicalRadiosity& solver, const TerrainGrid& grid, Check check)
 {
+  const PointEvaluator points(solver, EvaluationPlan{});
   const TerrainPatch* root = solver.terrainRoots()[0];
   for (int j = 0; j < grid.postsY(); ++j)
     for (int i = 0; i < grid.postsX(); ++i)
     {
       const TerrainPatch* leaf = root->leafHolding(i, j);
       ASSERT_NE(leaf, nullptr) << i << ", " << j;
-      check(i, j, solver.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
+      check(i, j, points.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
     }
 }
 } // namespace
@@ -216,16 +218,19 @@ TEST(TerrainPatch, VerticalStepCastsItsShadowAndNoLightLeaks)
   solver.addSun(sun, uniformSpectrum(1000.0));
   ASSERT_TRUE(solver.solve());
   const double lit = 1000.0 * std::sin(60 * degree);
+  {
+    const PointEvaluator points(solver, EvaluationPlan{});
   for (int j = 1; j < 8; ++j) // away from the open ends of the wall
   {
     for (int i = 0; i <= 9; ++i)
     {
       const double x = xOf(i);
-      const Spectrum e = solver.directSunAt(grid->post(i, j), grid->postNormal(i, j));
+      const Spectrum e = points.directSunAt(grid->post(i, j), grid->postNormal(i, j));
       EXPECT_NEAR(e[0], x < 42.3 ? lit : 0.0, 1e-6) << "x " << x;
     }
     for (int i = 12; i < 21; ++i) // the plateau is lit
-      EXPECT_NEAR(solver.directSunAt(grid->post(i, j), grid->postNormal(i, j))[0], lit, 1e-6);
+      EXPECT_NEAR(points.directSunAt(grid->post(i, j), grid->postNormal(i, j))[0], lit, 1e-6);
+  }
   }
   // Uneven refinement along the shadow, yet restricted: no leaf has a neighbour two
   // levels finer (more than one T-vertex on an edge).
@@ -260,15 +265,16 @@ TEST(TerrainPatch, LightPassesThroughAHoleOnlyWhereItIs)
   HierarchicalRadiosity solver(scene, terrainOptions(1e-3));
   solver.addSun(Vec3(0.0, 0.0, 1.0), uniformSpectrum(1000.0));
   ASSERT_TRUE(solver.solve());
+  const PointEvaluator points(solver, EvaluationPlan{});
   for (double x = 5.0; x < 160.0; x += 10.0)
     for (double y = 5.0; y < 160.0; y += 10.0)
     {
       const bool below = x > 60.0 && x < 100.0 && y > 60.0 && y < 100.0;
-      EXPECT_NEAR(solver.directSunAt(Vec3(x, y, 0.0), Vec3(0, 0, 1))[0], below ? 1000.0 : 0.0, 1e-6) << x << ", " << y;
+      EXPECT_NEAR(points.directSunAt(Vec3(x, y, 0.0), Vec3(0, 0, 1))[0], below ? 1000.0 : 0.0, 1e-6) << x << ", " << y;
     }
   // The terrain itself is lit everywhere it exists, and nothing comes from the hole.
   for (int j = 0; j < 17; ++j)
     for (int i = 0; i < 17; ++i)
       if (grid->postUsed(i, j))
-        EXPECT_NEAR(solver.directSunAt(grid->post(i, j), grid->postNormal(i, j))[0], 1000.0, 1e-6);
+        EXPECT_NEAR(points.directSunAt(grid->post(i, j), grid->postNormal(i, j))[0], 1000.0, 1e-6);
 }

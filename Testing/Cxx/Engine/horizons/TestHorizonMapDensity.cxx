@@ -110,7 +110,7 @@ TEST_P(HorizonMapDensity, WhatItProvesOpenOrHiddenRaysFindSo)
   // that many posts lie near its edge, directions skewed toward the horizon: 69 % of the
   // open ones need no ray (a day's suns over the 1025^2 fractal DEM: 87 %).
   const Proven share = checkProvenOpen(
-    [](double x, double y) { return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0); },
+    rollingHills,
     30.0, GetParam());
   EXPECT_GT(share.open, 0.5) << "share " << share.open;
   EXPECT_GT(share.shadowed, 0.3) << "share " << share.shadowed;

@@ -22,8 +22,7 @@ namespace
 {
 double hills(double x, double y)
 {
-  return 60.0 * std::sin(x / 90.0) * std::cos(y / 120.0) + 25.0 * std::sin((x + 2.0 * y) / 70.0) +
-    (x > 900.0 ? 80.0 : 0.0); // and a cliff: long shadows
+  return Hills{ 60.0, 90.0, 120.0, 25.0, 70.0 }(x, y) + (x > 900.0 ? 80.0 : 0.0); // and a cliff: long shadows
 }
 
 Vec3 towardSun(double azimuth, double elevation)

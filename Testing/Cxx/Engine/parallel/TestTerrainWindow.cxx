@@ -8,6 +8,7 @@
 #include "terrain/far_terrain.h"
 #include "evaluation/point_values.h"
 #include "sky/sky_hierarchy.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "terrain_grids.h"
 #include "hierarchy/terrain_patch.h"
@@ -67,16 +68,17 @@ TEST(TerrainWindow, APiecesPostsTakeTheWholeGridsValuesFromAWindowAndTheFarTerra
     solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
     solver->setSky(&sky);
     EXPECT_TRUE(solver->solve());
-    solver->prepareEvaluation(EvaluationPlan{});
-    return solver;
+    auto points = std::make_unique<PointEvaluator>(*solver, EvaluationPlan{});
+    return std::make_pair(std::move(solver), std::move(points));
   };
   // The piece: posts [80, 112] x [40, 80]. Its window reaches three detail distances
   // (45 posts) and the lattice's 8 posts plus 2 beyond it, from a multiple of 8.
   const int piece[4] = { 80, 112, 40, 80 };
   const int i0 = 24, j0 = 0, i1 = 168, j1 = 136;
   const auto window = windowOf(*grid, i0, j0, i1 - i0 + 1, j1 - j0 + 1);
-  const auto whole = solve(*grid, 0, 0);
-  const auto part = solve(*window, i0, j0);
+  const auto wholeLit = solve(*grid, 0, 0);
+  const auto partLit = solve(*window, i0, j0);
+  const HierarchicalRadiosity *whole = wholeLit.first.get(), *part = partLit.first.get();
   EXPECT_EQ(part->hierarchyTerrain()->grid().postsX(), 49);
   // One hierarchy, on the far terrain, whichever grid the posts are in.
   EXPECT_EQ(part->statistics().elements, whole->statistics().elements);
@@ -91,13 +93,14 @@ TEST(TerrainWindow, APiecesPostsTakeTheWholeGridsValuesFromAWindowAndTheFarTerra
     constexpr std::size_t components = PointValues::flatComponents;
     for (int k = 0; k < 2; ++k)
     {
-      const HierarchicalRadiosity& solver = k == 0 ? *whole : *part;
+      const PointEvaluator& points = *(k == 0 ? wholeLit : partLit).second;
+      const HierarchicalRadiosity& solver = points.solver();
       const int di = k == 0 ? 0 : i0, dj = k == 0 ? 0 : j0;
       const int posts[4] = { piece[0] - di, piece[1] - di, piece[2] - dj, piece[3] - dj };
       const int nx = solver.postGrid(*solver.terrainRoots()[0]).postsX();
       global[k].assign(grid->postsX() * grid->postsY(), std::nan(""));
       flat[k].assign(global[k].size() * components, std::nan(""));
-      terrainPostValues(solver, *solver.terrainRoots()[0], posts, how, [&](std::size_t post, const PointValues& v) {
+      terrainPostValues(points, *solver.terrainRoots()[0], posts, how, [&](std::size_t post, const PointValues& v) {
         const std::size_t i = post % nx + di, j = post / nx + dj;
         global[k][j * grid->postsX() + i] = v.globalIrradiance()[0];
         v.flatten(&flat[k][(j * grid->postsX() + i) * components]);

@@ -175,10 +175,7 @@ void runOnBandsAndBlocks(
     }
 }
 
-double hills(double x, double y)
-{
-  return 60.0 * std::sin(x / 40.0) * std::cos(y / 55.0) + 25.0 * std::sin((x + 2.0 * y) / 23.0);
-}
+constexpr Hills hills{ 60.0, 40.0, 55.0, 25.0, 23.0 };
 } // namespace
 
 TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)

@@ -10,6 +10,7 @@
 #include "radiosity_scenes.h"
 #include "sky/sky_hierarchy.h"
 #include "emitters/sky_patch_element.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 
 #include <gtest/gtest.h>
@@ -191,7 +192,7 @@ TEST(Solver, SkyViewFactorAtTheBottomOfAPit)
     while (leaf->hasChildren())
       leaf = static_cast<const PolygonElement*>(const_cast<PolygonElement*>(leaf)->children()[0]);
     ASSERT_LT(glm::length(leaf->corners()[0] - centre), 1e-12);
-    const PointIrradiance atCentre = solver.irradianceAt(*leaf, centre);
+    const PointIrradiance atCentre = PointEvaluator(solver, EvaluationPlan{}).irradianceAt(*leaf, centre);
     const double expected = std::pow(std::sin(std::atan(1.0 / depth)), 2);
     // Visibility sampled from one point (4096 gather rays): about 1 % noise.
     EXPECT_NEAR(atCentre.irradiance[SkyLight][0] / expected, 1.0, 0.02) << depth;

@@ -7,6 +7,7 @@
 #include "hierarchy/polygon_element.h"
 #include "radiosity_scenes.h"
 #include "sky/sky_hierarchy.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "terrain_grids.h"
 #include "hierarchy/terrain_patch.h"
@@ -62,13 +63,13 @@ void addPoint(Values& values, const PointIrradiance& at)
 Values solveTerrain(HierarchicalRadiosity& solver, const TerrainGrid& grid)
 {
   EXPECT_TRUE(solver.solve());
-  solver.prepareEvaluation(EvaluationPlan{});
+  const PointEvaluator points(solver, EvaluationPlan{});
   const TerrainPatch& root = *solver.terrainRoots()[0];
   Values values;
   for (int j = 1; j < grid.postsY(); j += 4)
     for (int i = 1; i < grid.postsX(); i += 4)
       if (const TerrainPatch* leaf = root.mostLitLeafAt(i, j))
-        addPoint(values, solver.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
+        addPoint(values, points.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
   values.elements = solver.statistics().elements;
   values.links = solver.statistics().links;
   values.rays = solver.raysCast();
@@ -79,7 +80,7 @@ Values solveTerrain(HierarchicalRadiosity& solver, const TerrainGrid& grid)
 Values solvePolygons(HierarchicalRadiosity& solver)
 {
   EXPECT_TRUE(solver.solve());
-  solver.prepareEvaluation(EvaluationPlan{});
+  const PointEvaluator points(solver, EvaluationPlan{});
   Values values;
   for (const auto& element : solver.elements().all())
     for (double b : element->Radiosity)
@@ -88,7 +89,7 @@ Values solvePolygons(HierarchicalRadiosity& solver)
   for (double y = -2.0; y <= 2.0; y += 0.5)
   {
     const Vec3 point(0.3, y, 0.0);
-    addPoint(values, solver.irradianceAt(*ground.leafHolding(point), point));
+    addPoint(values, points.irradianceAt(*ground.leafHolding(point), point));
   }
   values.elements = solver.statistics().elements;
   values.links = solver.statistics().links;
@@ -175,7 +176,7 @@ TEST(SolverReuse, WithoutSourcesNothingIsLit)
   solver.clearSources();
   ASSERT_TRUE(solver.solve());
   const Vec3 point(0.3, 1.0, 0.0);
-  const PointIrradiance at = solver.irradianceAt(*solver.polygonRoots()[0]->leafHolding(point), point);
+  const PointIrradiance at = PointEvaluator(solver, EvaluationPlan{}).irradianceAt(*solver.polygonRoots()[0]->leafHolding(point), point);
   for (const Spectrum& category : at.irradiance)
     EXPECT_EQ(largestBand(category), 0.0);
   EXPECT_EQ(at.skyViewFactor, 0.0);

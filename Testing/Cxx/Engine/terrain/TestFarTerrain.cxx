@@ -8,6 +8,7 @@
 #include "evaluation/point_values.h"
 #include "radiosity_scenes.h"
 #include "sky/sky_hierarchy.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "terrain_grids.h"
 #include "hierarchy/terrain_patch.h"
@@ -24,9 +25,7 @@ namespace
 void expectEveryPostServed(bool withSky)
 {
   // Rolling hills, 97 x 97 posts 30 m apart, under a sun and a clear sky.
-  const auto grid = makeGrid(97, 97, 30.0, [](double x, double y) {
-    return 200.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 60.0 * std::sin((x + 2.0 * y) / 500.0);
-  });
+  const auto grid = makeGrid(97, 97, 30.0, rollingHills);
   grid->setUniformMaterial(uniformSpectrum(0.2), Spectrum{});
   const Direction sun = directionFromZenithAzimuth(55.0 * degree, 2.0);
   const SkyHierarchy sky(CieGeneralSky(12, sun), 120.0, 6);
@@ -41,10 +40,11 @@ void expectEveryPostServed(bool withSky)
     if (withSky)
       solver->setSky(&sky);
     EXPECT_TRUE(solver->solve());
-    solver->prepareEvaluation(EvaluationPlan{});
-    return solver;
+    auto points = std::make_unique<PointEvaluator>(*solver, EvaluationPlan{});
+    return std::make_pair(std::move(solver), std::move(points));
   };
-  const auto full = lit(1), far = lit(4);
+  const auto fullLit = lit(1), farLit = lit(4);
+  const HierarchicalRadiosity *full = fullLit.first.get(), *far = farLit.first.get();
   const TerrainPatch& root = *far->terrainRoots()[0];
   ASSERT_NE(far->hierarchyTerrain(), nullptr);
   EXPECT_EQ(full->hierarchyTerrain(), nullptr);
@@ -69,9 +69,9 @@ void expectEveryPostServed(bool withSky)
     std::vector<int> seen(97 * 97, 0);
     for (int k = 0; k < 2; ++k)
     {
-      const HierarchicalRadiosity& solver = k == 0 ? *full : *far;
+      const PointEvaluator& points = *(k == 0 ? fullLit : farLit).second;
       global[k].assign(97 * 97, std::nan(""));
-      terrainPostValues(solver, *solver.terrainRoots()[0], all, how, [&](std::size_t post, const PointValues& v) {
+      terrainPostValues(points, *points.solver().terrainRoots()[0], all, how, [&](std::size_t post, const PointValues& v) {
         seen[post] += k; // distinct posts only: no race
         global[k][post] = v.globalIrradiance()[0];
       });

@@ -6,6 +6,7 @@
 #include "sky/cie_sky.h"
 #include "visibility/scene_geometry.h"
 #include "sky/sky_hierarchy.h"
+#include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
 #include "terrain_grids.h"
 #include "hierarchy/terrain_patch.h"
@@ -20,9 +21,7 @@ namespace
 {
 std::unique_ptr<TerrainGrid> hills(double reflectance)
 {
-  auto grid = makeGrid(41, 41, 10.0, [](double x, double y) {
-    return 30.0 * std::sin(x / 40.0) * std::cos(y / 55.0) + 12.0 * std::sin((x + 2.0 * y) / 23.0);
-  });
+  auto grid = makeGrid(41, 41, 10.0, Hills{ 30.0, 40.0, 55.0, 12.0, 23.0 });
   grid->setUniformMaterial(uniformSpectrum(reflectance), uniformSpectrum(0.0));
   return grid;
 }
@@ -46,13 +45,13 @@ Solved solve(const TerrainGrid& grid, double azimuth, std::shared_ptr<SceneGeome
   result.solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
   result.solver->setSky(&sky);
   EXPECT_TRUE(result.solver->solve());
-  result.solver->prepareEvaluation(EvaluationPlan{});
+  const PointEvaluator points(*result.solver, EvaluationPlan{});
   const TerrainPatch& root = *result.solver->terrainRoots()[0];
   for (int j = 2; j < grid.postsY(); j += 5)
     for (int i = 2; i < grid.postsX(); i += 5)
     {
       const TerrainPatch* leaf = root.mostLitLeafAt(i, j);
-      result.posts.push_back(result.solver->irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
+      result.posts.push_back(points.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
     }
   return result;
 }

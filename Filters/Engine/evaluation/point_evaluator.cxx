@@ -1,6 +1,10 @@
-#include "solver/solver.h"
+#include "evaluation/point_evaluator.h"
 
 #include "evaluation/final_gather.h"
+#include "evaluation/open_sky.h"
+#include "horizons/horizon_sky.h"
+#include "visibility/scene_geometry.h"
+#include "sky/sky_hierarchy.h"
 #include "horizons/horizon_map.h"
 #include "evaluation/leaf_light.h"
 #include "emitters/external_source.h"
@@ -18,9 +22,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 
-// Point evaluation: irradiance at the points users read (terrain posts, polygon
-// vertices), from the solved hierarchy but with what varies sharply taken at the point.
 namespace terralux
 {
 namespace
@@ -39,20 +43,153 @@ double receivedBesideSurfaces(const Spectrum& sun, const PostSky::Value& sky)
 {
   return largestBand(sun) + largestBand(sky.irradiance);
 }
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 } // namespace
 
-PointIrradiance HierarchicalRadiosity::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
+PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPlan& plan)
+  : Solver(solved)
+  , Options(solved.options())
+  , Rays(solved.geometry()->hierarchyRays())
+  , PointRays(solved.geometry()->pointRays())
+  , HeightFieldGrid(solved.heightFieldGrid())
+  // A window computes all it needs itself: its horizons see its far terrain.
+  , Split(solved.isWindow() ? nullptr : plan.split)
+{
+  if (const SkyHierarchy* sky = solved.sky())
+  {
+    this->SkyAtPoints = std::make_unique<OpenSky>(*sky);
+    // Many points to evaluate: the open sky of each point's plane from a table over
+    // normals rather than one exact evaluation per point (docs/tuning.md).
+    if (this->Options.gatherSamples > 0 && solved.pointCount() > 2 * 65 * 65)
+      this->SkyAtPoints->tabulate(solved.pointCount() > Tuning::openSkyTablePoints ? 128 : 64);
+    // Until the posts' horizons are found, those the rays find.
+    if (solved.skyFromHorizons())
+      this->Horizons = std::make_unique<HorizonSky>(this->PointRays, *this->SkyAtPoints, nullptr);
+  }
+  if (plan.atPoints)
+    this->findPostHorizons(plan.hornNormals);
+  this->findSunHorizons();
+  // At points, what gather rays meet; averaged, the polygons' values themselves
+  // (terrain patches keep the hierarchy's: the fast mode of a DEM).
+  if (plan.leavesGathered)
+    this->gatherLeaves(plan.atPoints);
+  const std::vector<TerrainPatch*>& terrains = solved.terrainRoots();
+  if (plan.atPoints && plan.postLattice && terrains.size() == 1 && terrains.front())
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t raysBefore = solved.raysCast();
+    this->gatherPostLattice(*terrains.front(), plan.hornNormals);
+    this->Stats.latticeSeconds = secondsSince(start);
+    this->Stats.latticeRays = solved.raysCast() - raysBefore;
+  }
+  this->Gather = this->makeGather();
+}
+
+PointEvaluator::~PointEvaluator()
+{
+  for (const ReplacedLeaf& replaced : this->Replaced)
+  {
+    replaced.leaf->Irradiance[SkyLight] = replaced.sky;
+    replaced.leaf->Irradiance[ReflectedLight] = replaced.reflected;
+    replaced.leaf->Radiosity = replaced.radiosity;
+  }
+}
+
+std::unique_ptr<FinalGather> PointEvaluator::makeGather() const
+{
+  GatherInputs inputs{ this->PointRays, this->Solver.polygonRoots(), this->Solver.terrainRoots(),
+    this->Solver.hierarchySuns() };
+  inputs.sky = this->SkyAtPoints.get();
+  inputs.horizons = this->Horizons.get();
+  inputs.postSkies = this->PostSkies.get();
+  inputs.lattice = this->Lattice.get();
+  inputs.postSunlight = this->PostSuns.get();
+  inputs.leafLight = this->Leaves.get();
+  inputs.detailDistance = this->Options.gatherDetailDistance;
+  inputs.hierarchyTerrain = this->Solver.hierarchyTerrain();
+  return std::make_unique<FinalGather>(inputs);
+}
+
+void PointEvaluator::findPostHorizons(bool hornNormals)
+{
+  // Beyond the map's memory the posts keep the rays' horizons, slower but within the
+  // memory the rest of the solve needs. A window's map sees its far terrain beyond the
+  // detail distance, as its rays do.
+  if (!this->Horizons || !this->HeightFieldGrid || !HorizonMap::fits(*this->HeightFieldGrid))
+    return;
+  const auto start = std::chrono::steady_clock::now();
+  // The one terrain's horizons: built by the first solve over this geometry, reused by
+  // the next ones.
+  this->PostHorizons = &this->Solver.geometry()->horizons(0, this->wantsDenseHorizons(), this->Split);
+  this->Horizons = std::make_unique<HorizonSky>(this->PointRays, *this->SkyAtPoints, this->PostHorizons);
+  // With a split and a detail distance, each process holds the posts' skies and suns
+  // within it of its window only.
+  this->PostsHalo = this->Split ? HeldPosts::haloFor(*this->HeightFieldGrid, this->Options.gatherDetailDistance) : -1;
+  this->PostSkies = std::make_unique<PostSky>(
+    *this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals, this->Split, this->PostsHalo);
+  this->Stats.horizonsSeconds += secondsSince(start);
+}
+
+bool PointEvaluator::wantsDenseHorizons() const
+{
+  return this->Solver.suns().size() >= Tuning::sunsForDenseHorizons && HorizonMap::fits(*this->HeightFieldGrid, true);
+}
+
+void PointEvaluator::findSunHorizons()
+{
+  const TerrainGrid* grid = this->HeightFieldGrid;
+  const std::vector<HElement*>& suns = this->Solver.suns();
+  if (!grid || suns.empty())
+    return;
+  const HorizonMap* map = this->PostHorizons;
+  if (!map && suns.size() >= Tuning::sunsForHorizonMap && HorizonMap::fits(*grid))
+  {
+    const auto start = std::chrono::steady_clock::now();
+    map = &this->Solver.geometry()->horizons(0, this->wantsDenseHorizons(), this->Split);
+    this->Stats.horizonsSeconds += secondsSince(start);
+  }
+  if (!map || !map->complete())
+    return;
+  for (HElement* sun : suns)
+  {
+    const ExternalSource& source = *sun->asExternal();
+    const Vec3& d = source.direction();
+    this->MappedSuns.push_back({ map->sight(std::atan2(d.y, d.x), std::asin(std::max(-1.0, std::min(1.0, d.z)))), d,
+      sun->emittance(), source.duration() });
+  }
+  this->SunHorizons = map;
+  // Gather hits on the terrain read the suns its posts prove (where each hit takes
+  // every sun, the hierarchy's suns being the points' own, all parallel).
+  const bool everySunParallel =
+    std::all_of(suns.begin(), suns.end(), [](const HElement* sun) { return sun->asExternal()->parallel(); });
+  if (this->PostSkies && map == this->PostHorizons && this->Solver.hierarchySuns() == suns && everySunParallel &&
+    suns.size() <= std::min(PostSunlight::maximumSuns, FinalGather::maximumSunsPerHit))
+  {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<HorizonMap::Sight> sights;
+    for (const MappedSun& sun : this->MappedSuns)
+      sights.push_back(sun.sight);
+    this->PostSuns = std::make_unique<PostSunlight>(*grid, *map, sights, this->Split, this->PostsHalo);
+    this->Stats.horizonsSeconds += secondsSince(start);
+  }
+}
+
+PointIrradiance PointEvaluator::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
 {
   return this->irradianceAt(leaf, point, leaf.normal());
 }
 
-PointIrradiance HierarchicalRadiosity::irradianceAt(
+PointIrradiance PointEvaluator::irradianceAt(
   const PolygonElement& leaf, const Vec3& point, const Vec3& normal) const
 {
   return this->irradianceAt(leaf, point, normal, leaf.centre());
 }
 
-PointIrradiance HierarchicalRadiosity::irradianceAt(
+PointIrradiance PointEvaluator::irradianceAt(
   const PolygonElement& leaf, const Vec3& point, const Vec3& normal, const Vec3& toward) const
 {
   PointIrradiance result;
@@ -63,7 +200,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   const int clearSamples = this->Options.visibilitySamples;
   // Seeded by the point itself: points sharing a leaf (posts inside a terrain patch)
   // must not share their jitter, or the noise would be the same pattern at each.
-  const std::uint64_t pointSeed = this->Rays->seedOf(point);
+  const std::uint64_t pointSeed = this->Rays.seedOf(point);
   std::uint64_t salt = pointSeed ^ (leaf.id() * 31);
   // The gather's rays belong to the point alone, so that two discretisations of one
   // surface (terrain patches, triangles) cast the same rays from each post.
@@ -75,7 +212,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   // offsets into its leaf (at most half way to the leaf's centre).
   const Vec3 toCentre = toward - point;
   const double distance = glm::length(toCentre);
-  const Vec3 inside = distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays->offset() / distance) * toCentre : point;
+  const Vec3 inside = distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays.offset() / distance) * toCentre : point;
   const bool gathered = this->gathersAtPoints();
   // Without a gather, every link that reaches the leaf, re-evaluated at the point.
   for (const HElement* element = gathered ? nullptr : &leaf; element; element = element->Parent)
@@ -91,7 +228,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
       // leaf holds the point; form factors need the point inside its leaf.
       const Vec3& from = source ? point : inside;
       const double transport = transportToPoint(
-        from, normal, *link.sender, *this->PointRays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
+        from, normal, *link.sender, this->PointRays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
       const Spectrum e = link.sender->emittance();
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)
@@ -138,16 +275,16 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
     // uses, so it keeps the estimate unbiased. Where the sky comes from rays (scenes
     // with buildings), and on the far terrain's smoother leaves, a pilot stays
     // (docs/tuning.md).
-    if (leafLooksOpen(leaf) && this->Horizons && !this->HierarchyTerrain)
+    if (leafLooksOpen(leaf) && this->Horizons && !this->Solver.hierarchyTerrain())
       budget.pilot = 0, budget.maximum = budget.minimum, budget.coarseHorizon = true;
     const Spectrum& sun = irradiance[SunLight];
     // Its rays start two more offsets above (three in all): on rough terrain the move
     // into the leaf, toward a centre across a crease, can end that far below the
     // surface the point's normal lifts from.
     const Vec3 lifted = (post ? inside : this->openSideOf(point, inside, normal, gatherSeed)) +
-      2.0 * this->Rays->offset() * normal;
+      2.0 * this->Rays.offset() * normal;
     const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
-      largestBand(sun), this->LargestRadiosity > 0.0, post);
+      largestBand(sun), this->Solver.largestRadiosity() > 0.0, post);
     irradiance[ReflectedLight] = light.surfaces;
     result.gatherVariance = light.variance;
     irradiance[SkyLight] = light.sky;
@@ -156,7 +293,7 @@ PointIrradiance HierarchicalRadiosity::irradianceAt(
   return result;
 }
 
-bool HierarchicalRadiosity::readFromLattice(const HorizonMap::Post& post, const Vec3& normal, int i, int j,
+bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& normal, int i, int j,
   const PostLattice::Around& around, PointIrradiance& result) const
 {
   PostSky::Value sky;
@@ -189,11 +326,11 @@ bool HierarchicalRadiosity::readFromLattice(const HorizonMap::Post& post, const 
   return true;
 }
 
-Vec3 HierarchicalRadiosity::openSideOf(
+Vec3 PointEvaluator::openSideOf(
   const Vec3& point, const Vec3& inside, const Vec3& normal, std::uint64_t seed) const
 {
   constexpr int strata = 6;
-  const double offset = this->Rays->offset();
+  const double offset = this->Rays.offset();
   auto openness = [&](const Vec3& p) { return this->Gather->openRays(p, normal, strata, seed); };
   int most = openness(inside);
   if (most == strata * strata)
@@ -211,11 +348,11 @@ Vec3 HierarchicalRadiosity::openSideOf(
   return best;
 }
 
-Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours) const
+Spectrum PointEvaluator::directSunAt(const Vec3& point, const Vec3& normal, double* sunlitHours) const
 {
   const HorizonMap::Post post = this->SunHorizons ? this->SunHorizons->find(point) : HorizonMap::Post{};
   if (!post)
-    return directSunlight(point, normal, this->PointSuns, *this->PointRays, sunlitHours);
+    return directSunlight(point, normal, this->Solver.suns(), this->PointRays, sunlitHours);
   // A sun the post's horizons prove open or hidden takes no ray. Every point sun is a
   // parallel SunElement: its kernel and flux, kept beside its sight, need no virtual
   // call on this path (a year of hours tests 5 G suns at the posts of a 1025^2 DEM).
@@ -234,26 +371,26 @@ Spectrum HierarchicalRadiosity::directSunAt(const Vec3& point, const Vec3& norma
       continue;
     const bool seen = this->PostSuns ? proven.seenAt(s) : horizons.clearlyAbove(sun.sight);
     const bool hidden = !seen && (this->PostSuns ? proven.hiddenAt(s) : horizons.clearlyBelow(sun.sight));
-    const bool open = seen || (!hidden && !this->PointRays->occludedToward(point, normal, sun.direction));
+    const bool open = seen || (!hidden && !this->PointRays.occludedToward(point, normal, sun.direction));
     if (open)
       addSunlight(kernel, sun.flux, sun.duration, result, sunlitHours);
   }
   return result;
 }
 
-bool HierarchicalRadiosity::gathersAtPoints() const
+bool PointEvaluator::gathersAtPoints() const
 {
   // Nothing to gather without a sky where no surface sends light.
-  return this->Options.gatherSamples > 0 && (this->Sky || this->LargestRadiosity > 0.0);
+  return this->Options.gatherSamples > 0 && (this->Solver.sky() || this->Solver.largestRadiosity() > 0.0);
 }
 
-void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hornNormals)
+void PointEvaluator::gatherPostLattice(const TerrainPatch& root, bool hornNormals)
 {
-  if (!this->gathersAtPoints() || !this->PostHorizons || &this->postGrid(root) != this->HeightFieldGrid)
+  if (!this->gathersAtPoints() || !this->PostHorizons || &this->Solver.postGrid(root) != this->HeightFieldGrid)
     return;
-  this->Lattice.reset(); // its own posts gather from the leaves, with pilots
-  this->Gather->setPostLattice(nullptr);
-  const TerrainGrid& grid = this->postGrid(root);
+  // The lattice's own posts gather from the leaves, with pilots.
+  this->Gather = this->makeGather();
+  const TerrainGrid& grid = this->Solver.postGrid(root);
   // With a work split, each process holds the lattice within its posts' halo (the
   // detail distance's) of its window.
   auto lattice = std::make_unique<PostLattice>(
@@ -270,13 +407,12 @@ void HierarchicalRadiosity::gatherPostLattice(const TerrainPatch& root, bool hor
       [&]() { lattice->share(); });
   }
   this->Lattice = std::move(lattice);
-  this->Gather->setPostLattice(this->Lattice.get());
 }
 
-void HierarchicalRadiosity::gatherLatticePosts(
+void PointEvaluator::gatherLatticePosts(
   const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const
 {
-  const TerrainGrid& grid = this->postGrid(root);
+  const TerrainGrid& grid = this->Solver.postGrid(root);
   const int step = lattice.step();
   tbb::parallel_for(0, (grid.postsY() - 1) / step + 1, [&](int lj) {
     const int j = lj * step;
@@ -284,7 +420,7 @@ void HierarchicalRadiosity::gatherLatticePosts(
     {
       if (!PostLattice::gathers(i, j, this->Split) || !lattice.gatheredInPass(i, j, firstPass))
         continue;
-      const TerrainPatch* leaf = grid.postUsed(i, j) ? this->leafAtPost(root, i, j) : nullptr;
+      const TerrainPatch* leaf = grid.postUsed(i, j) ? this->Solver.leafAtPost(root, i, j) : nullptr;
       if (!leaf)
         continue;
       const Vec3 normal = grid.normalAt(i, j, hornNormals);
@@ -306,23 +442,19 @@ void HierarchicalRadiosity::gatherLatticePosts(
   });
 }
 
-void HierarchicalRadiosity::gatherLeaves(bool terrains)
+void PointEvaluator::gatherLeaves(bool terrains)
 {
-  this->Gather->setLeafLight(nullptr);
-  this->Leaves.reset();
   if (!this->gathersAtPoints())
     return;
-  std::vector<PolygonElement*> leaves;
-  for (const auto& element : this->Store->all())
-  {
-    if (!element->isSurface())
-      continue;
-    auto& surface = static_cast<PolygonElement&>(*element);
-    const auto* patch = dynamic_cast<const TerrainPatch*>(&surface);
-    if (!surface.hasChildren() &&
-      !(patch && (!terrains || this->HierarchyTerrain || (this->PostSkies && this->HeightFieldGrid && patch->terrain() == 0))))
-      leaves.push_back(&surface);
-  }
+  std::vector<PolygonElement*> leaves = this->Solver.surfaceLeaves();
+  leaves.erase(std::remove_if(leaves.begin(), leaves.end(),
+                 [&](const PolygonElement* leaf) {
+                   const auto* patch = dynamic_cast<const TerrainPatch*>(leaf);
+                   return patch &&
+                     (!terrains || this->Solver.hierarchyTerrain() ||
+                       (this->PostSkies && this->HeightFieldGrid && patch->terrain() == 0));
+                 }),
+    leaves.end());
   if (leaves.empty())
     return;
   // Each leaf's id, and how far its points are lifted: as points are (three ray
@@ -331,7 +463,7 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
   // triangles rays meet (else, on a displaced vtkPlaneSource, points under them saw
   // backs and nearly every leaf looked buried, at four times the rays).
   std::vector<std::uint64_t> ids(leaves.size());
-  std::vector<double> lifts(leaves.size(), 3.0 * this->Rays->offset());
+  std::vector<double> lifts(leaves.size(), 3.0 * this->Rays.offset());
   for (std::size_t k = 0; k < leaves.size(); ++k)
   {
     ids[k] = leaves[k]->id();
@@ -342,7 +474,7 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
       root = static_cast<const PolygonElement*>(root->Parent);
     for (int c = 0; c < root->cornerCount(); ++c)
       lifts[k] = std::max(lifts[k],
-        3.0 * this->Rays->offset() + std::abs(glm::dot(root->corners()[c] - root->centre(), root->normal())));
+        3.0 * this->Rays.offset() + std::abs(glm::dot(root->corners()[c] - root->centre(), root->normal())));
   }
   // A few points of each leaf, a few rays from each, no pilot: a point's rays meet many
   // leaves, whose noise averages out.
@@ -350,12 +482,12 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
   GatherBudget budget;
   budget.pilot = 0;
   budget.minimum = budget.maximum = std::max(1, std::min(Tuning::leafGatherRays, this->Options.gatherSamples) / points);
-  const bool surfacesSend = this->LargestRadiosity > 0.0;
-  std::unique_ptr<LeafLight> light;
+  const bool surfacesSend = this->Solver.largestRadiosity() > 0.0;
   for (int pass = 0; pass < Tuning::leafGatherPasses; ++pass)
   {
     // The first pass gathers over the hierarchy's values, the next over the last pass's.
-    auto next = std::make_unique<LeafLight>(this->Store->size(), ids);
+    this->Gather = this->makeGather();
+    auto next = std::make_unique<LeafLight>(this->Solver.elements().size(), ids);
     tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
       const PolygonElement& leaf = *leaves[k];
       SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
@@ -365,7 +497,7 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
         const SurfaceSample at = leaf.sample(p, n, random);
         const Vec3 from = at.position + lifts[k] * at.normal;
         const GatheredLight received = this->Gather->irradianceAt(
-          from, at.normal, budget, this->Rays->seedOf(from) ^ static_cast<std::uint64_t>(pass), 0.0, surfacesSend);
+          from, at.normal, budget, this->Rays.seedOf(from) ^ static_cast<std::uint64_t>(pass), 0.0, surfacesSend);
         // A point whose rays meet the backs of surfaces lies inside something (the part
         // of a house's wall below the ground): the light of the leaf is that of its
         // other points, which hits can reach.
@@ -386,23 +518,22 @@ void HierarchicalRadiosity::gatherLeaves(bool terrains)
       }
       next->set(k, leaf.normal(), seen);
     });
-    this->Gather->setLeafLight(next.get());
-    light = std::move(next);
+    this->Leaves = std::move(next);
   }
   // The leaves' own values become the gathered means (what averaged outputs show),
-  // once every gather has read the hierarchy's.
+  // once every gather has read the hierarchy's; the destructor gives them back.
+  this->Replaced.resize(leaves.size());
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
     PolygonElement& leaf = *leaves[k];
-    if (!light->mean(leaf.id(), leaf.Irradiance[SkyLight], leaf.Irradiance[ReflectedLight]))
+    this->Replaced[k] = { &leaf, leaf.Irradiance[SkyLight], leaf.Irradiance[ReflectedLight], leaf.Radiosity };
+    if (!this->Leaves->mean(leaf.id(), leaf.Irradiance[SkyLight], leaf.Irradiance[ReflectedLight]))
       return;
     leaf.Radiosity = radiosityOf(leaf.emission(), leaf.reflectance(),
       totalIrradiance(leaf.Irradiance[SunLight], leaf.Irradiance[SkyLight], leaf.Irradiance[ReflectedLight]));
   });
-  this->Leaves = std::move(light);
-  this->Gather->setLeafLight(this->Leaves.get());
 }
 
-void HierarchicalRadiosity::irradianceAt(const std::vector<const PolygonElement*>& leaves,
+void PointEvaluator::irradianceAt(const std::vector<const PolygonElement*>& leaves,
   const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const std::vector<Vec3>& towards,
   std::vector<PointIrradiance>& results) const
 {
