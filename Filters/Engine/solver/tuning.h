@@ -8,7 +8,7 @@ namespace terralux
 {
 struct Tuning
 {
-  // Direct sun at posts (HierarchicalRadiosity::findSunHorizons).
+  // Direct sun at posts (PointEvaluator::findSunHorizons).
   /// Suns from which the horizon map is built to prove suns seen or hidden (~20 rays a post).
   static constexpr std::size_t sunsForHorizonMap = 48;
   /// Suns from which the horizon map is dense: 64 azimuths instead of 32.
