@@ -37,7 +37,11 @@
  * around it; for a terrain lit
  * by a sky also `SkyViewFactor`, the cosine-weighted fraction of the sky each post sees
  * (1 on open flat ground), as SAGA and GRASS r.skyview report it (NaN at points on no
- * polygon, e.g. blanked no-data posts); field
+ * polygon, e.g. blanked no-data posts); with EvaluateAtPoints also `IrradianceError`,
+ * each point's estimated error of `Irradiance` (W/m^2, largest band): twice the final
+ * gather's standard error plus the light from surfaces its hits read times the
+ * hierarchy's relative error, measured by gathering over it (docs/validation.md checks
+ * it against the reference); field
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons`, `SkippedCells`
  * (vertex and line cells, and polygons of fewer than 3 points: no area, no light), seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsHorizons` for the horizons of every post,

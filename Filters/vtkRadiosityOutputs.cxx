@@ -80,9 +80,11 @@ vtkSmartPointer<vtkDoubleArray> unsetArray(const char* name, int components, vtk
 class PointArrays
 {
 public:
-  PointArrays(int bands, vtkIdType count, bool skyViewFactor, bool sunshine)
+  PointArrays(int bands, vtkIdType count, bool skyViewFactor, bool sunshine, bool irradianceError)
     : Bands(bands)
   {
+    if (irradianceError)
+      this->IrradianceError = unsetArray(vtkRadiosityOutputs::IrradianceErrorName(), 1, count);
     for (int q = 0; q < quantities; ++q)
       this->Quantities[q] = unsetArray(quantityNames[q], bands, count);
     if (skyViewFactor)
@@ -101,6 +103,8 @@ public:
       this->SkyViewFactor->SetValue(point, v.skyViewFactor);
     if (this->Sunshine)
       this->Sunshine->SetValue(point, v.sunlitHours);
+    if (this->IrradianceError)
+      this->IrradianceError->SetValue(point, v.irradianceError);
   }
 
   void addTo(vtkPointData* pointData) const
@@ -111,13 +115,15 @@ public:
       pointData->AddArray(this->SkyViewFactor);
     if (this->Sunshine)
       pointData->AddArray(this->Sunshine);
+    if (this->IrradianceError)
+      pointData->AddArray(this->IrradianceError);
     pointData->SetActiveScalars(quantityNames[0]);
   }
 
 private:
   const int Bands;
   std::array<vtkSmartPointer<vtkDoubleArray>, quantities> Quantities;
-  vtkSmartPointer<vtkDoubleArray> SkyViewFactor, Sunshine;
+  vtkSmartPointer<vtkDoubleArray> SkyViewFactor, Sunshine, IrradianceError;
 };
 
 // The cell of the scene's terrain grid that holds a terrain leaf's centre; -1 where the
@@ -146,7 +152,7 @@ void vtkRadiosityOutputs::AddPointArrays(const terralux::PointEvaluator& evaluat
   const bool terrainGrid = vtkStructuredGrid::SafeDownCast(input.data) != nullptr;
   // A DEM's sky view factor, averaged or not; a mesh's only where evaluated at points.
   const bool skyViewFactor = scene.Sky && (input.terrain >= 0 || terrainGrid);
-  const PointArrays arrays(options.bands, count, skyViewFactor, options.sunshine);
+  const PointArrays arrays(options.bands, count, skyViewFactor, options.sunshine, options.evaluateAtPoints);
   if (input.terrain >= 0)
   {
     if (const terralux::TerrainPatch* root = solver.terrainRoots()[input.terrain])
@@ -243,7 +249,7 @@ void vtkRadiosityOutputs::BuildLeafMesh(const terralux::HierarchicalRadiosity& s
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(count);
-  const PointArrays arrays(bands, count, withSky, false);
+  const PointArrays arrays(bands, count, withSky, false, false);
   for (vtkIdType k = 0; k < count; ++k)
   {
     points->SetPoint(k, positions[k].x, positions[k].y, positions[k].z);
@@ -273,6 +279,8 @@ std::vector<const char*> vtkRadiosityOutputs::AllNames()
   names.insert(names.end(), integratedNames, integratedNames + quantities);
   names.push_back(SunshineDurationName());
   names.push_back(SkyViewFactorName());
+  names.push_back(IrradianceErrorName());
+  names.push_back(IrradiationErrorName());
   return names;
 }
 

@@ -29,6 +29,10 @@ struct vtkRadiosityOutputs
   /// The other point arrays: hours of direct sun, the sky view factor.
   static const char* SunshineDurationName() { return "SunshineDuration"; }
   static const char* SkyViewFactorName() { return "SkyViewFactor"; }
+  /// The estimated error of the global irradiance at each point (W/m^2), with
+  /// EvaluateAtPoints; summed over time (Wh/m^2) under its integrated name.
+  static const char* IrradianceErrorName() { return "IrradianceError"; }
+  static const char* IrradiationErrorName() { return "IrradiationError"; }
   /// The leaf mesh's cell arrays that map each leaf back to the input: the index of
   /// port 0's leaf data set (in connection and composite order) and its cell there
   /// (for a terrain leaf, the grid cell holding its centre; -1 on a far terrain).

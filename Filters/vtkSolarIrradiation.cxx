@@ -47,6 +47,11 @@ void renameSums(vtkDataSet* data)
     }
   if (vtkDataArray* sunshine = pointData->GetArray(vtkRadiosityOutputs::SunshineDurationName()))
     sunshine->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), "h");
+  if (vtkDataArray* error = pointData->GetArray(vtkRadiosityOutputs::IrradianceErrorName()))
+  {
+    error->SetName(vtkRadiosityOutputs::IrradiationErrorName());
+    error->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), "Wh/m^2");
+  }
   pointData->SetActiveScalars(vtkRadiosityOutputs::IntegratedName(0));
 }
 

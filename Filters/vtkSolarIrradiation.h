@@ -38,7 +38,9 @@
  * arrays GlobalIrradiation, BeamIrradiation, SkyIrradiation, ReflectedIrradiation and
  * OutgoingIrradiation (the light leaving the surface, radiosity summed) in Wh/m^2
  * (NumberOfBands components), SunshineDuration (hours the sun reaches the point: above
- * its horizon, unshadowed, in front of the surface) and, on a terrain, SkyViewFactor;
+ * its horizon, unshadowed, in front of the surface), on a terrain SkyViewFactor, and with
+ * EvaluateAtPoints IrradiationError (Wh/m^2, vtkHierarchicalRadiosity's IrradianceError
+ * of the summed solve);
  * field data `Steps`, per step `StepTime` (UTC), `StepHours`, `SunZenith`,
  * `SunAzimuth` (degrees), `SunNormalIrradiance` and `DiffuseHorizontalIrradiance`
  * (W/m^2), and vtkHierarchicalRadiosity's counts and seconds per phase, with

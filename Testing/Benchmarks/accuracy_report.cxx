@@ -178,6 +178,26 @@ void loadScene(const terralux_bench::AccuracyScene& input, ScenePoints& out)
   out.firstWeight.resize(out.points.size(), 1.0);
 }
 
+// The slopes of a scene's points (their normals' angles from the zenith, degrees):
+// mean and 95th percentile, as a DEM's users state how steep it is.
+int describe(const terralux_bench::AccuracyScene& input)
+{
+  ScenePoints s;
+  loadScene(input, s);
+  std::vector<double> slopes;
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+    if (s.used[k])
+      slopes.push_back(std::acos(std::clamp(s.normals[k].z, -1.0, 1.0)) * 180.0 / 3.14159265358979323846);
+  double mean = 0.0;
+  for (double slope : slopes)
+    mean += slope / std::max<std::size_t>(1, slopes.size());
+  std::sort(slopes.begin(), slopes.end());
+  const double p95 = slopes.empty() ? 0.0 : slopes[static_cast<std::size_t>(0.95 * (slopes.size() - 1))];
+  std::printf("{\"scene\": \"%s\", \"points\": %zu, \"mean_slope_deg\": %.2f, \"p95_slope_deg\": %.2f}\n",
+    input.name.c_str(), slopes.size(), mean, p95);
+  return 0;
+}
+
 int computeReference(const terralux_bench::AccuracyScene& input, const std::string& path, int samples)
 {
   ScenePoints s;
@@ -248,6 +268,34 @@ int computeReference(const terralux_bench::AccuracyScene& input, const std::stri
   std::printf("{\"scene\": \"%s\", \"reference_seconds\": %.3f, \"points\": %zu, \"samples\": %d}\n",
     input.name.c_str(), seconds(start), values.size(), samples);
   return 0;
+}
+
+// How well the filter's IrradianceError estimates the error of the global irradiance
+// over the points where `include` holds: the share of points whose difference from the
+// reference lies within the estimate (widened, in quadrature, by twice the reference's
+// own standard error), and the estimate's median over the mean global. null without it.
+std::string estimateJson(const std::vector<double>& estimate, const std::vector<double>& value,
+  const std::vector<double>& reference, const std::vector<double>& referenceError, const std::vector<bool>& include)
+{
+  std::vector<double> estimates;
+  double sumRef = 0.0;
+  std::size_t covered = 0;
+  for (std::size_t k = 0; k < value.size(); ++k)
+  {
+    if (!include[k] || !std::isfinite(estimate[k]))
+      continue;
+    estimates.push_back(estimate[k]);
+    sumRef += reference[k];
+    covered += std::abs(value[k] - reference[k]) <= std::hypot(estimate[k], 2.0 * referenceError[k]);
+  }
+  if (estimates.empty())
+    return "null";
+  const double meanGlobal = sumRef / estimates.size();
+  std::nth_element(estimates.begin(), estimates.begin() + estimates.size() / 2, estimates.end());
+  char text[200];
+  std::snprintf(text, sizeof text, "{\"coverage\": %.4f, \"median\": %.6g}",
+    static_cast<double>(covered) / estimates.size(), meanGlobal > 0.0 ? estimates[estimates.size() / 2] / meanGlobal : 0.0);
+  return text;
 }
 
 // Error figures of one component over the points where `include` holds.
@@ -354,9 +402,12 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   radiosity->Update();
   const double wall = seconds(start);
 
-  std::vector<double> value[4], ref[4], refError[4];
+  std::vector<double> value[4], ref[4], refError[4], estimate;
   for (vtkDataSet* data : vtkRadiosityScene::DataSetsOf(radiosity->GetOutput()))
   {
+    vtkDataArray* error = data->GetPointData()->GetArray("IrradianceError");
+    for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
+      estimate.push_back(error ? error->GetComponent(p, 0) : std::nan(""));
     const char* names[4] = { "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance", "Irradiance" };
     for (int c = 0; c < 4; ++c)
     {
@@ -398,12 +449,12 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     ScenePoints where;
     loadScene(input, where);
     std::ofstream csv(pointsFile);
-    csv << "x,y,z,nx,ny,nz,sun,sky,reflected,global,ref_sun,ref_sky,ref_reflected,ref_global\n";
+    csv << "x,y,z,nx,ny,nz,sun,sky,reflected,global,ref_sun,ref_sky,ref_reflected,ref_global,estimate,ref_error\n";
     for (std::size_t k = 0; k < n; ++k)
       csv << where.points[k].x << "," << where.points[k].y << "," << where.points[k].z << "," << where.normals[k].x
           << "," << where.normals[k].y << "," << where.normals[k].z << "," << value[0][k] << "," << value[1][k] << ","
           << value[2][k] << "," << value[3][k] << "," << ref[0][k] << "," << ref[1][k] << "," << ref[2][k] << ","
-          << ref[3][k] << "\n";
+          << ref[3][k] << "," << estimate[k] << "," << refError[3][k] << "\n";
   }
   // The floor: one Embree occlusion ray per point toward the sun.
   ScenePoints s;
@@ -429,13 +480,15 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
               "\"elements\": %.0f, \"links\": %.0f, \"rays\": %.0f, \"iterations\": %.0f, \"floor_seconds\": %.5f, "
               "\"phase_seconds\": {\"visibility\": %.4f, \"horizons\": %.4f, \"refine\": %.4f, \"gather\": %.4f, "
               "\"push_pull\": %.4f, \"points\": %.4f}, \"phase_rays\": {\"refine\": %.0f, \"gather_push_pull\": %.0f, \"points\": %.0f}, "
-              "\"shadow_disagreement\": %.6f, \"sun\": %s, \"sky\": %s, \"reflected\": %s, \"global\": %s}\n",
+              "\"shadow_disagreement\": %.6f, \"sun\": %s, \"sky\": %s, \"reflected\": %s, \"global\": %s, "
+              "\"estimate\": %s}\n",
     input.name.c_str(), method.c_str(), tolerance, wall, peakMiB(), field("Elements"), field("Links"), field("Rays"),
     field("Iterations"), floorSeconds, field("SecondsVisibilityBuild"), field("SecondsHorizons"), field("SecondsRefine"),
     field("SecondsGather"), field("SecondsPushPull"), field("SecondsPoints"), field("RaysRefine"),
     field("RaysPushPull"), field("RaysPoints"), facing ? static_cast<double>(disagree) / facing : 0.0,
     errorJson(value[0], ref[0], refError[0], used).c_str(), errorJson(value[1], ref[1], refError[1], used).c_str(),
-    errorJson(value[2], ref[2], refError[2], used).c_str(), errorJson(value[3], ref[3], refError[3], agree).c_str());
+    errorJson(value[2], ref[2], refError[2], used).c_str(), errorJson(value[3], ref[3], refError[3], agree).c_str(),
+    estimateJson(estimate, value[3], ref[3], refError[3], used).c_str());
   return 0;
 }
 } // namespace
@@ -445,6 +498,7 @@ int main(int argc, char* argv[])
   if (argc < 4)
   {
     std::cerr << "usage: accuracy_report SCENE OUTDIR reference [SAMPLES]\n"
+                 "       accuracy_report SCENE OUTDIR describe\n"
                  "       accuracy_report SCENE OUTDIR solve points|rays|averaged|triangles TOLERANCE\n";
     return 2;
   }
@@ -453,6 +507,8 @@ int main(int argc, char* argv[])
     const char* dataDir = std::getenv("TERRALUX_DATA_DIR");
     const auto scene = terralux_bench::makeAccuracyScene(argv[1], dataDir ? dataDir : "Testing/Data/External");
     const std::string referencePath = std::string(argv[2]) + "/" + argv[1] + ".reference";
+    if (std::string(argv[3]) == "describe")
+      return describe(scene);
     if (std::string(argv[3]) == "reference")
       return computeReference(scene, referencePath, argc > 4 ? std::atoi(argv[4]) : 1024);
     if (std::string(argv[3]) == "solve" && argc > 5)

@@ -101,7 +101,8 @@ vtkSmartPointer<vtkPolyData> box(double x0, double x1, double y0, double y1, dou
 
 std::vector<std::string> accuracySceneNames()
 {
-  return { "olinda", "fractal", "hills", "crater", "canyon", "box", "house-sky", "house-sun", "olinda-sky", "olinda-black" };
+  return { "olinda", "fractal", "hills", "crater", "canyon", "box", "house-sky", "house-sun", "olinda-sky", "olinda-black",
+    "steep-morning", "steep-noon", "snowbowl" };
 }
 
 namespace
@@ -115,6 +116,21 @@ void fractalTerrain(AccuracyScene& scene, int n, std::uint32_t seed, double reli
 {
   const std::vector<float> heights = fractalHeights(n, seed, 0.55, reliefM);
   scene.geometry = heightField(n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(j) * n + i]; });
+  scene.lights = { sunAt(altitude, azimuth, 800.0),
+    skyMap(vtkSkySource::CIE_GENERAL, 12, 90.0 - altitude, azimuth, 100.0) };
+  scene.reflectance = reflectance;
+  scene.terrain = true;
+}
+
+// The centre 129 x 129 posts of the steep benchmark DEM (make_fractal_dem 1025 posts,
+// seed 1, 3000 m relief: mean slope 15 deg, p95 28 deg; the crop 14 and 26 deg) under a
+// sun `altitude` deg up toward compass `azimuth` and its CIE clear sky.
+void steepCrop(AccuracyScene& scene, double altitude, double azimuth, double reflectance)
+{
+  constexpr int full = 1025, n = 129, first = (full - n) / 2;
+  const std::vector<float> heights = fractalHeights(full, 1, 0.55, steepReliefM);
+  scene.geometry = heightField(
+    n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(first + j) * full + first + i]; });
   scene.lights = { sunAt(altitude, azimuth, 800.0),
     skyMap(vtkSkySource::CIE_GENERAL, 12, 90.0 - altitude, azimuth, 100.0) };
   scene.reflectance = reflectance;
@@ -225,6 +241,35 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
     // light from surfaces is small and smooth.
     fractalTerrain(scene, 257, 1, 450.0, 25.0, 120.0, 0.2);
     scene.description = "fractal hills 257 x 257 at 30 m, 450 m relief, sun 25 deg up (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.2";
+  }
+  else if (name == "steep-morning" || name == "steep-noon")
+  {
+    // (b'') Steep mountains as real DEMs have them, a winter morning sun 8 deg up in the
+    // south-east, or the winter noon sun 22 deg up in the south.
+    const bool morning = name == "steep-morning";
+    steepCrop(scene, morning ? 8.0 : 22.0, morning ? 135.0 : 180.0, 0.5);
+    scene.description = std::string("steep fractal 129 x 129 at 30 m (crop of the 1025^2 steep DEM), sun ") +
+      (morning ? "8 deg up in the SE" : "22 deg up in the S") + " (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.5";
+  }
+  else if (name == "snowbowl")
+  {
+    // (c') A snowy bowl with small-scale relief on its walls (ridges and gullies of a
+    // few tens of metres), reflectance 0.8, a winter morning sun 10 deg up.
+    // A paraboloid 1100 m in radius, continued by its tangent cone, and the relief
+    // (centred on 0) growing from the floor to the rim.
+    const int n = 129;
+    constexpr double reliefM = 80.0;
+    const std::vector<float> relief = fractalHeights(n, 7, 0.6, reliefM);
+    scene.geometry = heightField(n, 15.0, [&](int i, int j) {
+      const double x = (i - 64) * 15.0, y = (j - 64) * 15.0, r = std::sqrt(x * x + y * y) / 1100.0;
+      const double ridges = relief[static_cast<std::size_t>(j) * n + i] - (200.0 + 0.5 * reliefM); // heights start at 200 m
+      return 1000.0 + 400.0 * (r < 1.0 ? r * r : 2.0 * r - 1.0) + std::min(1.0, r) * ridges;
+    });
+    scene.lights = { sunAt(10.0, 135.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 80.0, 135.0, 100.0) };
+    scene.reflectance = 0.8;
+    scene.terrain = true;
+    scene.description = "snowy bowl 129 x 129 at 15 m, 400 m deep over its 1100 m radius, 80 m fractal relief on its walls, sun 10 deg up "
+                        "in the SE (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.8";
   }
   else if (name == "crater")
   {

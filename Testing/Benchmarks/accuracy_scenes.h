@@ -24,8 +24,9 @@ struct AccuracyScene
   bool terrain = false; ///< a single terrain grid (the triangle path applies)
 };
 
-/// Names: olinda, fractal, crater, canyon, box, house-sky, house-sun, olinda-sky (sun below
-/// the horizon), olinda-black (reflectance 0). Throws std::runtime_error for others or
+/// Names: olinda, fractal, hills, crater, canyon, box, house-sky, house-sun, olinda-sky (sun
+/// below the horizon), olinda-black (reflectance 0), steep-morning and steep-noon (a crop of
+/// the steep benchmark DEM), snowbowl (reflectance 0.8, relief on its walls). Throws std::runtime_error for others or
 /// when Olinda's DEM is missing (dataDir: Testing/Data/External).
 AccuracyScene makeAccuracyScene(const std::string& name, const std::string& dataDir);
 std::vector<std::string> accuracySceneNames();

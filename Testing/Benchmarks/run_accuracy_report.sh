@@ -10,6 +10,8 @@
 #   TERRALUX_REPORT_FAR_STRIDE  FarTerrainStride of every solve (default 1)
 #   TERRALUX_REPORT_DOC         also write the tables and plots as this page (the project's
 #                               docs/validation.md, with OUT_DIR docs/validation)
+#   TERRALUX_REPORT_REUSE_REFERENCES=1  keep a scene's reference already in OUT_DIR (made at
+#                               the same number of directions) instead of computing it again
 #   TERRALUX_REPORT_PREVIOUS    the build folder of a previous release: its solves at
 #                               points join the report as "previous release", the
 #                               new curve beside the old
@@ -19,7 +21,8 @@ build_dir="${1:-${repo_dir}/build}"
 out_dir="${2:-${build_dir}/accuracy}"
 shift $(( $# > 2 ? 2 : $# ))
 scenes=("$@")
-[ "${#scenes[@]}" -gt 0 ] || scenes=(olinda fractal hills crater canyon box house-sky house-sun olinda-sky olinda-black)
+[ "${#scenes[@]}" -gt 0 ] || scenes=(olinda fractal hills crater canyon box house-sky house-sun olinda-sky olinda-black
+  steep-morning steep-noon snowbowl)
 samples="${TERRALUX_REFERENCE_SAMPLES:-32768}"
 cmake --build "${build_dir}" --target accuracy_report >/dev/null
 export TERRALUX_DATA_DIR="${repo_dir}/Testing/Data/External"
@@ -27,8 +30,14 @@ mkdir -p "${out_dir}"
 runs="${out_dir}/runs.jsonl"
 : > "${runs}"
 for scene in "${scenes[@]}"; do
-  echo "== ${scene}: reference (${samples} directions per point)"
-  "${build_dir}/bin/accuracy_report" "${scene}" "${out_dir}" reference "${samples}" | tee -a "${runs}"
+  if [ "${TERRALUX_REPORT_REUSE_REFERENCES:-0}" = 1 ] && [ -s "${out_dir}/${scene}.reference" ] &&
+    [ -s "${out_dir}/${scene}.reference.json" ]; then
+    echo "== ${scene}: reference kept"
+    tee -a "${runs}" < "${out_dir}/${scene}.reference.json"
+  else
+    echo "== ${scene}: reference (${samples} directions per point)"
+    "${build_dir}/bin/accuracy_report" "${scene}" "${out_dir}" reference "${samples}" | tee "${out_dir}/${scene}.reference.json" | tee -a "${runs}"
+  fi
   methods=(points averaged)
   case "${scene}" in olinda|fractal|crater) methods+=(rays triangles) ;; esac
   case "${scene}" in olinda-sky|olinda-black) methods+=(rays) ;; esac

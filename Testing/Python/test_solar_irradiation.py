@@ -462,6 +462,22 @@ class Command(unittest.TestCase):
         numpy.testing.assert_allclose(b * 1000.0, a, rtol=1e-5)
         self.assertGreater(float(a.mean()), 4000.0)
 
+    def test_at_points_each_post_has_its_error(self):
+        from osgeo import gdal
+        result = self.run_command(OLINDA, "-o", "points.tif", "--day-of-year", "173", "--step", "120", "--quiet")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        tif = gdal.Open(os.path.join(self.work, "points.tif"))
+        names = [tif.GetRasterBand(b).GetDescription() for b in range(1, tif.RasterCount + 1)]
+        self.assertEqual(names[-1], "IrradiationError")
+        error = tif.GetRasterBand(tif.RasterCount)
+        self.assertEqual(error.GetUnitType(), "Wh/m^2")
+        values, global_ = error.ReadAsArray().astype(float), tif.GetRasterBand(1).ReadAsArray().astype(float)
+        self.assertTrue(numpy.isfinite(values).all() and (values >= 0.0).all())
+        # An estimate of a small error: above 0 where light comes from surfaces, its
+        # median well below the global's mean.
+        self.assertGreater(float(values.max()), 0.0)
+        self.assertLess(float(numpy.median(values)), 0.02 * float(global_.mean()))
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -20,8 +20,8 @@ import sys
 import time
 
 BANDS = ("GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation",
-         "SunshineDuration", "SkyViewFactor")
-ENERGY_BANDS = BANDS[:4]
+         "SunshineDuration", "SkyViewFactor", "IrradiationError")
+ENERGY_BANDS = BANDS[:4] + ("IrradiationError",)
 PROGRAM = "terralux.irradiation"
 
 
@@ -252,6 +252,8 @@ def run(args):
     if args.kwh:
         for name in ENERGY_BANDS:
             array = point_data.GetArray(name)
+            if array is None:  # IrradiationError: at points only
+                continue
             values = vtk_to_numpy(array)
             values /= 1000.0
             array.GetInformation().Set(array.UNITS_LABEL(), "kWh/m^2")

@@ -58,8 +58,8 @@ FinalGather::FinalGather(const GatherInputs& inputs)
 
 FinalGather::~FinalGather() = default;
 
-Spectrum FinalGather::radiosityAt(
-  const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front, double sunSample, const Vec3& from) const
+Spectrum FinalGather::radiosityAt(const PolygonElement& leaf, const SurfaceHit& hit, const Vec3& front,
+  double sunSample, const Vec3& from, double* interreflected) const
 {
   const auto& e = leaf.Irradiance;
   // Whether the hit reads the posts of the scene's one terrain around it (a hit on the
@@ -98,6 +98,8 @@ Spectrum FinalGather::radiosityAt(
     this->PostSkies->interpolate(hit.u, hit.v, sky);
   if (nearPosts && this->Lattice)
     this->Lattice->reflectedAt(hit.u, hit.v, reflected);
+  if (interreflected)
+    *interreflected = largestBand(radiosityOf(Spectrum{}, leaf.reflectance(), reflected));
   return radiosityOf(leaf.emission(), leaf.reflectance(), totalIrradiance(sun, sky, reflected));
 }
 
@@ -166,7 +168,7 @@ bool pilotDecides(const GatherBudget& budget)
 } // namespace
 
 Spectrum FinalGather::hiddenSkyByRadiance(const Vec3& point, const Vec3& normal, const GatherBudget& budget,
-  std::uint64_t seed, double received, double& hiddenProjectedSolidAngle, int& rays) const
+  std::uint64_t seed, double received, double& hiddenProjectedSolidAngle, int& rays, double& variance) const
 {
   Spectrum hidden{};
   double sum = 0.0, sumOfSquares = 0.0;
@@ -206,6 +208,8 @@ Spectrum FinalGather::hiddenSkyByRadiance(const Vec3& point, const Vec3& normal,
   for (double& band : hidden)
     band /= count;
   hiddenProjectedSolidAngle /= count;
+  const double mean = sum / count;
+  variance = std::max(0.0, sumOfSquares / count - mean * mean) / count;
   return hidden;
 }
 
@@ -218,6 +222,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // What is left of the open sky is the sky the point receives.
   const bool horizons = this->Sky && this->Horizons;
   double openOmega = 0.0; // projected solid angle of the sky seen
+  double skyVariance = 0.0; // of the hidden sky by rays
   if (horizons && post && this->Horizons->map())
   {
     PostSky::Value value;
@@ -241,7 +246,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     }
     else
       hidden = this->hiddenSkyByRadiance(
-        point, normal, budget, seed, directIrradiance + largestBand(open), hiddenOmega, result.rays);
+        point, normal, budget, seed, directIrradiance + largestBand(open), hiddenOmega, result.rays, skyVariance);
     openOmega = std::max(0.0, openOmega - hiddenOmega);
     for (int band = 0; band < maxBands; ++band)
       result.sky[band] = std::max(0.0, open[band] - hidden[band]);
@@ -259,7 +264,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // point needs; the estimate then comes from that many fresh stratified rays. Rays that
   // decided when to stop would be biased: they stop early where they happened to miss
   // a bright hit.
-  double sum = 0.0, sumOfSquares = 0.0;
+  double sum = 0.0, sumOfSquares = 0.0, interreflected = 0.0;
   int backRays = 0;
   const CosineFrame frame(normal);
   auto cast = [&](int count, SampleGenerator& random)
@@ -267,7 +272,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     // The sun each hit takes (when there are many), by a golden-ratio sequence: evenly
     // spread over the suns for any count, and unrelated to the rays' strata.
     const double sunStart = this->SunCumulative.empty() ? 0.0 : random.uniform();
-    sum = sumOfSquares = 0.0;
+    sum = sumOfSquares = interreflected = 0.0;
     backRays = 0;
     surfaces = Spectrum{};
     skyCorrection = Spectrum{};
@@ -305,9 +310,11 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
         return value;
       }
       const double sunSample = std::fmod(sunStart + 0.61803398874989485 * k, 1.0);
-      const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample, point);
+      double bounced = 0.0;
+      const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample, point, &bounced);
       for (int band = 0; band < maxBands; ++band)
         surfaces[band] += weight * b[band];
+      interreflected += weight * bounced;
       return value + weight * largestBand(b);
     };
     for (int k = 0; k < count; ++k)
@@ -346,6 +353,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   result.backRays = backRays;
   if (count > 0)
     result.variance = std::max(0.0, sumOfSquares * perRay - sum * perRay * sum * perRay);
+  result.standardError = std::sqrt(result.variance * perRay + skyVariance);
+  result.interreflected = interreflected * perRay;
   return result;
 }
 } // namespace terralux

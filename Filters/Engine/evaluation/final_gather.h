@@ -35,6 +35,13 @@ struct GatheredLight
   int rays = 0;
   int count = 0; ///< the rays of the estimate (a pilot's aside)
   double variance = 0.0; ///< of one ray's estimate (largest band), over those rays
+  /// Of surfaces + sky as estimated (largest band, W/m^2): the rays' spread over their
+  /// count, the surfaces' and the hidden sky's added in quadrature (stratified rays err
+  /// less: an upper estimate of their noise).
+  double standardError = 0.0;
+  /// Of `surfaces`, the part the hits' reflectances made of the light from surfaces they
+  /// read (largest band): what a bounce beyond those reads would change.
+  double interreflected = 0.0;
   int backRays = 0; ///< of those rays, the ones that met the back of a surface
 };
 
@@ -148,16 +155,19 @@ public:
   /// The leaf a ray's hit lies on (null where nothing solved is there).
   const PolygonElement* leafAt(const struct SurfaceHit& hit) const;
   /// Radiosity leaving a hit on `leaf` of a ray from `from`, its direct sunlight taken
-  /// at the hit; `sunSample` in [0, 1) picks the sun when there are many.
+  /// at the hit; `sunSample` in [0, 1) picks the sun when there are many. With
+  /// `interreflected`, also the part of it reflected from the light from surfaces the
+  /// hit read (largest band).
   Spectrum radiosityAt(const PolygonElement& leaf, const struct SurfaceHit& hit, const Vec3& front,
-    double sunSample, const Vec3& from) const;
+    double sunSample, const Vec3& from, double* interreflected = nullptr) const;
 
 private:
   /// The sky a point does not see, by occlusion rays drawn in proportion to the sky's
   /// radiance (each carries the same share of it), as many as a pilot says bring the
-  /// standard error below budget.relativeError x `received`; counts the rays.
+  /// standard error below budget.relativeError x `received`; counts the rays. `variance`:
+  /// of that estimate (largest band).
   Spectrum hiddenSkyByRadiance(const Vec3& point, const Vec3& normal, const GatherBudget& budget,
-    std::uint64_t seed, double received, double& hiddenProjectedSolidAngle, int& rays) const;
+    std::uint64_t seed, double received, double& hiddenProjectedSolidAngle, int& rays, double& variance) const;
 
   const Visibility& Rays;
   const std::vector<PolygonElement*>& Polygons;

@@ -1,6 +1,7 @@
 #include "evaluation/point_evaluator.h"
 
 #include "evaluation/final_gather.h"
+#include "evaluation/leaf_gather.h"
 #include "evaluation/open_sky.h"
 #include "horizons/horizon_sky.h"
 #include "visibility/scene_geometry.h"
@@ -44,6 +45,10 @@ double receivedBesideSurfaces(const Spectrum& sun, const PostSky::Value& sky)
   return largestBand(sun) + largestBand(sky.irradiance);
 }
 
+// Standard errors in an error estimate: about 95 % of normal errors lie within two. The
+// same margin on estimated biases.
+constexpr double errorCoverage = 2.0;
+
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -73,6 +78,17 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
   if (plan.atPoints)
     this->findPostHorizons(plan.hornNormals);
   this->findSunHorizons();
+  // How far the hierarchy's light from surfaces is off, for the points' error estimates:
+  // gathered over the hierarchy's own surface, the same for every process (a window's
+  // too), reading its leaves alone (no post's values, which a process holds near its
+  // window only).
+  if (plan.atPoints && this->gathersAtPoints() && solved.largestRadiosity() > 0.0)
+  {
+    const GatherInputs overHierarchy{ this->Rays, solved.polygonRoots(), solved.terrainRoots(), solved.hierarchySuns() };
+    const LeafGather probe(solved.surfaceLeaves(), this->Rays,
+      std::min(Tuning::leafGatherRays, this->Options.gatherSamples), true);
+    this->Deficit = HierarchyDeficit::measure(probe, FinalGather(overHierarchy), Tuning::deficitProbeLeaves);
+  }
   // At points, what gather rays meet; averaged, the polygons' values themselves
   // (terrain patches keep the hierarchy's: the fast mode of a DEM).
   if (plan.leavesGathered)
@@ -87,6 +103,10 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
     this->Stats.latticeRays = solved.raysCast() - raysBefore;
   }
   this->Gather = this->makeGather();
+  // What the final gathers' hits read of light from surfaces: the lattice's (one bounce
+  // gathered above the hierarchy's values), the leaves' (each pass one bounce), or the
+  // hierarchy's own.
+  this->BouncesRead = this->Lattice ? 1 : this->Leaves ? Tuning::leafGatherPasses : 0;
 }
 
 PointEvaluator::~PointEvaluator()
@@ -214,6 +234,7 @@ PointIrradiance PointEvaluator::irradianceAt(
   const double distance = glm::length(toCentre);
   const Vec3 inside = distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays.offset() / distance) * toCentre : point;
   const bool gathered = this->gathersAtPoints();
+  double visibilityVariance = 0.0; // of the links' sampled visibility, without a gather
   // Without a gather, every link that reaches the leaf, re-evaluated at the point.
   for (const HElement* element = gathered ? nullptr : &leaf; element; element = element->Parent)
   {
@@ -227,9 +248,12 @@ PointIrradiance PointEvaluator::irradianceAt(
       // it and then meets the building from inside, so the sky is judged right whatever
       // leaf holds the point; form factors need the point inside its leaf.
       const Vec3& from = source ? point : inside;
-      const double transport = transportToPoint(
-        from, normal, *link.sender, this->PointRays, link.visibility < 1.0 ? partialSamples : clearSamples, seed);
+      const int samples = link.visibility < 1.0 ? partialSamples : clearSamples;
+      const double transport = transportToPoint(from, normal, *link.sender, this->PointRays, samples, seed);
       const Spectrum e = link.sender->emittance();
+      // Visibility sampled by `samples` rays: a binomial fraction, about the link's.
+      const double seen = std::max(link.visibility, 1.0 / samples);
+      visibilityVariance += std::pow(transport * largestBand(e), 2) * (1.0 - seen) / (seen * samples);
       const int category = lightCategoryOf(*link.sender);
       for (int band = 0; band < maxBands; ++band)
         irradiance[category][band] += transport * e[band];
@@ -241,6 +265,7 @@ PointIrradiance PointEvaluator::irradianceAt(
   // was assigned to and whether or not the links there still hold the sun (a shadowed
   // element's sun link is dropped, yet its border posts may be lit).
   irradiance[SunLight] = this->directSunAt(point, normal, &result.sunlitHours);
+  result.irradianceError = errorCoverage * std::sqrt(visibilityVariance);
   // Sky and light from surfaces by a final gather from the point (inside its leaf, as
   // form factors), over the leaves' solved radiosity.
   if (gathered)
@@ -287,6 +312,15 @@ PointIrradiance PointEvaluator::irradianceAt(
       largestBand(sun), this->Solver.largestRadiosity() > 0.0, post);
     irradiance[ReflectedLight] = light.surfaces;
     result.gatherVariance = light.variance;
+    // The rays' noise, and the error of the light from surfaces their hits read, which
+    // the hierarchy's measured deficit estimates (as well as its sample tells: the same
+    // margin).
+    result.irradianceError =
+      errorCoverage * (light.standardError + this->Deficit.after(this->BouncesRead) * light.interreflected);
+    // Rays that met no lit surface say nothing of a rare one they missed: the terrain and
+    // objects the point sees (all but its sky) send at most the scene's largest radiosity.
+    if (!(largestBand(light.surfaces) > 0.0))
+      result.irradianceError += std::max(0.0, 1.0 - light.skyViewFactor) * this->Solver.largestRadiosity();
     irradiance[SkyLight] = light.sky;
     result.skyViewFactor = light.skyViewFactor;
   }
@@ -323,6 +357,9 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   }
   result.skyViewFactor = std::clamp(sky.skyViewFactor + terrainSeen * found.skyViewCorrection, 0.0, 1.0);
   result.gatherVariance = around.variance;
+  // Read between lattice posts that agree within their spread: it bounds the error.
+  result.irradianceError = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen) +
+    errorCoverage * this->Deficit.after(this->BouncesRead) * largestBand(result.irradiance[ReflectedLight]);
   return true;
 }
 
@@ -457,66 +494,18 @@ void PointEvaluator::gatherLeaves(bool terrains)
     leaves.end());
   if (leaves.empty())
     return;
-  // Each leaf's id, and how far its points are lifted: as points are (three ray
-  // offsets), above a rough patch's crease; a non-planar quad's points (on its bilinear
-  // surface) also by how far the input quad's corners leave its plane, above both
-  // triangles rays meet (else, on a displaced vtkPlaneSource, points under them saw
-  // backs and nearly every leaf looked buried, at four times the rays).
+  const LeafGather gathering(leaves, this->Rays, std::min(Tuning::leafGatherRays, this->Options.gatherSamples),
+    this->Solver.largestRadiosity() > 0.0);
   std::vector<std::uint64_t> ids(leaves.size());
-  std::vector<double> lifts(leaves.size(), 3.0 * this->Rays.offset());
   for (std::size_t k = 0; k < leaves.size(); ++k)
-  {
     ids[k] = leaves[k]->id();
-    if (dynamic_cast<const TerrainPatch*>(leaves[k]))
-      continue;
-    const PolygonElement* root = leaves[k];
-    while (root->Parent && root->Parent->isSurface())
-      root = static_cast<const PolygonElement*>(root->Parent);
-    for (int c = 0; c < root->cornerCount(); ++c)
-      lifts[k] = std::max(lifts[k],
-        3.0 * this->Rays.offset() + std::abs(glm::dot(root->corners()[c] - root->centre(), root->normal())));
-  }
-  // A few points of each leaf, a few rays from each, no pilot: a point's rays meet many
-  // leaves, whose noise averages out.
-  constexpr int points = 4, morePoints = 16;
-  GatherBudget budget;
-  budget.pilot = 0;
-  budget.minimum = budget.maximum = std::max(1, std::min(Tuning::leafGatherRays, this->Options.gatherSamples) / points);
-  const bool surfacesSend = this->Solver.largestRadiosity() > 0.0;
   for (int pass = 0; pass < Tuning::leafGatherPasses; ++pass)
   {
     // The first pass gathers over the hierarchy's values, the next over the last pass's.
     this->Gather = this->makeGather();
     auto next = std::make_unique<LeafLight>(this->Solver.elements().size(), ids);
     tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t k) {
-      const PolygonElement& leaf = *leaves[k];
-      SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
-      std::vector<LeafLight::Sample> seen;
-      int buried = 0;
-      auto gatherAt = [&](int p, int n) {
-        const SurfaceSample at = leaf.sample(p, n, random);
-        const Vec3 from = at.position + lifts[k] * at.normal;
-        const GatheredLight received = this->Gather->irradianceAt(
-          from, at.normal, budget, this->Rays.seedOf(from) ^ static_cast<std::uint64_t>(pass), 0.0, surfacesSend);
-        // A point whose rays meet the backs of surfaces lies inside something (the part
-        // of a house's wall below the ground): the light of the leaf is that of its
-        // other points, which hits can reach.
-        if (4 * received.backRays > received.count)
-          ++buried;
-        else
-          seen.push_back({ at.position, received.sky, received.surfaces });
-      };
-      for (int p = 0; p < points; ++p)
-        gatherAt(p, points);
-      // A partly buried leaf: its open part may be a thin strip (a wall's foot above
-      // sloping ground), which hits meet most from nearby; sought with more points.
-      if (buried > 0)
-      {
-        seen.clear();
-        for (int p = 0; p < morePoints; ++p)
-          gatherAt(p, morePoints);
-      }
-      next->set(k, leaf.normal(), seen);
+      next->set(k, leaves[k]->normal(), gathering.at(k, *this->Gather, static_cast<std::uint64_t>(pass)));
     });
     this->Leaves = std::move(next);
   }

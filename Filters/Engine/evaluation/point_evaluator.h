@@ -5,6 +5,7 @@
 // over the leaves' radiosity. Its constructor runs the phases in the engine's order
 // (docs/architecture.md); once built, it only answers.
 
+#include "evaluation/leaf_gather.h"
 #include "evaluation/post_lattice.h"
 #include "horizons/horizon_map.h"
 #include "hierarchy/radiosity_types.h"
@@ -154,5 +155,7 @@ private:
     Spectrum sky, reflected, radiosity;
   };
   std::vector<ReplacedLeaf> Replaced;
+  HierarchyDeficit Deficit; // of the hierarchy's light from surfaces, for error estimates
+  int BouncesRead = 0;      // gathered bounces above it in what gather hits read
 };
 } // namespace terralux

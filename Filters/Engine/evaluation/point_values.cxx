@@ -21,6 +21,7 @@ PointValues PointValues::atPoint(const PointIrradiance& received, const PolygonE
   v.radiosity = radiosityOf(leaf.emission(), leaf.reflectance(), v.globalIrradiance());
   v.skyViewFactor = received.skyViewFactor;
   v.sunlitHours = received.sunlitHours;
+  v.irradianceError = received.irradianceError;
   return v;
 }
 
@@ -39,6 +40,7 @@ void PointValues::accumulate(const PointValues& v, double weight)
   }
   this->skyViewFactor += weight * v.skyViewFactor;
   this->sunlitHours += weight * v.sunlitHours;
+  this->irradianceError += weight * v.irradianceError;
 }
 
 void PointValues::flatten(double* out) const

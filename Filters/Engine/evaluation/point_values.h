@@ -24,6 +24,8 @@ struct PointValues
   Spectrum radiosity{};
   double skyViewFactor = 0.0;
   double sunlitHours = 0.0;
+  /// Estimated error of the global irradiance (largest band, W/m^2), at points only.
+  double irradianceError = 0.0;
 
   /// A leaf's own values (uniform over it, as the hierarchy holds them).
   static PointValues ofLeaf(const PolygonElement& leaf);

@@ -97,6 +97,8 @@ struct PointIrradiance
   double skyViewFactor = 0.0;
   double sunlitHours = 0.0; ///< durations of the suns that reach the point (addSun)
   double gatherVariance = 0.0; ///< of one final-gather ray's estimate (largest band)
+  /// Estimated error of the global irradiance (largest band, W/m^2; PointEvaluator).
+  double irradianceError = 0.0;
 };
 
 class RadiosityProgress

@@ -26,6 +26,8 @@ struct Tuning
   // The leaves' own gather (LeafLight): rays per leaf and passes (bounces).
   static constexpr int leafGatherRays = 256;
   static constexpr int leafGatherPasses = 3;
+  /// Leaves sampled to measure how far the hierarchy's light from surfaces is off.
+  static constexpr std::size_t deficitProbeLeaves = 512;
 
   // A post's final gather, below its horizon (TerrainDirections).
   /// Its rays are capped at the gather's maximum over this.

@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -103,9 +104,9 @@ public:
         points.push_back(grid.post(i, j));
         normals.push_back(grid.postNormal(i, j));
       }
-    Reference = new std::vector<double>();
+    Reference = new std::vector<terralux_reference::Estimate>();
     for (const auto& estimate : tracer.irradianceAt(points, normals, 4096))
-      Reference->push_back(estimate.global.mean);
+      Reference->push_back(estimate.global);
   }
   static void TearDownTestSuite()
   {
@@ -130,10 +131,13 @@ protected:
     sun->SetUserDiffuseHorizontalIrradiance(0.0);
     return sun;
   }
-  // Output 0's Irradiance at every post, its pieces put together.
-  static std::vector<double> Solve(vtkHierarchicalRadiosity* radiosity, int pieces)
+  // Output 0's Irradiance at every post, its pieces put together; with `errors`, its
+  // IrradianceError too (NaN without the array).
+  static std::vector<double> Solve(vtkHierarchicalRadiosity* radiosity, int pieces, std::vector<double>* errors = nullptr)
   {
     std::vector<double> values(posts * posts, NAN);
+    if (errors)
+      errors->assign(values.size(), NAN);
     for (int piece = 0; piece < pieces; ++piece)
     {
       vtkNew<MessageCatcher> messages;
@@ -149,19 +153,24 @@ protected:
       }
       int extent[6];
       grid->GetExtent(extent);
+      vtkDataArray* error = grid->GetPointData()->GetArray("IrradianceError");
       vtkIdType k = 0;
       for (int j = extent[2]; j <= extent[3]; ++j)
-        for (int i = extent[0]; i <= extent[1]; ++i)
-          values[j * posts + i] = irradiance->GetComponent(k++, 0);
+        for (int i = extent[0]; i <= extent[1]; ++i, ++k)
+        {
+          values[j * posts + i] = irradiance->GetComponent(k, 0);
+          if (errors && error)
+            (*errors)[j * posts + i] = error->GetComponent(k, 0);
+        }
     }
     return values;
   }
 
   static std::string* File;
-  static std::vector<double>* Reference;
+  static std::vector<terralux_reference::Estimate>* Reference;
 };
 std::string* ModeCombinations::File = nullptr;
-std::vector<double>* ModeCombinations::Reference = nullptr;
+std::vector<terralux_reference::Estimate>* ModeCombinations::Reference = nullptr;
 
 TEST_P(ModeCombinations, AgreeWithTheReferenceAndAcrossPieces)
 {
@@ -185,15 +194,19 @@ TEST_P(ModeCombinations, AgreeWithTheReferenceAndAcrossPieces)
     radiosity->SetFarTerrainConnection(terrain->GetOutputPort(1));
   }
 
-  const std::vector<double> whole = Solve(radiosity, 1);
+  std::vector<double> errors;
+  const std::vector<double> whole = Solve(radiosity, 1, &errors);
   double sum = 0.0, squares = 0.0;
-  int count = 0;
+  int count = 0, covered = 0;
   for (std::size_t k = 0; k < whole.size(); ++k)
   {
     ASSERT_TRUE(std::isfinite(whole[k])) << k;
-    sum += (*Reference)[k];
-    squares += (whole[k] - (*Reference)[k]) * (whole[k] - (*Reference)[k]);
+    const double reference = (*Reference)[k].mean, difference = whole[k] - reference;
+    sum += reference;
+    squares += difference * difference;
     ++count;
+    // The estimate, widened by the reference's own noise, holds the difference.
+    covered += std::abs(difference) <= std::hypot(errors[k], 2.0 * (*Reference)[k].standardError);
   }
   const double rms = std::sqrt(squares / count) / (sum / count);
   // About 2.5 x what each mode measured (at points 0.14-0.25 %, averaged 0.1-0.5 %; the
@@ -201,12 +214,31 @@ TEST_P(ModeCombinations, AgreeWithTheReferenceAndAcrossPieces)
   const double bound = modes.atPoints ? 0.006 : 0.0125;
   EXPECT_LT(rms, bound) << nameOf(modes);
   std::printf("%-44s global RMS %.3f %% of the reference's mean\n", nameOf(modes).c_str(), 100.0 * rms);
+  // At points, IrradianceError: an estimate of each post's error that holds it at 90 %
+  // of posts or more, with its median at most 2 % of the mean global.
+  if (modes.atPoints)
+  {
+    std::vector<double> sorted = errors;
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_TRUE(std::isfinite(sorted.back()) && sorted.front() >= 0.0);
+    const double median = sorted[sorted.size() / 2] / (sum / count);
+    std::printf("%-44s IrradianceError covers %.1f %% of posts, median %.3f %% of the mean\n",
+      nameOf(modes).c_str(), 100.0 * covered / count, 100.0 * median);
+    EXPECT_GE(covered, 0.9 * count);
+    EXPECT_LE(median, 0.02);
+  }
+  else
+    EXPECT_TRUE(std::isnan(errors.front())) << "averaged values have no error estimate";
 
   // A second update over the same scene (its geometry reused) and 3 pieces give the
   // same values, bit for bit.
   radiosity->Modified();
-  EXPECT_EQ(Solve(radiosity, 1), whole) << "second update";
-  EXPECT_EQ(Solve(radiosity, 3), whole) << "3 pieces";
+  std::vector<double> again;
+  EXPECT_EQ(Solve(radiosity, 1, &again), whole) << "second update";
+  EXPECT_EQ(Solve(radiosity, 3, &again), whole) << "3 pieces";
+  for (std::size_t k = 0; k < errors.size(); ++k)
+    if (!(std::isnan(errors[k]) && std::isnan(again[k])))
+      ASSERT_NEAR(again[k], errors[k], 1e-9 * (1.0 + errors[k])) << "IrradianceError of 3 pieces at " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMode, ModeCombinations, ::testing::ValuesIn(combinations()),

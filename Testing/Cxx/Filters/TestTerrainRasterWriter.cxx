@@ -67,7 +67,7 @@ TEST(TerrainRasterWriter, RadiosityResultsLandOnTheDemGrid)
   ASSERT_TRUE(written && source);
   EXPECT_EQ(written->GetRasterXSize(), 15); // posts 2, 4, ..., 30
   EXPECT_EQ(written->GetRasterYSize(), 12); // posts 1, 3, ..., 23
-  EXPECT_EQ(written->GetRasterCount(), 5);
+  EXPECT_EQ(written->GetRasterCount(), 6); // the four irradiances, radiosity, IrradianceError
   EXPECT_TRUE(written->GetSpatialRef()->IsSame(source->GetSpatialRef()));
   // Compressed losslessly, after the floating-point predictor (the values are compared
   // exactly below).

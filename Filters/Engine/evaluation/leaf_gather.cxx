@@ -1,0 +1,126 @@
+#include "evaluation/leaf_gather.h"
+
+#include "evaluation/final_gather.h"
+#include "hierarchy/polygon_element.h"
+#include "hierarchy/terrain_patch.h"
+#include "visibility/sampling.h"
+#include "visibility/visibility.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace terralux
+{
+namespace
+{
+constexpr int points = 4, morePoints = 16; // of each leaf; of a partly buried one
+constexpr double maximumRelative = 4.0;      // of the deficit: the leaves hold a fifth or more
+}
+
+LeafGather::LeafGather(std::vector<PolygonElement*> leaves, const Visibility& rays, int raysPerLeaf, bool surfacesSend)
+  : Leaves(std::move(leaves))
+  , Lifts(this->Leaves.size(), 3.0 * rays.offset())
+  , Rays(rays)
+  , RaysPerPoint(std::max(1, raysPerLeaf / points))
+  , SurfacesSend(surfacesSend)
+{
+  // Points are lifted as points users read are (three ray offsets), above a rough
+  // patch's crease; a non-planar quad's points (on its bilinear surface) also by how far
+  // the input quad's corners leave its plane, above both triangles rays meet (else, on a
+  // displaced vtkPlaneSource, points under them saw backs and nearly every leaf looked
+  // buried, at four times the rays).
+  for (std::size_t k = 0; k < this->Leaves.size(); ++k)
+  {
+    if (dynamic_cast<const TerrainPatch*>(this->Leaves[k]))
+      continue;
+    const PolygonElement* root = this->Leaves[k];
+    while (root->Parent && root->Parent->isSurface())
+      root = static_cast<const PolygonElement*>(root->Parent);
+    for (int c = 0; c < root->cornerCount(); ++c)
+      this->Lifts[k] = std::max(this->Lifts[k],
+        3.0 * rays.offset() + std::abs(glm::dot(root->corners()[c] - root->centre(), root->normal())));
+  }
+}
+
+std::vector<LeafLight::Sample> LeafGather::at(
+  std::size_t k, const FinalGather& gather, std::uint64_t pass, double* interreflected) const
+{
+  // A few rays from each point, no pilot: a point's rays meet many leaves, whose noise
+  // averages out.
+  GatherBudget budget;
+  budget.pilot = 0;
+  budget.minimum = budget.maximum = this->RaysPerPoint;
+  const PolygonElement& leaf = *this->Leaves[k];
+  SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
+  std::vector<LeafLight::Sample> seen;
+  double bounced = 0.0;
+  int buried = 0;
+  auto gatherAt = [&](int p, int n) {
+    const SurfaceSample at = leaf.sample(p, n, random);
+    const Vec3 from = at.position + this->Lifts[k] * at.normal;
+    const GatheredLight received =
+      gather.irradianceAt(from, at.normal, budget, this->Rays.seedOf(from) ^ pass, 0.0, this->SurfacesSend);
+    if (4 * received.backRays > received.count)
+      ++buried;
+    else
+      seen.push_back({ at.position, received.sky, received.surfaces }), bounced += received.interreflected;
+  };
+  for (int p = 0; p < points; ++p)
+    gatherAt(p, points);
+  // A partly buried leaf: its open part may be a thin strip (a wall's foot above sloping
+  // ground), which hits meet most from nearby.
+  if (buried > 0)
+  {
+    seen.clear();
+    bounced = 0.0;
+    for (int p = 0; p < morePoints; ++p)
+      gatherAt(p, morePoints);
+  }
+  if (interreflected)
+    *interreflected = seen.empty() ? 0.0 : bounced / static_cast<double>(seen.size());
+  return seen;
+}
+
+double HierarchyDeficit::after(int bounces) const
+{
+  return this->relative * std::pow(this->bounceFactor, bounces);
+}
+
+HierarchyDeficit HierarchyDeficit::measure(const LeafGather& leaves, const FinalGather& gather, std::size_t sampled)
+{
+  const std::size_t count = leaves.leaves().size(), stride = std::max<std::size_t>(1, count / std::max<std::size_t>(1, sampled));
+  const std::size_t taken = (count + stride - 1) / stride;
+  // Per sampled leaf, by its area: R0, R1 and M1 (largest bands).
+  std::vector<double> held(taken), gathered(taken), bounced(taken);
+  constexpr std::uint64_t probe = 0x5EED; // points and rays of their own
+  tbb::parallel_for(std::size_t(0), taken, [&](std::size_t s) {
+    const std::size_t k = s * stride;
+    const PolygonElement& leaf = *leaves.leaves()[k];
+    double interreflected = 0.0;
+    const std::vector<LeafLight::Sample> seen = leaves.at(k, gather, probe, &interreflected);
+    if (seen.empty())
+      return;
+    double reflected = 0.0;
+    for (const LeafLight::Sample& sample : seen)
+      reflected += largestBand(sample.reflected) / static_cast<double>(seen.size());
+    held[s] = leaf.area() * largestBand(leaf.Irradiance[ReflectedLight]);
+    gathered[s] = leaf.area() * reflected;
+    bounced[s] = leaf.area() * interreflected;
+  });
+  double r0 = 0.0, r1 = 0.0, m1 = 0.0;
+  for (std::size_t s = 0; s < taken; ++s)
+    r0 += held[s], r1 += gathered[s], m1 += bounced[s];
+  HierarchyDeficit deficit;
+  if (!(r1 > 0.0))
+    return deficit;
+  deficit.bounceFactor = r0 > 0.0 ? std::clamp(m1 / r0, 0.0, 1.0) : 1.0;
+  // Where R0 - M1 is near 0 (the leaves hold next to nothing, or noise) the quotient
+  // means nothing: the leaves are then taken as wrong by their whole value or more.
+  const double kept = r0 - m1;
+  deficit.relative = kept > 0.05 * std::max(r0, r1) ? std::min(maximumRelative, std::abs(r1 - r0) / kept)
+                                                    : maximumRelative;
+  return deficit;
+}
+} // namespace terralux
