@@ -10,7 +10,7 @@
 namespace terralux
 {
 OpenSky::OpenSky(const SkyHierarchy& sky)
-  : Deepest(std::min(sky.finestLevel(), 4))
+  : Deepest(std::min(sky.finestLevel(), 5))
   , Side(SkyHierarchy::cellsPerSide(sky.finestLevel()))
   , Bands(std::clamp(sky.bands(), 1, maxBands))
 {

@@ -26,7 +26,7 @@ public:
   /// solid angle of the sky above both the plane and the horizon (pi x the sky view
   /// factor of an open plane): patches wholly in front of the plane exactly through
   /// their irradiance vectors, those its horizon crosses split (to level 3 at least, on
-  /// toward the sky map's finest level, at most 4, while one gives anything) and
+  /// toward the sky map's finest level, at most 5, while one gives anything) and
   /// integrated exactly in solid angle there.
   /// With a table (tabulate), normals above the horizon are read from it instead.
   void irradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const;

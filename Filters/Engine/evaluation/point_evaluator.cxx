@@ -316,11 +316,14 @@ PointIrradiance PointEvaluator::irradianceAt(
     // the hierarchy's measured deficit estimates (as well as its sample tells: the same
     // margin).
     result.irradianceError =
-      errorCoverage * (light.standardError + this->Deficit.after(this->BouncesRead) * light.interreflected);
+      errorCoverage * (light.standardError + this->Deficit.after(this->BouncesRead) * light.interreflected) +
+      Tuning::openSkyError * largestBand(light.sky);
     // Rays that met no lit surface say nothing of a rare one they missed: the terrain and
     // objects the point sees (all but its sky) send at most the scene's largest radiosity.
     if (!(largestBand(light.surfaces) > 0.0))
       result.irradianceError += std::max(0.0, 1.0 - light.skyViewFactor) * this->Solver.largestRadiosity();
+    if (light.count == 0 && post)
+      result.irradianceError += this->uncheckedHorizonSkyError(normal, light.sky);
     irradiance[SkyLight] = light.sky;
     result.skyViewFactor = light.skyViewFactor;
   }
@@ -360,7 +363,21 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // Read between lattice posts that agree within their spread: it bounds the error.
   result.irradianceError = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen) +
     errorCoverage * this->Deficit.after(this->BouncesRead) * largestBand(result.irradiance[ReflectedLight]);
+  result.irradianceError += Tuning::openSkyError * largestBand(result.irradiance[SkyLight]);
+  // The lattice's posts cast no ray below their horizons where nothing sends light.
+  if (!(this->Solver.largestRadiosity() > 0.0))
+    result.irradianceError += this->uncheckedHorizonSkyError(normal, result.irradiance[SkyLight]);
   return true;
+}
+
+double PointEvaluator::uncheckedHorizonSkyError(const Vec3& normal, const Spectrum& sky) const
+{
+  if (!this->SkyAtPoints)
+    return 0.0;
+  Spectrum open{};
+  double projectedSolidAngle = 0.0;
+  this->SkyAtPoints->irradiance(normal, open, projectedSolidAngle);
+  return Tuning::horizonSkyError * std::max(0.0, largestBand(open) - largestBand(sky));
 }
 
 Vec3 PointEvaluator::openSideOf(

@@ -109,6 +109,10 @@ private:
   /// sky, or surfaces that send light).
   bool gathersAtPoints() const;
   bool wantsDenseHorizons() const;
+  /// Where no ray below a post's horizons checked them (nothing there sends light), its
+  /// sky is its horizons' alone, found at a few dozen azimuths: the error estimate takes
+  /// Tuning::horizonSkyError of the sky they hide from the plane at `normal`.
+  double uncheckedHorizonSkyError(const Vec3& normal, const Spectrum& sky) const;
   /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
   /// leaf) unless that sees the back of a surface, then the most open of four points two
   /// ray offsets from it diagonally in its plane, if clearly more open (the reference's
