@@ -8,6 +8,7 @@
 // (sun, sky, reflected, global), RMS, 95th percentile, maximum and bias of the error over
 // the reference's mean, with the reference's own standard error. run_accuracy_report.sh
 // sweeps them and Testing/Benchmarks/accuracy_report.py writes the tables and plots.
+#include "base/angles.h"
 #include "accuracy_scenes.h"
 #include "path_tracer.h"
 #include "reference_scene.h"
@@ -187,7 +188,7 @@ int describe(const terralux_bench::AccuracyScene& input)
   std::vector<double> slopes;
   for (std::size_t k = 0; k < s.points.size(); ++k)
     if (s.used[k])
-      slopes.push_back(std::acos(std::clamp(s.normals[k].z, -1.0, 1.0)) * 180.0 / 3.14159265358979323846);
+      slopes.push_back(std::acos(std::clamp(s.normals[k].z, -1.0, 1.0)) / terralux::degree);
   double mean = 0.0;
   for (double slope : slopes)
     mean += slope / std::max<std::size_t>(1, slopes.size());

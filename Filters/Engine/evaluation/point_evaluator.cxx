@@ -1,5 +1,6 @@
 #include "evaluation/point_evaluator.h"
 
+#include "base/elapsed.h"
 #include "evaluation/final_gather.h"
 #include "evaluation/leaf_gather.h"
 #include "evaluation/open_sky.h"
@@ -48,11 +49,6 @@ double receivedBesideSurfaces(const Spectrum& sun, const PostSky::Value& sky)
 // Standard errors in an error estimate: about 95 % of normal errors lie within two. The
 // same margin on estimated biases.
 constexpr double errorCoverage = 2.0;
-
-double secondsSince(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 } // namespace
 
 PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPlan& plan)
@@ -82,12 +78,13 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
   // gathered over the hierarchy's own surface, the same for every process (a window's
   // too), reading its leaves alone (no post's values, which a process holds near its
   // window only).
+  HierarchyDeficit deficit;
   if (plan.atPoints && this->gathersAtPoints() && solved.largestRadiosity() > 0.0)
   {
     const GatherInputs overHierarchy{ this->Rays, solved.polygonRoots(), solved.terrainRoots(), solved.hierarchySuns() };
     const LeafGather probe(solved.surfaceLeaves(), this->Rays,
       std::min(Tuning::leafGatherRays, this->Options.gatherSamples), true);
-    this->Deficit = HierarchyDeficit::measure(probe, FinalGather(overHierarchy), Tuning::deficitProbeLeaves);
+    deficit = HierarchyDeficit::measure(probe, FinalGather(overHierarchy), Tuning::deficitProbeLeaves);
   }
   // At points, what gather rays meet; averaged, the polygons' values themselves
   // (terrain patches keep the hierarchy's: the fast mode of a DEM).
@@ -106,7 +103,7 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
   // What the final gathers' hits read of light from surfaces: the lattice's (one bounce
   // gathered above the hierarchy's values), the leaves' (each pass one bounce), or the
   // hierarchy's own.
-  this->BouncesRead = this->Lattice ? 1 : this->Leaves ? Tuning::leafGatherPasses : 0;
+  this->ReadRelativeError = deficit.after(this->Lattice ? 1 : this->Leaves ? Tuning::leafGatherPasses : 0);
 }
 
 PointEvaluator::~PointEvaluator()
@@ -316,14 +313,12 @@ PointIrradiance PointEvaluator::irradianceAt(
     // the hierarchy's measured deficit estimates (as well as its sample tells: the same
     // margin).
     result.irradianceError =
-      errorCoverage * (light.standardError + this->Deficit.after(this->BouncesRead) * light.interreflected) +
-      Tuning::openSkyError * largestBand(light.sky);
+      errorCoverage * (light.standardError + this->ReadRelativeError * light.interreflected) +
+      this->skyError(normal, light.sky, light.count > 0 || !post);
     // Rays that met no lit surface say nothing of a rare one they missed: the terrain and
     // objects the point sees (all but its sky) send at most the scene's largest radiosity.
     if (!(largestBand(light.surfaces) > 0.0))
       result.irradianceError += std::max(0.0, 1.0 - light.skyViewFactor) * this->Solver.largestRadiosity();
-    if (light.count == 0 && post)
-      result.irradianceError += this->uncheckedHorizonSkyError(normal, light.sky);
     irradiance[SkyLight] = light.sky;
     result.skyViewFactor = light.skyViewFactor;
   }
@@ -362,22 +357,21 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   result.gatherVariance = around.variance;
   // Read between lattice posts that agree within their spread: it bounds the error.
   result.irradianceError = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen) +
-    errorCoverage * this->Deficit.after(this->BouncesRead) * largestBand(result.irradiance[ReflectedLight]);
-  result.irradianceError += Tuning::openSkyError * largestBand(result.irradiance[SkyLight]);
-  // The lattice's posts cast no ray below their horizons where nothing sends light.
-  if (!(this->Solver.largestRadiosity() > 0.0))
-    result.irradianceError += this->uncheckedHorizonSkyError(normal, result.irradiance[SkyLight]);
+    errorCoverage * this->ReadRelativeError * largestBand(result.irradiance[ReflectedLight]) +
+    // The lattice's posts cast no ray below their horizons where nothing sends light.
+    this->skyError(normal, result.irradiance[SkyLight], this->Solver.largestRadiosity() > 0.0);
   return true;
 }
 
-double PointEvaluator::uncheckedHorizonSkyError(const Vec3& normal, const Spectrum& sky) const
+double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, bool horizonsChecked) const
 {
-  if (!this->SkyAtPoints)
-    return 0.0;
+  const double own = Tuning::openSkyError * largestBand(sky);
+  if (horizonsChecked || !this->SkyAtPoints)
+    return own;
   Spectrum open{};
   double projectedSolidAngle = 0.0;
   this->SkyAtPoints->irradiance(normal, open, projectedSolidAngle);
-  return Tuning::horizonSkyError * std::max(0.0, largestBand(open) - largestBand(sky));
+  return own + Tuning::horizonSkyError * std::max(0.0, largestBand(open) - largestBand(sky));
 }
 
 Vec3 PointEvaluator::openSideOf(

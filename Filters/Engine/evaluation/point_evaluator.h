@@ -5,7 +5,6 @@
 // over the leaves' radiosity. Its constructor runs the phases in the engine's order
 // (docs/architecture.md); once built, it only answers.
 
-#include "evaluation/leaf_gather.h"
 #include "evaluation/post_lattice.h"
 #include "horizons/horizon_map.h"
 #include "hierarchy/radiosity_types.h"
@@ -109,10 +108,11 @@ private:
   /// sky, or surfaces that send light).
   bool gathersAtPoints() const;
   bool wantsDenseHorizons() const;
-  /// Where no ray below a post's horizons checked them (nothing there sends light), its
-  /// sky is its horizons' alone, found at a few dozen azimuths: the error estimate takes
-  /// Tuning::horizonSkyError of the sky they hide from the plane at `normal`.
-  double uncheckedHorizonSkyError(const Vec3& normal, const Spectrum& sky) const;
+  /// The error estimate's part for the sky a point receives: the open sky's own error
+  /// (Tuning::openSkyError) and, where no ray below a post's horizons checked them
+  /// (nothing there sends light), Tuning::horizonSkyError of the sky they hide from the
+  /// plane at `normal`: found at a few dozen azimuths.
+  double skyError(const Vec3& normal, const Spectrum& sky, bool horizonsChecked) const;
   /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
   /// leaf) unless that sees the back of a surface, then the most open of four points two
   /// ray offsets from it diagonally in its plane, if clearly more open (the reference's
@@ -159,7 +159,8 @@ private:
     Spectrum sky, reflected, radiosity;
   };
   std::vector<ReplacedLeaf> Replaced;
-  HierarchyDeficit Deficit; // of the hierarchy's light from surfaces, for error estimates
-  int BouncesRead = 0;      // gathered bounces above it in what gather hits read
+  // The relative error of the light from surfaces gather hits read: the hierarchy's
+  // measured deficit through the bounces gathered above it (HierarchyDeficit::after).
+  double ReadRelativeError = 0.0;
 };
 } // namespace terralux

@@ -1,6 +1,7 @@
 #include "solver/solver.h"
 
 #include "base/angles.h"
+#include "base/elapsed.h"
 #include "solver/bf_oracle.h"
 #include "hierarchy/cluster.h"
 #include "base/error.h"
@@ -26,15 +27,6 @@
 
 namespace terralux
 {
-namespace
-{
-
-double secondsSince(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-} // namespace
-
 HierarchicalRadiosity::HierarchicalRadiosity(
   const RadiosityScene& scene, const RadiosityOptions& options, std::shared_ptr<SceneGeometry> geometry)
   : Options(options)
