@@ -41,14 +41,15 @@
  * each point's estimated error of `Irradiance` (W/m^2, largest band): twice the final
  * gather's standard error plus the light from surfaces its hits read times the
  * hierarchy's relative error, measured by gathering over it (docs/validation.md checks
- * it against the reference); field
+ * it against the reference); the work goes where it misses TargetError; field
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons`, `SkippedCells`
  * (vertex and line cells, and polygons of fewer than 3 points: no area, no light), seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsHorizons` for the horizons of every post,
  * `SecondsRefine`, `SecondsGather`, `SecondsPushPull`, `SecondsPoints` for output 0's
  * point values, of which `SecondsLattice` for the lattice of posts gathered first) and
  * rays per phase (`RaysRefine`, `RaysPushPull` for gather and push-pull, `RaysPoints`,
- * of which `RaysLattice`).
+ * of which `RaysLattice`), and where the work went per point of output 0 (a terrain's
+ * posts): `RaysPerPoint` (of `RaysPoints`) and `ElementsPerPoint`.
  * Output port 1: the adaptive leaf mesh, one cell per leaf element with cell data
  * `Level`, `InputIndex` and `InputCell` (the leaf's input data set, in connection and
  * composite order, and its cell there: results map back to the input's blocks), and

@@ -57,11 +57,12 @@ std::vector<vtkDataSet*> inputDataSets(vtkInformationVector* port)
 vtkRadiosityFilter::vtkRadiosityFilter(int inputPorts, int farTerrainPort)
   : FarTerrainPort(farTerrainPort)
   , ReuseGeometry(1)
-  , ErrorTolerance(1e-3)
+  , ErrorTolerance(1e-2)
   , MinimumElementArea(0.0)
   , VisibilitySamples(4)
   , MaximumGatherRays(4096)
-  , GatherError(0.003)
+  , TargetError(0.008)
+  , TargetErrorFloor(2.0)
   , DetailDistance(0.0)
   , FarTerrainStride(1)
   , MaximumIterations(30)
@@ -319,7 +320,8 @@ std::unique_ptr<vtkRadiosityScene> vtkRadiosityFilter::BuildScene(vtkInformation
 {
   terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
     { "MinimumElementArea", this->MinimumElementArea }, { "ConvergenceTolerance", this->ConvergenceTolerance },
-    { "DefaultReflectance", this->DefaultReflectance }, { "GatherError", this->GatherError },
+    { "DefaultReflectance", this->DefaultReflectance }, { "TargetError", this->TargetError },
+    { "TargetErrorFloor", this->TargetErrorFloor },
     { "DetailDistance", this->DetailDistance } });
   this->CheckCellArraysToProcess();
   auto scene = std::make_unique<vtkRadiosityScene>();
@@ -371,7 +373,8 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumElementArea: " << this->MinimumElementArea << "\n";
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
   os << indent << "MaximumGatherRays: " << this->MaximumGatherRays << "\n";
-  os << indent << "GatherError: " << this->GatherError << "\n";
+  os << indent << "TargetError: " << this->TargetError << "\n";
+  os << indent << "TargetErrorFloor: " << this->TargetErrorFloor << "\n";
   os << indent << "DetailDistance: " << this->DetailDistance << "\n";
   os << indent << "FarTerrainStride: " << this->FarTerrainStride << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";

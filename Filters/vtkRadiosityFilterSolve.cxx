@@ -149,8 +149,13 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
   addValue("SecondsLattice", evaluation.latticeSeconds);
   addValue("RaysRefine", static_cast<double>(stats.raysRefine));
   addValue("RaysPushPull", static_cast<double>(stats.raysPushPull));
-  addValue("RaysPoints", static_cast<double>(solver.raysCast() - stats.rays));
+  const double pointsRays = static_cast<double>(solver.raysCast() - stats.rays);
+  addValue("RaysPoints", pointsRays);
   addValue("RaysLattice", static_cast<double>(evaluation.latticeRays));
+  // Where the work went, per point the outputs read (a terrain's posts).
+  const double points = static_cast<double>(std::max<std::size_t>(1, solver.pointCount()));
+  addValue("RaysPerPoint", pointsRays / points);
+  addValue("ElementsPerPoint", static_cast<double>(stats.elements) / points);
 }
 
 } // namespace
@@ -163,7 +168,8 @@ terralux::HierarchicalRadiosity& vtkRadiosityFilter::PrepareSolver(std::unique_p
   options.minimumElementArea = this->MinimumElementArea;
   options.visibilitySamples = this->VisibilitySamples;
   options.gatherSamples = this->MaximumGatherRays;
-  options.gatherError = this->GatherError;
+  options.targetError = this->TargetError;
+  options.targetErrorFloor = this->TargetErrorFloor;
   options.gatherDetailDistance = this->DetailDistance;
   options.farTerrainStride = this->FarTerrainStride;
   options.skyFromHorizons = this->SkyFromHorizons != 0;

@@ -353,10 +353,12 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   radiosity->SetErrorTolerance(tolerance);
   radiosity->SetEvaluateAtPoints(method != "averaged");
   radiosity->SetSkyFromHorizons(method != "rays");
-  // TERRALUX_REPORT_GATHER_ERROR / TERRALUX_REPORT_GATHER_RAYS: GatherError and
-  // MaximumGatherRays other than the defaults (is an error noise or bias?).
-  if (const char* value = std::getenv("TERRALUX_REPORT_GATHER_ERROR"))
-    radiosity->SetGatherError(std::atof(value));
+  // TERRALUX_REPORT_TARGET_ERROR, _TARGET_FLOOR, _GATHER_RAYS: TargetError,
+  // TargetErrorFloor and MaximumGatherRays other than the defaults.
+  if (const char* value = std::getenv("TERRALUX_REPORT_TARGET_ERROR"))
+    radiosity->SetTargetError(std::atof(value));
+  if (const char* value = std::getenv("TERRALUX_REPORT_TARGET_FLOOR"))
+    radiosity->SetTargetErrorFloor(std::atof(value));
   if (const char* value = std::getenv("TERRALUX_REPORT_GATHER_RAYS"))
     radiosity->SetMaximumGatherRays(std::atoi(value));
   // TERRALUX_REPORT_DETAIL_DISTANCE: far gather hits take their leaves' light (m).

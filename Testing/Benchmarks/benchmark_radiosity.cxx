@@ -7,7 +7,9 @@
 // elements (EvaluateAtPoints off) instead of evaluated at the points; with
 // TERRALUX_BENCH_TRIANGLES=1 the terrain enters as two triangles per cell
 // (UseTerrainHierarchy off) instead of as terrain patches; with
-// TERRALUX_BENCH_SKY_BY_RAYS=1 the hidden sky comes from rays (SkyFromHorizons off).
+// TERRALUX_BENCH_SKY_BY_RAYS=1 the hidden sky comes from rays (SkyFromHorizons off);
+// TERRALUX_BENCH_TARGET_ERROR and TERRALUX_BENCH_TARGET_FLOOR set TargetError and
+// TargetErrorFloor.
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkHierarchicalRadiosity.h"
@@ -54,6 +56,10 @@ int main(int argc, char* argv[])
   radiosity->SetEvaluateAtPoints(std::getenv("TERRALUX_BENCH_AVERAGED") == nullptr);
   radiosity->SetUseTerrainHierarchy(std::getenv("TERRALUX_BENCH_TRIANGLES") == nullptr);
   radiosity->SetSkyFromHorizons(std::getenv("TERRALUX_BENCH_SKY_BY_RAYS") == nullptr);
+  if (const char* value = std::getenv("TERRALUX_BENCH_TARGET_ERROR"))
+    radiosity->SetTargetError(std::atof(value));
+  if (const char* value = std::getenv("TERRALUX_BENCH_TARGET_FLOOR"))
+    radiosity->SetTargetErrorFloor(std::atof(value));
   terrain->Update();
   sky->Update();
 

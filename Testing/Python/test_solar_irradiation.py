@@ -452,8 +452,9 @@ class Command(unittest.TestCase):
         self.assertEqual(kwh.returncode, 0, kwh.stderr)
         wh, k = gdal.Open(os.path.join(self.work, "day.tif")), gdal.Open(os.path.join(self.work, "day_kwh.tif"))
         names = [wh.GetRasterBand(b).GetDescription() for b in range(1, wh.RasterCount + 1)]
+        # --fast is the knob's coarse end, at points: each post has its error estimate.
         self.assertEqual(names, ["GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrradiation",
-                                 "SunshineDuration", "SkyViewFactor"])
+                                 "SunshineDuration", "SkyViewFactor", "IrradiationError"])
         self.assertEqual((wh.RasterXSize, wh.RasterYSize), (111, 111))
         self.assertEqual(wh.GetRasterBand(1).GetUnitType(), "Wh/m^2")
         self.assertEqual(k.GetRasterBand(1).GetUnitType(), "kWh/m^2")

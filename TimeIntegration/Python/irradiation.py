@@ -4,7 +4,7 @@ GeoTIFF on the DEM's own grid.
 
     python3 -m terralux.irradiation DEM.tif -o out.tif --start 2024-06-01 --end 2024-06-30
         [--step 30] [--linke 3.0] [--reflectance 0.2] [--weather FILE.epw] [--day-of-year N]
-        [--points | --fast] [--kwh]
+        [--target-error E | --fast] [--target-floor W] [--kwh]
     mpirun -np N python3 -m terralux.irradiation DEM.tif -o out.tif ... --mpi
 
 The equivalent GRASS call for one day: r.sun elevation=dem aspect=aspect slope=slope
@@ -23,6 +23,8 @@ BANDS = ("GlobalIrradiation", "BeamIrradiation", "SkyIrradiation", "ReflectedIrr
          "SunshineDuration", "SkyViewFactor", "IrradiationError")
 ENERGY_BANDS = BANDS[:4] + ("IrradiationError",)
 PROGRAM = "terralux.irradiation"
+# The knob's coarse end (docs/validation.md measures it: at most 2 % RMS).
+FAST_TARGET_ERROR = 0.04
 
 
 class InputError(Exception):
@@ -53,12 +55,17 @@ def parse_arguments(argv):
     parser.add_argument("--weather", metavar="FILE",
                         help="EnergyPlus EPW or TMY3 CSV: its hourly direct and diffuse irradiance and the "
                              "Perez sky instead of the clear sky (default range: the whole --year)")
-    parser.add_argument("--tolerance", type=float, default=1e-3, help="radiosity error tolerance (default 1e-3)")
-    mode = parser.add_mutually_exclusive_group()
-    mode.add_argument("--points", dest="points", action="store_true", default=True,
-                      help="evaluate at every post (accurate; default)")
-    mode.add_argument("--fast", dest="points", action="store_false",
-                      help="interpolate sky and reflected light from the solved elements")
+    parser.add_argument("--tolerance", type=float, default=1e-2,
+                        help="the hierarchy's refinement tolerance (default 1e-2; the posts' accuracy is "
+                             "--target-error's)")
+    knob = parser.add_mutually_exclusive_group()
+    knob.add_argument("--target-error", type=float, default=0.008, metavar="E",
+                      help="the speed-accuracy knob: each post's estimated error (IrradiationError) aims at E "
+                           "times what it receives (default 0.008, about 0.4 %% RMS); larger is faster")
+    knob.add_argument("--fast", dest="target_error", action="store_const", const=FAST_TARGET_ERROR,
+                      help="the knob's coarse end: --target-error " + str(FAST_TARGET_ERROR) + " (about 2 %% RMS)")
+    parser.add_argument("--target-floor", type=float, default=2.0, metavar="W",
+                        help="W/m^2: the error a post aims at where E of what it receives is less (default 2)")
     parser.add_argument("--kwh", action="store_true", help="write kWh/m^2 instead of Wh/m^2")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--mpi", action="store_true",
@@ -204,6 +211,10 @@ def run(args):
                          % args.output)
     if not 0.0 <= args.detail_distance < float("inf"):
         raise InputError("--detail-distance %g is not a distance in metres (>= 0; 0: none)" % args.detail_distance)
+    if not 1e-6 <= args.target_error <= 1.0:
+        raise InputError("--target-error %g is not a fraction of what a post receives (1e-6..1)" % args.target_error)
+    if not 0.0 <= args.target_floor < float("inf"):
+        raise InputError("--target-floor %g is not an irradiance in W/m^2 (>= 0)" % args.target_floor)
     if args.far_stride < 1:
         raise InputError("--far-stride %d is not a stride of posts (>= 1; 1: none)" % args.far_stride)
     if args.far_stride > 1 and not args.detail_distance > 0.0:
@@ -223,7 +234,8 @@ def run(args):
     irradiation.SetDetailDistance(args.detail_distance)
     if far:
         irradiation.SetFarTerrainConnection(terrain.GetOutputPort(1))
-    irradiation.SetEvaluateAtPoints(args.points)
+    irradiation.SetTargetError(args.target_error)
+    irradiation.SetTargetErrorFloor(args.target_floor)
     irradiation.SetPostNormalsToHorn()  # as r.slope.aspect and gdaldem
     if args.weather:
         if not os.path.isfile(args.weather):

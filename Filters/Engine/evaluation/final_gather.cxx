@@ -142,13 +142,14 @@ const PolygonElement* FinalGather::leafAt(const SurfaceHit& hit) const
 
 namespace
 {
-// How many stratified rays bring the standard error of their mean below
-// budget.relativeError x `received`, from a pilot's sum and sum of squares (as for
-// independent rays), between budget.minimum and budget.maximum: a whole square of
-// strata, since a partly filled last row would leave a band of directions unsampled.
+// How many stratified rays bring the standard error of their mean below the budget's
+// (budget.relativeError x `received`, at least budget.absoluteError), from the variance
+// of one ray's estimate (as for independent rays), between budget.minimum and
+// budget.maximum: a whole square of strata, since a partly filled last row would leave a
+// band of directions unsampled.
 int raysFor(const GatherBudget& budget, double variance, double received)
 {
-  const double target = budget.relativeError * std::max(received, 1e-12);
+  const double target = std::max({ budget.relativeError * received, budget.absoluteError, 1e-12 });
   const double needed = std::clamp<double>(std::ceil(variance / (target * target)), budget.minimum, budget.maximum);
   const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
   return side * side;
@@ -239,7 +240,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     if (horizons)
     {
       const HiddenSky horizon =
-        this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull, budget.coarseHorizon);
+        this->Horizons->hiddenAt(point, normal, seed ^ 0xD1B54A32D192ED03ull);
       hidden = horizon.irradiance;
       hiddenOmega = horizon.projectedSolidAngle;
       result.rays += horizon.rays;

@@ -46,20 +46,20 @@ struct GatheredLight
 };
 
 /// How many rays a point takes: as many as a pilot of `pilot` rays says bring the
-/// standard error of what they add below relativeError x the point's irradiance,
-/// between `minimum` and `maximum` (pilot 0: always maximum).
+/// standard error of what they add below relativeError x the point's irradiance, or
+/// absoluteError (W/m^2) where that is more, between `minimum` and `maximum` (pilot 0:
+/// always maximum).
 struct GatherBudget
 {
   int pilot = 64;
   int minimum = 64;
   int maximum = 1024;
   double relativeError = 0.003;
+  double absoluteError = 0.0;
   /// Rays drawn by the sky's radiance (the sky a scene with buildings hides): at least
   /// this many, or maximum if less. A small occluder hides a few percent of the sky,
   /// which a pilot of 64 sees once or not at all.
   int skyMinimum = 256;
-  /// Horizons at half the azimuths (a point the solution found open).
-  bool coarseHorizon = false;
   /// The variance of one ray's estimate where neighbours tell it (>= 0): the count then
   /// follows from it and from knownSurfaces, the light from surfaces expected, with no
   /// pilot.

@@ -16,7 +16,6 @@ namespace terralux
 namespace
 {
 constexpr int points = 4, morePoints = 16; // of each leaf; of a partly buried one
-constexpr double maximumRelative = 4.0;      // of the deficit: the leaves hold a fifth or more
 }
 
 LeafGather::LeafGather(std::vector<PolygonElement*> leaves, const Visibility& rays, int raysPerLeaf, bool surfacesSend)
@@ -119,8 +118,8 @@ HierarchyDeficit HierarchyDeficit::measure(const LeafGather& leaves, const Final
   // Where R0 - M1 is near 0 (the leaves hold next to nothing, or noise) the quotient
   // means nothing: the leaves are then taken as wrong by their whole value or more.
   const double kept = r0 - m1;
-  deficit.relative = kept > 0.05 * std::max(r0, r1) ? std::min(maximumRelative, std::abs(r1 - r0) / kept)
-                                                    : maximumRelative;
+  deficit.relative = kept > 0.05 * std::max(r0, r1) ? std::min(HierarchyDeficit::maximumRelative, std::abs(r1 - r0) / kept)
+                                                    : HierarchyDeficit::maximumRelative;
   return deficit;
 }
 } // namespace terralux

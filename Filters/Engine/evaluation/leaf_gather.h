@@ -54,5 +54,9 @@ struct HierarchyDeficit
   /// Measured by gathering (through `gather`, which must read the hierarchy's values) at
   /// up to `sampled` leaves spread evenly over `leaves`.
   static HierarchyDeficit measure(const LeafGather& leaves, const FinalGather& gather, std::size_t sampled);
+  /// The bound taken where it is not measured: the leaves wrong by their whole value or
+  /// more, every bounce carrying it on.
+  static HierarchyDeficit unknown() { return { maximumRelative, 1.0 }; }
+  static constexpr double maximumRelative = 4.0; ///< of d: the leaves hold a fifth or more
 };
 } // namespace terralux

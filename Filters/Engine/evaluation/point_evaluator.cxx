@@ -31,13 +31,6 @@ namespace terralux
 {
 namespace
 {
-bool leafLooksOpen(const PolygonElement& leaf)
-{
-  const double openPlane = 0.5 * (1.0 + std::max(-1.0, std::min(1.0, leaf.normal().z)));
-  return leaf.SkyViewFactor >= 0.999 * openPlane &&
-    largestBand(leaf.Irradiance[ReflectedLight]) <= 0.002 * leaf.receivedIrradiance();
-}
-
 // What a post receives beside the light from surfaces (its sun and its horizons' sky,
 // largest bands): what the lattice's spread is measured against, when its cells are
 // refined and when a post reads between them.
@@ -75,11 +68,14 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
     this->findPostHorizons(plan.hornNormals);
   this->findSunHorizons();
   // How far the hierarchy's light from surfaces is off, for the points' error estimates:
-  // gathered over the hierarchy's own surface, the same for every process (a window's
-  // too), reading its leaves alone (no post's values, which a process holds near its
-  // window only).
+  // gathered over the hierarchy's own surface, the same for every process, reading its
+  // leaves alone (no post's values, which a process holds near its window only). A
+  // window solves a hierarchy of its own, whose deficit would differ with the split:
+  // it takes the bound instead, the same for any split.
   HierarchyDeficit deficit;
-  if (plan.atPoints && this->gathersAtPoints() && solved.largestRadiosity() > 0.0)
+  if (plan.atPoints && this->gathersAtPoints() && solved.largestRadiosity() > 0.0 && solved.isWindow())
+    deficit = HierarchyDeficit::unknown();
+  else if (plan.atPoints && this->gathersAtPoints() && solved.largestRadiosity() > 0.0)
   {
     const GatherInputs overHierarchy{ this->Rays, solved.polygonRoots(), solved.terrainRoots(), solved.hierarchySuns() };
     const LeafGather probe(solved.surfaceLeaves(), this->Rays,
@@ -270,7 +266,9 @@ PointIrradiance PointEvaluator::irradianceAt(
     GatherBudget budget;
     budget.maximum = this->Options.gatherSamples;
     budget.minimum = std::min(budget.minimum, budget.maximum);
-    budget.relativeError = this->Options.gatherError;
+    // The rays' noise, at errorCoverage standard errors, within the point's target.
+    budget.relativeError = this->Options.targetError / errorCoverage;
+    budget.absoluteError = this->Options.targetErrorFloor / errorCoverage;
     // A terrain post's horizons come from the map, found for all posts at once.
     const HorizonMap::Post post = this->PostHorizons ? this->PostHorizons->find(point) : HorizonMap::Post{};
     // There the rays are drawn below the post's horizon, where nearly every one meets
@@ -291,14 +289,6 @@ PointIrradiance PointEvaluator::irradianceAt(
         budget.knownVariance = around.variance, budget.pilot = 0, budget.minimum = std::min(budget.maximum, Tuning::latticeKnownRays),
         budget.knownSurfaces = largestBand(expected);
     }
-    // Over a height field, a leaf the solution found open (nearly all the sky its plane
-    // could see, next to no light from surfaces) needs no pilot: its points take the
-    // fewest rays. The decision comes from the solution, not from rays the estimate
-    // uses, so it keeps the estimate unbiased. Where the sky comes from rays (scenes
-    // with buildings), and on the far terrain's smoother leaves, a pilot stays
-    // (docs/tuning.md).
-    if (leafLooksOpen(leaf) && this->Horizons && !this->Solver.hierarchyTerrain())
-      budget.pilot = 0, budget.maximum = budget.minimum, budget.coarseHorizon = true;
     const Spectrum& sun = irradiance[SunLight];
     // Its rays start two more offsets above (three in all): on rough terrain the move
     // into the leaf, toward a centre across a crease, can end that far below the
@@ -334,18 +324,20 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // What a gather adds to the horizons' sky (light from surfaces, the sky where the
   // interpolated horizon was wrong) comes from the terrain the post sees, 1 - its sky
   // view factor: that times what the lattice's posts around found per terrain seen.
-  // Where theirs agree within twice the error a gather would leave, reading it between
-  // them errs about as much (see Tuning::latticeSpreadAllowance). Posts where light from
-  // surfaces is more than a small share of what they receive gather it still: read
-  // between posts it comes out about 3 % low on average (the accuracy report's hills and
-  // Olinda against a gather at each post), where the accuracy work asks for 5 % wherever
-  // it exceeds 1 % of the global.
+  // Read between them it errs by at most their spread, plus the bias of reading light
+  // from surfaces between posts (Tuning::latticeReadBias); the post reads it where that
+  // meets its target, else gathers. The error of what the lattice's posts read from the
+  // hierarchy is in both (a gather's hits read the lattice too), so it does not decide:
+  // nor does anything else a process computes for itself (a window's own hierarchy),
+  // and pieces read where one process does.
   const double terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
   const double received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
+  const double spread = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen);
+  const double largestReflected = terrainSeen * std::max(0.0, around.largestPerTerrainSeen);
+  const bool horizonsChecked = this->Solver.largestRadiosity() > 0.0;
   PostLattice::PerTerrainSeen found;
-  if (terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen) >
-      Tuning::latticeSpreadAllowance * this->Options.gatherError * received ||
-    terrainSeen * around.largestPerTerrainSeen > Tuning::smallReflectedShare * received ||
+  if (spread + Tuning::latticeReadBias * largestReflected + this->skyError(normal, sky.irradiance, horizonsChecked) >
+      this->Options.errorTarget(received + largestReflected) ||
     !this->Lattice->perTerrainSeenAt(i, j, found))
     return false;
   for (int band = 0; band < maxBands; ++band)
@@ -355,11 +347,10 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   }
   result.skyViewFactor = std::clamp(sky.skyViewFactor + terrainSeen * found.skyViewCorrection, 0.0, 1.0);
   result.gatherVariance = around.variance;
-  // Read between lattice posts that agree within their spread: it bounds the error.
-  result.irradianceError = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen) +
-    errorCoverage * this->ReadRelativeError * largestBand(result.irradiance[ReflectedLight]) +
-    // The lattice's posts cast no ray below their horizons where nothing sends light.
-    this->skyError(normal, result.irradiance[SkyLight], this->Solver.largestRadiosity() > 0.0);
+  // The lattice's posts cast no ray below their horizons where nothing sends light.
+  const double readRelativeError = errorCoverage * this->ReadRelativeError + Tuning::latticeReadBias;
+  result.irradianceError = spread + readRelativeError * largestBand(result.irradiance[ReflectedLight]) +
+    this->skyError(normal, result.irradiance[SkyLight], horizonsChecked);
   return true;
 }
 
@@ -444,12 +435,13 @@ void PointEvaluator::gatherPostLattice(const TerrainPatch& root, bool hornNormal
   auto lattice = std::make_unique<PostLattice>(
     grid.postsX(), grid.postsY(), PostLattice::defaultStep, this->Split, this->PostsHalo);
   // Every second lattice post first; then the rest of the cells whose corners disagree
-  // (see Tuning::latticeRefineAllowance), decided alike by every process from the shared first
+  // (see Tuning::latticeRefineShare), decided alike by every process from the shared first
   // pass.
   for (const bool first : { true, false })
   {
     if (!first)
-      lattice->refine(Tuning::latticeRefineAllowance * this->Options.gatherError);
+      lattice->refine(Tuning::latticeRefineShare * this->Options.targetError,
+        Tuning::latticeRefineShare * this->Options.targetErrorFloor);
     WorkSplit::partThenShare(
       this->Split, [&]() { this->gatherLatticePosts(root, hornNormals, first, *lattice); },
       [&]() { lattice->share(); });

@@ -78,7 +78,7 @@ double PostLattice::largestPerTerrainSeen(std::size_t k) const
   return largest;
 }
 
-void PostLattice::refine(double allowedSpread)
+void PostLattice::refine(double allowedSpread, double allowedFloor)
 {
   const WorkSplit::Window& cells = this->HeldCells;
   for (int cj = cells.j0; cj <= cells.j1; ++cj)
@@ -97,7 +97,7 @@ void PostLattice::refine(double allowedSpread)
         this->forEachCorner(coarse, [&](std::size_t k) {
           if (this->Variance[k] < 0.0 ||
             this->TerrainSeen[k] * (corners.largestPerTerrainSeen - corners.leastPerTerrainSeen) >
-              allowedSpread * this->Received[k])
+              std::max(allowedSpread * this->Received[k], allowedFloor))
             refined = CellRefined;
         });
       }

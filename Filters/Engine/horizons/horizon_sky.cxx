@@ -111,11 +111,10 @@ HorizonSky::ElevationTerms HorizonSky::termsAt(double u) const
   return { a.along + f * (b.along - a.along), a.up + f * (b.up - a.up) };
 }
 
-HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed, bool coarse) const
+HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed) const
 {
   HiddenSky result;
-  // Coarse: every other azimuth of the tables, each spanning twice the pieces.
-  const int stride = coarse ? 2 : 1, azimuths = sectors / stride, pieces = piecesPerSector * stride;
+  constexpr int azimuths = sectors, pieces = piecesPerSector;
   const double halfPi = 0.5 * pi, sector = 2.0 * pi / azimuths, piece = sector / pieces;
   // Evenly spaced azimuths, turned by a random angle per point so that neighbouring
   // posts' small errors do not line up.

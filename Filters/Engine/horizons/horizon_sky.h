@@ -55,9 +55,7 @@ public:
 
   /// The sky hidden from a point (rays start there, lifted along the unit normal by
   /// the visibility's offset) on a plane of unit normal n; `seed` turns the azimuths.
-  /// `coarse`: half the azimuths, for points the solution found open (little to find,
-  /// so little to miss between them).
-  HiddenSky hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed, bool coarse = false) const;
+  HiddenSky hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed) const;
   /// The sky hidden from a post of the map's terrain on a plane of unit normal n, from
   /// the map's horizons (no rays).
   HiddenSky hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const;

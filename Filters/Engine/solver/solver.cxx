@@ -34,11 +34,12 @@ HierarchicalRadiosity::HierarchicalRadiosity(
   , Sources(std::make_unique<ElementStore>(firstSourceId))
 {
   if (options.visibilitySamples < 1 || options.maximumIterations < 1 || !(options.errorTolerance > 0.0) ||
-    options.gatherSamples < 0 || !(options.gatherError > 0.0) || options.farTerrainStride < 1 ||
+    options.gatherSamples < 0 || !(options.targetError > 0.0) ||
+    !(options.targetErrorFloor >= 0.0 && options.targetErrorFloor <= std::numeric_limits<double>::max()) || options.farTerrainStride < 1 ||
     !(options.gatherDetailDistance >= 0.0 && options.gatherDetailDistance <= std::numeric_limits<double>::max()))
   {
     throw Error("radiosity options: VisibilitySamples and MaximumIterations must be >= 1, "
-                "ErrorTolerance > 0, MaximumGatherRays >= 0, GatherError > 0, FarTerrainStride >= 1 and "
+                "ErrorTolerance > 0, MaximumGatherRays >= 0, TargetError > 0, TargetErrorFloor >= 0, FarTerrainStride >= 1 and "
                 "DetailDistance finite and >= 0");
   }
   const auto hierarchyStart = std::chrono::steady_clock::now();
@@ -141,12 +142,12 @@ const TerrainPatch* HierarchicalRadiosity::leafAtPost(const TerrainPatch& root, 
 
 bool operator==(const RadiosityOptions& a, const RadiosityOptions& b)
 {
-  static_assert(sizeof(RadiosityOptions) == 88, "an option was added: compare it here");
+  static_assert(sizeof(RadiosityOptions) == 96, "an option was added: compare it here");
   return a.errorTolerance == b.errorTolerance && a.minimumElementArea == b.minimumElementArea &&
     a.visibilitySamples == b.visibilitySamples && a.maximumIterations == b.maximumIterations &&
     a.convergenceTolerance == b.convergenceTolerance && a.maximumSkyLevel == b.maximumSkyLevel &&
     a.maximumElements == b.maximumElements && a.gatherSamples == b.gatherSamples &&
-    a.gatherError == b.gatherError && a.skyFromHorizons == b.skyFromHorizons &&
+    a.targetError == b.targetError && a.targetErrorFloor == b.targetErrorFloor && a.skyFromHorizons == b.skyFromHorizons &&
     a.gatherDetailDistance == b.gatherDetailDistance && a.farTerrainStride == b.farTerrainStride;
 }
 

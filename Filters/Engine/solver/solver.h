@@ -13,6 +13,7 @@
 #include "hierarchy/helement.h"
 #include "hierarchy/radiosity_types.h"
 
+#include <algorithm>
 #include <memory>
 
 namespace terralux
@@ -26,7 +27,7 @@ class Visibility;
 
 struct RadiosityOptions
 {
-  double errorTolerance = 1e-3;     ///< link power threshold / reference power
+  double errorTolerance = 1e-2;     ///< link power threshold / reference power
   double minimumElementArea = 0.0;  ///< m^2; 0: 1e-6 of the scene's area
   int visibilitySamples = 4;
   int maximumIterations = 30;
@@ -36,11 +37,17 @@ struct RadiosityOptions
   /// solution is then coarser than errorTolerance asks, and
   /// statistics().elementBudgetReached says so).
   std::size_t maximumElements = 1000000;
-  /// Most rays of a point's final gather (FinalGather); it casts as many as a pilot
-  /// says bring its standard error below gatherError x the point's irradiance
-  /// (docs/tuning.md). 0: the links that reach the point's leaf, re-evaluated there.
+  /// Most rays of a point's final gather (FinalGather); it casts as many as bring the
+  /// point's error estimate within its target (docs/tuning.md). 0: the links that reach
+  /// the point's leaf, re-evaluated there.
   int gatherSamples = 4096;
-  double gatherError = 0.003;
+  /// The error each point's value aims at (its IrradianceError): targetError x its
+  /// global irradiance, or targetErrorFloor (W/m^2) where that is more. Gather rays
+  /// and reads between a lattice's posts are spent until it is met.
+  double targetError = 0.008;
+  double targetErrorFloor = 2.0;
+  /// The error a point aims at, receiving `global` (W/m^2, largest band).
+  double errorTarget(double global) const { return std::max(this->targetError * global, this->targetErrorFloor); }
   /// In a scene that is a height field (terrains whose cells face up, no polygons), the
   /// sky hidden from a point comes from its horizon (HorizonSky) instead of the
   /// gather's rays: no sampling noise in the sky.

@@ -45,11 +45,13 @@ struct Tuning
   static constexpr int partialVisibilityFactor = 8;
 
   // The lattice of posts gathered first (PostLattice).
-  /// A post reads between lattice posts that agree within latticeSpreadAllowance x
-  /// gatherError when its light from surfaces is at most smallReflectedShare of it.
-  static constexpr double smallReflectedShare = 0.01;
-  static constexpr double latticeSpreadAllowance = 2.0;
-  /// A lattice cell is refined where its corners spread more than this x gatherError.
-  static constexpr double latticeRefineAllowance = 1.0;
+  /// A post reading light from surfaces between lattice posts errs, beyond their
+  /// spread, by up to this share of it (reading ignores how its own slope faces the
+  /// terrain it sees): its error estimate takes it, and it gathers where that misses its
+  /// target.
+  static constexpr double latticeReadBias = 0.1;
+  /// A lattice cell is refined where its corners spread more than this share of their
+  /// target.
+  static constexpr double latticeRefineShare = 0.5;
 };
 } // namespace terralux

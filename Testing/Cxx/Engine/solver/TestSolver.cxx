@@ -183,6 +183,7 @@ TEST(Solver, SkyViewFactorAtTheBottomOfAPit)
     options.minimumElementArea = 1e-6;
     options.visibilitySamples = 16;
     options.gatherSamples = 4096; // the rim cuts strata: the point's error falls as 1 / rays
+    options.targetErrorFloor = 0.0; // a sky of radiance 1: no floor in W/m^2
     HierarchicalRadiosity solver(scene, options);
     solver.setSky(&uniform);
     ASSERT_TRUE(solver.solve());
