@@ -1,6 +1,6 @@
 // The accuracy report's worker: one scene, against the independent reference.
 //   accuracy_report SCENE OUTDIR reference [SAMPLES]   compute OUTDIR/SCENE.reference
-//   accuracy_report SCENE OUTDIR solve METHOD TOLERANCE  one solve, one JSON line
+//   accuracy_report SCENE OUTDIR solve METHOD TOLERANCE [TARGET_ERROR]  one solve, one JSON line
 // METHOD: points (EvaluateAtPoints on), rays (on, with SkyFromHorizons off: the sky's
 // hidden part from the gather's rays), averaged (off), triangles (terrain as two
 // triangles per cell, at points). The JSON line holds wall time, peak memory, elements,
@@ -330,7 +330,7 @@ std::string errorJson(const std::vector<double>& value, const std::vector<double
 }
 
 int solve(const terralux_bench::AccuracyScene& input, const std::string& referencePath, const std::string& method,
-  double tolerance)
+  double tolerance, double targetError)
 {
   std::ifstream file(referencePath, std::ios::binary);
   std::uint64_t n = 0;
@@ -351,12 +351,12 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   if (input.emissionArray)
     radiosity->SetEmissionArrayName(input.emissionArray);
   radiosity->SetErrorTolerance(tolerance);
+  if (targetError > 0.0)
+    radiosity->SetTargetError(targetError);
   radiosity->SetEvaluateAtPoints(method != "averaged");
   radiosity->SetSkyFromHorizons(method != "rays");
-  // TERRALUX_REPORT_TARGET_ERROR, _TARGET_FLOOR, _GATHER_RAYS: TargetError,
-  // TargetErrorFloor and MaximumGatherRays other than the defaults.
-  if (const char* value = std::getenv("TERRALUX_REPORT_TARGET_ERROR"))
-    radiosity->SetTargetError(std::atof(value));
+  // TERRALUX_REPORT_TARGET_FLOOR, _GATHER_RAYS: TargetErrorFloor and MaximumGatherRays
+  // other than the defaults.
   if (const char* value = std::getenv("TERRALUX_REPORT_TARGET_FLOOR"))
     radiosity->SetTargetErrorFloor(std::atof(value));
   if (const char* value = std::getenv("TERRALUX_REPORT_GATHER_RAYS"))
@@ -479,13 +479,13 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     vtkDataArray* array = fieldData->GetArray(name);
     return array ? array->GetComponent(0, 0) : 0.0;
   };
-  std::printf("{\"scene\": \"%s\", \"method\": \"%s\", \"tolerance\": %g, \"seconds\": %.4f, \"peak_mib\": %.1f, "
+  std::printf("{\"scene\": \"%s\", \"method\": \"%s\", \"tolerance\": %g, \"target_error\": %g, \"seconds\": %.4f, \"peak_mib\": %.1f, "
               "\"elements\": %.0f, \"links\": %.0f, \"rays\": %.0f, \"iterations\": %.0f, \"floor_seconds\": %.5f, "
               "\"phase_seconds\": {\"visibility\": %.4f, \"horizons\": %.4f, \"refine\": %.4f, \"gather\": %.4f, "
               "\"push_pull\": %.4f, \"points\": %.4f}, \"phase_rays\": {\"refine\": %.0f, \"gather_push_pull\": %.0f, \"points\": %.0f}, "
               "\"shadow_disagreement\": %.6f, \"sun\": %s, \"sky\": %s, \"reflected\": %s, \"global\": %s, "
               "\"estimate\": %s}\n",
-    input.name.c_str(), method.c_str(), tolerance, wall, peakMiB(), field("Elements"), field("Links"), field("Rays"),
+    input.name.c_str(), method.c_str(), tolerance, radiosity->GetTargetError(), wall, peakMiB(), field("Elements"), field("Links"), field("Rays"),
     field("Iterations"), floorSeconds, field("SecondsVisibilityBuild"), field("SecondsHorizons"), field("SecondsRefine"),
     field("SecondsGather"), field("SecondsPushPull"), field("SecondsPoints"), field("RaysRefine"),
     field("RaysPushPull"), field("RaysPoints"), facing ? static_cast<double>(disagree) / facing : 0.0,
@@ -502,7 +502,7 @@ int main(int argc, char* argv[])
   {
     std::cerr << "usage: accuracy_report SCENE OUTDIR reference [SAMPLES]\n"
                  "       accuracy_report SCENE OUTDIR describe\n"
-                 "       accuracy_report SCENE OUTDIR solve points|rays|averaged|triangles TOLERANCE\n";
+                 "       accuracy_report SCENE OUTDIR solve points|rays|averaged|triangles TOLERANCE [TARGET_ERROR]\n";
     return 2;
   }
   try
@@ -515,7 +515,7 @@ int main(int argc, char* argv[])
     if (std::string(argv[3]) == "reference")
       return computeReference(scene, referencePath, argc > 4 ? std::atoi(argv[4]) : 1024);
     if (std::string(argv[3]) == "solve" && argc > 5)
-      return solve(scene, referencePath, argv[4], std::atof(argv[5]));
+      return solve(scene, referencePath, argv[4], std::atof(argv[5]), argc > 6 ? std::atof(argv[6]) : 0.0);
   }
   catch (const std::exception& error)
   {

@@ -29,6 +29,15 @@ default_fractal() {
   echo "${dem}"
 }
 
+# steep_fractal BUILD_DIR: the steep 1025^2 fractal (30 m, seed 1, 3000 m of relief: mean
+# slope 15 deg, p95 28 deg, as real mountain DEMs), made once; prints its path.
+steep_fractal() {
+  local dem="$1/bench/steep_1025.tif"
+  mkdir -p "$1/bench"
+  [ -s "${dem}" ] || "$1/bin/make_fractal_dem" "${dem}" 1025 1 30 3000 >/dev/null
+  echo "${dem}"
+}
+
 # A scratch folder for the run, removed at exit.
 work="$(mktemp -d)"
 trap 'rm -rf "${work}"' EXIT

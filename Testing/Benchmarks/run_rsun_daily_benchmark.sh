@@ -3,7 +3,8 @@
 # benchmark; needs grass-core, not run by ctest): whole-process time and peak memory of
 # r.sun (day=173, step=0.5 h, Linke 3.0, albedo 0.2, shadows, slope and aspect from
 # r.slope.aspect, 2 threads) and of `python3 -m terralux.irradiation` for the same day at
-# 30-minute steps (Horn normals as r.slope.aspect; --points and --fast), and how their
+# 30-minute steps (Horn normals as r.slope.aspect; at the defaults and with --fast, the
+# knob's coarse end), and how their
 # beam and global sums compare post by post (scripts: compare_rasters.py). With
 # TERRALUX_BENCH_YEAR=1, also a year of hourly steps at every post (2024), against the
 # same run's r.sun day (the time-integration issue's figure: at most 10 x) and against
@@ -32,16 +33,18 @@ for dem in "${dems[@]}"; do
 for map in beam glob; do r.out.gdal -c input=\${map} output="${work}/${name}.rsun.\${map}.tif" --overwrite --quiet 2>/dev/null; done
 GRASS
   grass "${work}/${name}/PERMANENT" --exec bash "${work}/${name}.sh" >/dev/null 2>&1
-  for mode in points fast; do
+  for mode in defaults fast; do
+    flags=()
+    [ "${mode}" = fast ] && flags=(--fast)
     /usr/bin/time -f "elapsed %e peak %M" -o "${work}/${name}.${mode}.time" /usr/bin/python3 -m terralux.irradiation \
       "${dem}" -o "${work}/${name}.${mode}.tif" --day-of-year 173 --year 2024 --step 30 --linke 3.0 \
-      --reflectance 0.2 "--${mode}" --quiet >/dev/null
+      --reflectance 0.2 "${flags[@]}" --quiet >/dev/null
   done
   rsun="$(seconds "${work}/${name}.rsun.time")"
   echo "  r.sun daily:              $(printf '%6.1f' "${rsun}") s, $(peak_mib "${work}/${name}.rsun.time") MiB"
-  for mode in points fast; do
+  for mode in defaults fast; do
     t="$(seconds "${work}/${name}.${mode}.time")"
-    echo "  terralux.irradiation --${mode}: $(printf '%6.1f' "${t}") s, $(peak_mib "${work}/${name}.${mode}.time") MiB," \
+    echo "  terralux.irradiation (${mode}): $(printf '%6.1f' "${t}") s, $(peak_mib "${work}/${name}.${mode}.time") MiB," \
       "$(awk -v a="${t}" -v b="${rsun}" 'BEGIN { printf "%.2f", a / b }') x r.sun"
     echo "    beam:   $(/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/compare_rasters.py" "${work}/${name}.${mode}.tif" BeamIrradiation "${work}/${name}.rsun.beam.tif")"
     echo "    global: $(/usr/bin/python3 "${repo_dir}/Testing/Benchmarks/compare_rasters.py" "${work}/${name}.${mode}.tif" GlobalIrradiation "${work}/${name}.rsun.glob.tif")"

@@ -132,6 +132,19 @@ protected:
     sun->SetUserDiffuseHorizontalIrradiance(0.0);
     return sun;
   }
+  // The terrain under the morning sun and the uniform sky, at the scene's reflectance.
+  static vtkSmartPointer<vtkHierarchicalRadiosity> Lit(vtkTerrainSource* terrain)
+  {
+    auto sun = Sun();
+    sun->SetInputConnection(terrain->GetOutputPort());
+    auto sky = terralux_test::uniformSky(120.0);
+    auto radiosity = vtkSmartPointer<vtkHierarchicalRadiosity>::New();
+    radiosity->SetInputConnection(terrain->GetOutputPort(0));
+    radiosity->AddLightConnection(sun->GetOutputPort());
+    radiosity->AddLightConnection(sky->GetOutputPort(0));
+    radiosity->SetDefaultReflectance(reflectance);
+    return radiosity;
+  }
   // Output 0's Irradiance at every post, its pieces put together; with `errors`, its
   // IrradianceError too (NaN without the array).
   static std::vector<double> Solve(vtkHierarchicalRadiosity* radiosity, int pieces, std::vector<double>* errors = nullptr)
@@ -177,14 +190,7 @@ TEST_P(ModeCombinations, AgreeWithTheReferenceAndAcrossPieces)
 {
   const Modes modes = GetParam();
   auto terrain = Terrain();
-  auto sun = Sun();
-  sun->SetInputConnection(terrain->GetOutputPort());
-  auto sky = terralux_test::uniformSky(120.0);
-  vtkNew<vtkHierarchicalRadiosity> radiosity;
-  radiosity->SetInputConnection(terrain->GetOutputPort(0));
-  radiosity->AddLightConnection(sun->GetOutputPort());
-  radiosity->AddLightConnection(sky->GetOutputPort(0));
-  radiosity->SetDefaultReflectance(reflectance);
+  auto radiosity = Lit(terrain);
   radiosity->SetEvaluateAtPoints(modes.atPoints);
   radiosity->SetUseTerrainHierarchy(modes.terrainHierarchy);
   radiosity->SetSkyFromHorizons(modes.skyFromHorizons);
@@ -261,14 +267,7 @@ TEST_P(TargetErrorKnob, TradesRaysForAccuracyAsTheEstimateSays)
   for (const double target : { 0.004, 0.016, 0.064 })
   {
     auto terrain = Terrain();
-    auto sun = Sun();
-    sun->SetInputConnection(terrain->GetOutputPort());
-    auto sky = terralux_test::uniformSky(120.0);
-    vtkNew<vtkHierarchicalRadiosity> radiosity;
-    radiosity->SetInputConnection(terrain->GetOutputPort(0));
-    radiosity->AddLightConnection(sun->GetOutputPort());
-    radiosity->AddLightConnection(sky->GetOutputPort(0));
-    radiosity->SetDefaultReflectance(reflectance);
+    auto radiosity = Lit(terrain);
     radiosity->SetTargetError(target);
     radiosity->SetTargetErrorFloor(0.0);
     std::vector<double> errors;
