@@ -73,14 +73,18 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
   // window solves a hierarchy of its own, whose deficit would differ with the split:
   // it takes the bound instead, the same for any split.
   HierarchyDeficit deficit;
-  if (plan.atPoints && this->gathersAtPoints() && solved.largestRadiosity() > 0.0 && solved.isWindow())
-    deficit = HierarchyDeficit::unknown();
-  else if (plan.atPoints && this->gathersAtPoints() && solved.largestRadiosity() > 0.0)
+  if (plan.atPoints && this->gathersAtPoints() && solved.largestRadiosity() > 0.0)
   {
-    const GatherInputs overHierarchy{ this->Rays, solved.polygonRoots(), solved.terrainRoots(), solved.hierarchySuns() };
-    const LeafGather probe(solved.surfaceLeaves(), this->Rays,
-      std::min(Tuning::leafGatherRays, this->Options.gatherSamples), true);
-    deficit = HierarchyDeficit::measure(probe, FinalGather(overHierarchy), Tuning::deficitProbeLeaves);
+    if (solved.isWindow())
+      deficit = HierarchyDeficit::unknown();
+    else
+    {
+      const GatherInputs overHierarchy{ this->Rays, solved.polygonRoots(), solved.terrainRoots(),
+        solved.hierarchySuns() };
+      const LeafGather probe(solved.surfaceLeaves(), this->Rays,
+        std::min(Tuning::leafGatherRays, this->Options.gatherSamples), true);
+      deficit = HierarchyDeficit::measure(probe, FinalGather(overHierarchy), Tuning::deficitProbeLeaves);
+    }
   }
   // At points, what gather rays meet; averaged, the polygons' values themselves
   // (terrain patches keep the hierarchy's: the fast mode of a DEM).

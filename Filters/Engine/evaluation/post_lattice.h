@@ -50,9 +50,9 @@ public:
   /// After the first pass (and its share): the coarse cells to refine, those where a
   /// corner's spread of what the corners found per terrain seen exceeds
   /// `allowedSpread` x what that corner receives (at least `allowedFloor`, W/m^2), or
-  /// where a corner has no data; and the
-  /// cells at the lattice's far edges, which have no coarse corners there. Cells with a
-  /// corner this process does not hold stay undecided (a read there throws).
+  /// where a corner has no data; and the cells at the lattice's far edges, which have no
+  /// coarse corners there. Cells with a corner this process does not hold stay
+  /// undecided (a read there throws).
   void refine(double allowedSpread, double allowedFloor = 0.0);
   /// What a lattice post's gather found beyond the sky of its horizons.
   struct Gathered
