@@ -194,8 +194,11 @@ int describe(const terralux_bench::AccuracyScene& input)
     mean += slope / std::max<std::size_t>(1, slopes.size());
   std::sort(slopes.begin(), slopes.end());
   const double p95 = slopes.empty() ? 0.0 : slopes[static_cast<std::size_t>(0.95 * (slopes.size() - 1))];
-  std::printf("{\"scene\": \"%s\", \"points\": %zu, \"mean_slope_deg\": %.2f, \"p95_slope_deg\": %.2f}\n",
-    input.name.c_str(), slopes.size(), mean, p95);
+  std::printf("{\"scene\": \"%s\", \"points\": %zu, \"mean_slope_deg\": %.2f, \"p95_slope_deg\": %.2f, "
+              "\"terrain\": %s, \"reflectance\": %g, \"sun_altitude_deg\": %g, \"sun_azimuth_deg\": %g, "
+              "\"sun_normal_irradiance\": %g, \"diffuse_horizontal\": %g}\n",
+    input.name.c_str(), slopes.size(), mean, p95, input.terrain ? "true" : "false", input.reflectance,
+    input.sunAltitude, input.sunAzimuth, input.sunIrradiance, input.diffuseHorizontal);
   return 0;
 }
 
@@ -452,12 +455,14 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     ScenePoints where;
     loadScene(input, where);
     std::ofstream csv(pointsFile);
-    csv << "x,y,z,nx,ny,nz,sun,sky,reflected,global,ref_sun,ref_sky,ref_reflected,ref_global,estimate,ref_error\n";
+    csv << "x,y,z,nx,ny,nz,sun,sky,reflected,global,ref_sun,ref_sky,ref_reflected,ref_global,estimate,ref_error,"
+           "used,sun_facing\n";
     for (std::size_t k = 0; k < n; ++k)
       csv << where.points[k].x << "," << where.points[k].y << "," << where.points[k].z << "," << where.normals[k].x
           << "," << where.normals[k].y << "," << where.normals[k].z << "," << value[0][k] << "," << value[1][k] << ","
           << value[2][k] << "," << value[3][k] << "," << ref[0][k] << "," << ref[1][k] << "," << ref[2][k] << ","
-          << ref[3][k] << "," << estimate[k] << "," << refError[3][k] << "\n";
+          << ref[3][k] << "," << estimate[k] << "," << refError[3][k] << "," << (reference[k].used != 0.0) << ","
+          << (reference[k].sunFacing != 0.0) << "\n";
   }
   // The floor: one Embree occlusion ray per point toward the sun.
   ScenePoints s;

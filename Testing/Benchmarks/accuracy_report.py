@@ -11,6 +11,10 @@ times below the error it measures.
 With DOC (docs/validation.md), the same tables and plots are also written there, as
 the project's validation page, its plots linked in OUT_DIR.
 
+Peer runs in OUT_DIR/rsun.jsonl (run_rsun_accuracy.sh: GRASS r.sun on the same scenes)
+join the tables and plots as single points, with a table of where TerraLux's knob lies
+against them.
+
 Usage: /usr/bin/python3 accuracy_report.py RUNS.jsonl OUT_DIR [DOC]
        /usr/bin/python3 accuracy_report.py OUT_DIR/report.json OUT_DIR [DOC]  (again from a report)
 """
@@ -26,7 +30,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 COMPONENTS = ("sun", "sky", "reflected", "global")
 METHODS = {"points": "patches, at points", "points-previous": "patches, at points, previous release",
            "rays": "patches, at points, sky by rays", "averaged": "patches, averaged",
-           "triangles": "triangles, at points"}
+           "triangles": "triangles, at points", "rsun": "GRASS r.sun",
+           "rsun-horizons": "GRASS r.sun with r.horizon"}
+# Peer tools' runs (run_rsun_accuracy.sh writes them to OUT_DIR/rsun.jsonl): one point each.
+PEERS = ("rsun", "rsun-horizons")
+# One colour per method in every panel and plot.
+COLOURS = dict(zip(METHODS, ("tab:blue", "tab:orange", "tab:purple", "tab:green", "tab:brown", "tab:red",
+                             "tab:pink")))
 
 
 # The defaults (ErrorTolerance, TargetError) and the knob's coarse end (the command's --fast).
@@ -85,10 +95,11 @@ def table(scene, reference, runs):
         times = "%.0f" % (run["seconds"] / floor) if floor > 0 else "-"
         noisy = g["reference_error"] * 5 > g["rms"] and g["rms"] > 0
         estimate = run.get("estimate")
-        lines.append("| %s | %g | %s | %.3f | %s | %.0f | %d | %d | %d | %s | %s | %s | %s | %s | %s | %s | %s%s | %s | %s |" % (
-            METHODS.get(run["method"], run["method"]), run["tolerance"],
+        peer = run["method"] in PEERS
+        lines.append("| %s | %s | %s | %.3f | %s | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s%s | %s | %s |" % (
+            METHODS.get(run["method"], run["method"]), "-" if peer else "%g" % run["tolerance"],
             "%g" % run["target_error"] if at_points(run) else "-", run["seconds"], times, run["peak_mib"],
-            run["elements"], run["links"], run["rays"], percent(g["rms"]), percent(g["p95"]), percent(g["max"]),
+            *(("-",) * 3 if peer else (run["elements"], run["links"], run["rays"])), percent(g["rms"]), percent(g["p95"]), percent(g["max"]),
             percent(g["bias"]), percent(sky["rms"]), percent(refl["bias"]) if refl["mean"] > 0 else "-",
             percent(run["shadow_disagreement"]), percent(g["reference_error"]), " (noisy)" if noisy else "",
             percent(estimate["coverage"]) if estimate else "-", percent(estimate["median"]) if estimate else "-"))
@@ -122,6 +133,45 @@ def summary(solves):
     return lines + [""]
 
 
+def against_peers(solves, peers):
+    """Each scene r.sun ran on: its points beside TerraLux's knob (at points, the default
+    ErrorTolerance). TerraLux lies below and to the left where one of its settings is at
+    most as slow and at most as far off as r.sun's run."""
+    if not peers:
+        return []
+    lines = ["## Against GRASS r.sun", "",
+             "r.sun's instant on the same DEM, its sun, beam normal and diffuse horizontal irradiance and "
+             "albedo matched to the scene's (`Testing/Benchmarks/run_rsun_accuracy.sh`), against the same "
+             "reference; times are r.horizon and r.sun alone (nprocs=2), as TerraLux's are its solve's. "
+             "Below and left: a TerraLux setting at most as slow and at most as far off.", "",
+             "| scene | r.sun run | time s | global RMS % | sky bias % | reflected bias % | "
+             "TerraLux defaults: time s | global RMS % | coarsest: time s | global RMS % | below and left |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for peer in sorted(peers, key=lambda r: (r["scene"], r["method"])):
+        knob_runs = [r for r in solves if r["scene"] == peer["scene"] and r["method"] == "points" and
+                     r["tolerance"] == DEFAULT_TOLERANCE and "target_error" in r]
+        if not knob_runs:
+            continue
+        default = next((r for r in knob_runs if r["target_error"] == DEFAULT_TARGET), None)
+        coarsest = max(knob_runs, key=lambda r: r["target_error"])
+        dominated = any(r["seconds"] <= peer["seconds"] and r["global"]["rms"] <= peer["global"]["rms"]
+                        for r in knob_runs)
+        lines.append("| %s | %s | %.2f | %s | %s | %s | %s | %s | %.2f | %s | %s |" % (
+            peer["scene"], METHODS[peer["method"]], peer["seconds"], percent(peer["global"]["rms"]),
+            percent(peer["sky"]["bias"]), percent(peer["reflected"]["bias"]),
+            "%.2f" % default["seconds"] if default else "-", percent(default["global"]["rms"]) if default else "-",
+            coarsest["seconds"], percent(coarsest["global"]["rms"]), "yes" if dominated else "no"))
+    return lines + [""]
+
+
+def load_peers(out_dir):
+    path = os.path.join(out_dir, "rsun.jsonl")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [json.loads(line) for line in f if line.strip().startswith("{")]
+
+
 def phases(runs):
     """Share of time and rays by phase, for each output mode at its defaults."""
     rows = [r for r in runs if r["tolerance"] == DEFAULT_TOLERANCE and "phase_rays" in r and
@@ -153,7 +203,9 @@ def plot(scene, runs, out_dir):
                       if r["method"] == method and r[component]["mean"] > 0 and r[component]["rms"] > 0]
             if points:
                 points.sort()
-                axis.loglog([p[0] for p in points], [100 * p[1] for p in points], "o-", label=label)
+                axis.loglog([p[0] for p in points], [100 * p[1] for p in points],
+                            "*" if method in PEERS else "o-", markersize=12 if method in PEERS else 6,
+                            color=COLOURS[method], label=label)
         errors = [r[component]["reference_error"] for r in runs if r[component]["mean"] > 0]
         if errors and max(errors) > 0:
             axis.axhline(100 * max(errors), color="grey", linestyle=":", label="reference SE")
@@ -161,8 +213,13 @@ def plot(scene, runs, out_dir):
         axis.set_xlabel("wall time (s)")
         axis.grid(True, which="both", alpha=0.3)
     axes[0].set_ylabel("relative RMS error (%)")
-    axes[-1].legend(fontsize=8)
-    figure.tight_layout()
+    # Below the panels, where it hides no point; each label once.
+    labels = {}
+    for axis in axes:
+        for handle, label in zip(*axis.get_legend_handles_labels()):
+            labels.setdefault(label, handle)
+    figure.legend(labels.values(), labels.keys(), loc="lower center", ncol=len(labels), fontsize=8)
+    figure.tight_layout(rect=(0, 0.08, 1, 1))
     path = os.path.join(out_dir, "%s.png" % scene)
     figure.savefig(path, dpi=90)
     plt.close(figure)
@@ -171,7 +228,9 @@ def plot(scene, runs, out_dir):
 
 def main():
     references, solves = load(sys.argv[1])
+    solves = [r for r in solves if r["method"] not in PEERS]
     out_dir = sys.argv[2]
+    peers = load_peers(out_dir)
     if os.path.abspath(sys.argv[1]) != os.path.abspath(os.path.join(out_dir, "report.json")):
         with open(os.path.join(out_dir, "report.json"), "w") as f:
             json.dump({"references": references, "solves": solves}, f, indent=1)
@@ -187,10 +246,10 @@ def main():
                  "of `Testing/Benchmarks/accuracy_scenes.cxx`. Generated by the accuracy report "
                  "(`bash Testing/Benchmarks/run_accuracy_report.sh build docs/validation`, with "
                  "`TERRALUX_REPORT_DOC=docs/validation.md`); do not edit by hand.", ""] + lines[2:]
-    lines += summary(solves)
-    doc_lines += summary(solves)
+    lines += summary(solves) + against_peers(solves, peers)
+    doc_lines += summary(solves) + against_peers(solves, peers)
     for scene in sorted({r["scene"] for r in solves}):
-        runs = [r for r in solves if r["scene"] == scene]
+        runs = [r for r in solves + peers if r["scene"] == scene]
         runs.sort(key=lambda r: (list(METHODS).index(r["method"]), -knob(r)))
         rows = table(scene, references.get(scene), runs)
         lines += rows + ["![%s](%s.png)" % (scene, scene), ""]

@@ -66,6 +66,19 @@ vtkSmartPointer<vtkDataObject> skyMap(int model, int type, double sunZenithDeg, 
   return map;
 }
 
+// One sun `altitude` deg up toward compass `azimuth` (800 W/m^2) and its CIE clear sky
+// (100 W/m^2 diffuse on the horizontal): the scene's lights, and what it records of them.
+void sunAndClearSky(AccuracyScene& scene, double altitude, double azimuth)
+{
+  constexpr double normalIrradiance = 800.0, diffuse = 100.0;
+  scene.lights = { sunAt(altitude, azimuth, normalIrradiance),
+    skyMap(vtkSkySource::CIE_GENERAL, 12, 90.0 - altitude, azimuth, diffuse) };
+  scene.sunAltitude = altitude;
+  scene.sunAzimuth = azimuth;
+  scene.sunIrradiance = normalIrradiance;
+  scene.diffuseHorizontal = diffuse;
+}
+
 vtkSmartPointer<vtkDataObject> heightField(int n, double spacing, const std::function<double(int, int)>& height)
 {
   vtkNew<vtkImageData> image;
@@ -116,8 +129,7 @@ void fractalTerrain(AccuracyScene& scene, int n, std::uint32_t seed, double reli
 {
   const std::vector<float> heights = fractalHeights(n, seed, 0.55, reliefM);
   scene.geometry = heightField(n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(j) * n + i]; });
-  scene.lights = { sunAt(altitude, azimuth, 800.0),
-    skyMap(vtkSkySource::CIE_GENERAL, 12, 90.0 - altitude, azimuth, 100.0) };
+  sunAndClearSky(scene, altitude, azimuth);
   scene.reflectance = reflectance;
   scene.terrain = true;
 }
@@ -131,8 +143,7 @@ void steepCrop(AccuracyScene& scene, double altitude, double azimuth, double ref
   const std::vector<float> heights = fractalHeights(full, 1, 0.55, steepReliefM);
   scene.geometry = heightField(
     n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(first + j) * full + first + i]; });
-  scene.lights = { sunAt(altitude, azimuth, 800.0),
-    skyMap(vtkSkySource::CIE_GENERAL, 12, 90.0 - altitude, azimuth, 100.0) };
+  sunAndClearSky(scene, altitude, azimuth);
   scene.reflectance = reflectance;
   scene.terrain = true;
 }
@@ -265,7 +276,7 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
       const double ridges = relief[static_cast<std::size_t>(j) * n + i] - (200.0 + 0.5 * reliefM); // heights start at 200 m
       return 1000.0 + 400.0 * (r < 1.0 ? r * r : 2.0 * r - 1.0) + std::min(1.0, r) * ridges;
     });
-    scene.lights = { sunAt(10.0, 135.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 80.0, 135.0, 100.0) };
+    sunAndClearSky(scene, 10.0, 135.0);
     scene.reflectance = 0.8;
     scene.terrain = true;
     scene.description = "snowy bowl 129 x 129 at 15 m, 400 m deep over its 1100 m radius, 80 m fractal relief on its walls, sun 10 deg up "
@@ -279,7 +290,7 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
       const double x = (i - 32) * 30.0, y = (j - 32) * 30.0, r = std::sqrt(x * x + y * y) / 960.0;
       return 1000.0 + 400.0 * std::min(r * r, 1.0 + 2.0 * (r - 1.0));
     });
-    scene.lights = { sunAt(20.0, 180.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 70.0, 180.0, 100.0) };
+    sunAndClearSky(scene, 20.0, 180.0);
     scene.reflectance = 0.8;
     scene.terrain = true;
     scene.description = "bowl crater 65 x 65 at 30 m, 400 m deep, sun 20 deg up (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.8";
@@ -300,7 +311,7 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
     blocks->SetBlock(1, box(-50, 50, -16, -6, 0, 15, 3));
     blocks->SetBlock(2, box(-50, 50, 6, 16, 0, 15, 3));
     scene.geometry = blocks;
-    scene.lights = { sunAt(25.0, 200.0, 800.0), skyMap(vtkSkySource::CIE_GENERAL, 12, 65.0, 200.0, 100.0) };
+    sunAndClearSky(scene, 25.0, 200.0);
     scene.reflectance = 0.3;
     scene.description = "street 12 m wide between 15 m blocks, sun 25 deg up across it (800 W/m^2) + CIE 12 sky, reflectance 0.3";
   }

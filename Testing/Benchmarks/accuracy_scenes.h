@@ -22,6 +22,10 @@ struct AccuracyScene
   double reflectance = 0.2;
   const char* emissionArray = nullptr;
   bool terrain = false; ///< a single terrain grid (the triangle path applies)
+  /// Where the lights are one sun (compass azimuth, degrees; normal irradiance, W/m^2) and
+  /// its CIE clear sky (diffuse horizontal irradiance): what a peer tool's inputs are
+  /// matched to (Testing/Benchmarks/rsun_accuracy.py). sunIrradiance 0: other lights.
+  double sunAltitude = 0.0, sunAzimuth = 0.0, sunIrradiance = 0.0, diffuseHorizontal = 0.0;
 };
 
 /// Names: olinda, fractal, hills, crater, canyon, box, house-sky, house-sun, olinda-sky (sun
