@@ -34,10 +34,9 @@ import tempfile
 import time
 
 import numpy as np
-from osgeo import gdal, osr
 
-UTM = osr.SpatialReference()
-UTM.ImportFromEPSG(32632)
+# Where the posts are placed: UTM zone 32N (EPSG), about its false origin.
+UTM_EPSG = 32632
 UTM_ORIGIN = (500000.0, 5000000.0)
 # TerraLux's horizons: 32 azimuths.
 HORIZON_STEP_DEG = 11.25
@@ -104,6 +103,7 @@ def grass(location, script, work):
 
 
 def read_raster(path):
+    from osgeo import gdal
     data = gdal.Open(path)
     return data.GetGeoTransform(), data.GetRasterBand(1).ReadAsArray().astype(np.float64)
 
@@ -149,13 +149,16 @@ def main():
         heights[rows_, cols] = column["z"]
         if np.isnan(heights).any() or len(rows) != heights.size:
             sys.exit("%s: the posts are not one full grid" % scene)
+        from osgeo import gdal, osr
         dem = os.path.join(work, "dem.tif")
         out = gdal.GetDriverByName("GTiff").Create(dem, len(xs), len(ys), 1, gdal.GDT_Float64)
         # r.sun wants a projected location: the posts placed in UTM zone 32N (r.sun's sun
         # comes from the latitude given, not from there).
         out.SetGeoTransform((UTM_ORIGIN[0] + xs[0] - spacing / 2, spacing, 0.0,
                              UTM_ORIGIN[1] + ys[-1] + spacing / 2, 0.0, -spacing))
-        out.SetProjection(UTM.ExportToWkt())
+        utm = osr.SpatialReference()
+        utm.ImportFromEPSG(UTM_EPSG)
+        out.SetProjection(utm.ExportToWkt())
         out.GetRasterBand(1).WriteArray(heights)
         out = None
 
@@ -163,7 +166,7 @@ def main():
         latitude, hour_angle = matching_sun(altitude, azimuth)
         solar_time = 12.0 + hour_angle / 15.0
         location = os.path.join(work, "location")
-        subprocess.run(["grass", "-e", "-c", "EPSG:32632", location], check=True, capture_output=True)
+        subprocess.run(["grass", "-e", "-c", "EPSG:%d" % UTM_EPSG, location], check=True, capture_output=True)
         ingest = ("r.in.gdal input=%s output=dem --overwrite --quiet\ng.region raster=dem\n"
                   "r.slope.aspect elevation=dem slope=slope aspect=aspect --overwrite --quiet\n" % dem)
         sun = "lat=lat long=long day=%d time=%.6f declination=%.9f" % (DAY, solar_time, math.radians(DECLINATION_DEG))
