@@ -102,14 +102,20 @@ def grass(location, script, work):
     return (float(match.group(1)) if match else time.time() - started), (int(match.group(2)) / 1024.0 if match else 0.0)
 
 
-def read_raster(path):
+def export(maps, work):
+    """The GRASS commands that write raster maps to WORK/<map>.tif."""
+    return "".join("r.out.gdal input=%s output=%s/%s.tif --overwrite --quiet\n" % (m, work, m) for m in maps)
+
+
+def read_raster(work, name):
+    """WORK/<name>.tif's first band."""
     from osgeo import gdal
-    data = gdal.Open(path)
-    return data.GetGeoTransform(), data.GetRasterBand(1).ReadAsArray().astype(np.float64)
+    data = gdal.Open(os.path.join(work, name + ".tif"))  # kept while its band is read (GDAL frees bands with it)
+    return data.GetRasterBand(1).ReadAsArray().astype(np.float64)
 
 
 def mean_of(work, name):
-    return float(np.nanmean(read_raster(os.path.join(work, name + ".tif"))[1]))
+    return float(np.nanmean(read_raster(work, name)))
 
 
 def errors(value, reference, reference_error, include):
@@ -139,15 +145,15 @@ def main():
         subprocess.run([report, scene, reference_dir, "solve", "points", "1e-2"], check=True,
                        stdout=subprocess.DEVNULL, env=dict(os.environ, TERRALUX_REPORT_POINTS=points))
         with open(points) as f:
-            rows = list(csv.DictReader(f))
-        column = {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+            records = list(csv.DictReader(f))
+        column = {k: np.array([float(r[k]) for r in records]) for k in records[0]}
         xs, ys = np.unique(column["x"]), np.unique(column["y"])
         spacing = float(xs[1] - xs[0])
         cols = np.rint((column["x"] - xs[0]) / spacing).astype(int)
-        rows_ = np.rint((ys[-1] - column["y"]) / spacing).astype(int)
+        rows = np.rint((ys[-1] - column["y"]) / spacing).astype(int)
         heights = np.full((len(ys), len(xs)), np.nan)
-        heights[rows_, cols] = column["z"]
-        if np.isnan(heights).any() or len(rows) != heights.size:
+        heights[rows, cols] = column["z"]
+        if np.isnan(heights).any() or len(records) != heights.size:
             sys.exit("%s: the posts are not one full grid" % scene)
         from osgeo import gdal, osr
         dem = os.path.join(work, "dem.tif")
@@ -167,15 +173,18 @@ def main():
         solar_time = 12.0 + hour_angle / 15.0
         location = os.path.join(work, "location")
         subprocess.run(["grass", "-e", "-c", "EPSG:%d" % UTM_EPSG, location], check=True, capture_output=True)
-        ingest = ("r.in.gdal input=%s output=dem --overwrite --quiet\ng.region raster=dem\n"
-                  "r.slope.aspect elevation=dem slope=slope aspect=aspect --overwrite --quiet\n" % dem)
+        # The DEM, its slopes, and the latitude (the longitude only completes the pair
+        # r.sun asks for: with local solar time it plays no part).
+        setup = ("r.in.gdal input=%s output=dem --overwrite --quiet\ng.region raster=dem\n"
+                 "r.slope.aspect elevation=dem slope=slope aspect=aspect --overwrite --quiet\n"
+                 "r.mapcalc 'lat = %.9f' --overwrite --quiet\nr.mapcalc 'long = 9' --overwrite --quiet\n"
+                 % (dem, latitude))
         sun = "lat=lat long=long day=%d time=%.6f declination=%.9f" % (DAY, solar_time, math.radians(DECLINATION_DEG))
 
         # r.sun's sun, checked on open planes (no shadows): a horizontal one (incidence =
         # altitude) and one tilted 30 deg toward the compass azimuth 90 deg off the sun's,
         # its slope and aspect from r.slope.aspect as the DEM's are (incidence from the
-        # sun's direction). Both signs of the declination are tried (r.sun's own is the
-        # negative of it internally).
+        # sun's direction; r.sun's single aspect_value follows another convention).
         facing = math.radians(azimuth + 90.0)
         centre = (UTM_ORIGIN[0] + xs.mean(), UTM_ORIGIN[1] + ys.mean())
         s_alt = math.sin(math.radians(altitude))
@@ -183,22 +192,13 @@ def main():
         planes = ("r.mapcalc 'tilted = -0.5773503 * ((x() - %.3f) * %.9f + (y() - %.3f) * %.9f)' --overwrite --quiet\n"
                   "r.slope.aspect elevation=tilted slope=tilted_slope aspect=tilted_aspect --overwrite --quiet\n"
                   % (centre[0], math.sin(facing), centre[1], math.cos(facing)))
-        matched = None
-        for sign in (1.0, -1.0):
-            signed = sun.replace("declination=%.9f" % math.radians(DECLINATION_DEG),
-                                 "declination=%.9f" % (sign * math.radians(DECLINATION_DEG)))
-            grass(location, ingest + "r.mapcalc 'lat = %.9f' --overwrite --quiet\nr.mapcalc 'long = 9' --overwrite --quiet\n" % latitude +
-                  "r.sun -p elevation=dem slope_value=0 aspect_value=270 %s linke_value=3.0 albedo_value=0 "
-                  "beam_rad=b0 diff_rad=d0 incidout=i0 --overwrite --quiet\n" % signed +
-                  planes + "r.sun -p elevation=tilted slope=tilted_slope aspect=tilted_aspect %s incidout=i1 "
-                  "--overwrite --quiet\n" % signed +
-                  "".join("r.out.gdal input=%s output=%s/%s.tif --overwrite --quiet\n" % (m, work, m)
-                          for m in ("b0", "d0", "i0", "i1")), work)
-            if abs(mean_of(work, "i0") - altitude) < 0.3:
-                matched = signed
-                break
-        if matched is None:
-            sys.exit("%s: r.sun's sun did not come to %g deg up" % (scene, altitude))
+        grass(location, setup +
+              "r.sun -p elevation=dem slope_value=0 aspect_value=270 %s linke_value=3.0 albedo_value=0 "
+              "beam_rad=b0 diff_rad=d0 incidout=i0 --overwrite --quiet\n" % sun + planes +
+              "r.sun -p elevation=tilted slope=tilted_slope aspect=tilted_aspect %s incidout=i1 --overwrite --quiet\n"
+              % sun + export(("b0", "d0", "i0", "i1"), work), work)
+        if abs(mean_of(work, "i0") - altitude) > 0.3:
+            sys.exit("%s: r.sun's sun did not come to %g deg up (%.2f)" % (scene, altitude, mean_of(work, "i0")))
         tilted = mean_of(work, "i1")
         if abs(tilted - expected_tilted) > 0.5:
             sys.exit("%s: r.sun's sun is not toward %g deg (a tilted plane sees it at %.2f deg, not %.2f)"
@@ -211,33 +211,31 @@ def main():
         for method, horizons in (("rsun", False), ("rsun-horizons", True)):
             call = ("r.sun elevation=dem slope=slope aspect=aspect %s linke_value=3.0 albedo_value=%g "
                     "coeff_bh=coeff_bh coeff_dh=coeff_dh beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob "
-                    "nprocs=2 --overwrite --quiet" % (matched, scene_info["reflectance"]))
+                    "nprocs=2 --overwrite --quiet" % (sun, scene_info["reflectance"]))
             if horizons:
                 call += " horizon_basename=horizon horizon_step=%g" % HORIZON_STEP_DEG
-            script = (ingest + "r.mapcalc 'lat = %.9f' --overwrite --quiet\nr.mapcalc 'long = 9' --overwrite --quiet\n" % latitude +
+            # r.horizon and r.sun are timed alone too ($TIMED), as the report times TerraLux's solve.
+            timed = os.path.join(work, "steps.time")
+            script = ("TIMED='/usr/bin/time -f %%e -a -o %s'\n" % timed + setup +
                       "r.mapcalc 'coeff_bh = %.9f' --overwrite --quiet\n" % coeff_bh +
                       "r.mapcalc 'coeff_dh = %.9f' --overwrite --quiet\n" % coeff_dh +
-                      (HORIZONS % HORIZON_STEP_DEG if horizons else "") + call + "\n")
-            # Timed alone too: r.horizon and r.sun, as TerraLux's solve is timed in the report.
-            timed = os.path.join(work, "steps.time")
-            script = "TIMED='/usr/bin/time -f %%e -a -o %s'\n" % timed + script.replace(call, "$TIMED " + call)
+                      (HORIZONS % HORIZON_STEP_DEG if horizons else "") + "$TIMED " + call + "\n")
             if os.path.exists(timed):
                 os.remove(timed)
             session_seconds, peak = grass(location, script, work)
             seconds = sum(float(line) for line in open(timed) if re.match(r"^[0-9.]+$", line.strip()))
-            grass(location, "".join("r.out.gdal input=%s output=%s/%s.tif --overwrite --quiet\n" % (m, work, m)
-                                    for m in ("beam", "diff", "refl", "glob")), work)
-            value = {m: read_raster(os.path.join(work, m + ".tif"))[1][rows_, cols]
-                     for m in ("beam", "diff", "refl", "glob")}
+            outputs = ("beam", "diff", "refl", "glob")
+            grass(location, export(outputs, work), work)
+            value = {m: read_raster(work, m)[rows, cols] for m in outputs}
             used = (column["used"] != 0) & np.isfinite(value["glob"])
             rsun_lit, ref_lit = value["beam"] > 0, column["ref_sun"] > 0
             agree = used & (rsun_lit == ref_lit)
-            facing = used & (column["sun_facing"] != 0)
-            zero = np.zeros(len(rows))
+            sun_facing = used & (column["sun_facing"] != 0)
+            zero = np.zeros(len(records))
             run = {"scene": scene, "method": method, "tolerance": 0, "seconds": seconds,
                    "session_seconds": session_seconds, "peak_mib": peak,
                    "elements": 0, "links": 0, "rays": 0, "iterations": 0, "floor_seconds": 0,
-                   "shadow_disagreement": float((facing & (rsun_lit != ref_lit)).sum() / max(1, facing.sum())),
+                   "shadow_disagreement": float((sun_facing & (rsun_lit != ref_lit)).sum() / max(1, sun_facing.sum())),
                    "sun": errors(value["beam"], column["ref_sun"], zero, used),
                    "sky": errors(value["diff"], column["ref_sky"], zero, used),
                    "reflected": errors(value["refl"], column["ref_reflected"], zero, used),

@@ -21,22 +21,21 @@ r.slope.aspect elevation=dem slope=slope aspect=aspect --overwrite --quiet
 GRASS
 }
 
-# default_fractal BUILD_DIR: the 1025^2 fractal DEM (30 m, seed 1), made once; prints its path.
-default_fractal() {
-  local dem="$1/bench/fractal_1025.tif"
+# bench_fractal BUILD_DIR NAME [RELIEF_M]: BUILD_DIR/bench/NAME.tif, a 1025^2 fractal DEM
+# (30 m, seed 1; make_fractal_dem's relief unless given), made once; prints its path.
+bench_fractal() {
+  local dem="$1/bench/$2.tif"
   mkdir -p "$1/bench"
-  [ -s "${dem}" ] || "$1/bin/make_fractal_dem" "${dem}" 1025 1 30 >/dev/null
+  [ -s "${dem}" ] || "$1/bin/make_fractal_dem" "${dem}" 1025 1 30 ${3:+"$3"} >/dev/null
   echo "${dem}"
 }
 
-# steep_fractal BUILD_DIR: the steep 1025^2 fractal (30 m, seed 1, 3000 m of relief: mean
-# slope 15 deg, p95 28 deg, as real mountain DEMs), made once; prints its path.
-steep_fractal() {
-  local dem="$1/bench/steep_1025.tif"
-  mkdir -p "$1/bench"
-  [ -s "${dem}" ] || "$1/bin/make_fractal_dem" "${dem}" 1025 1 30 3000 >/dev/null
-  echo "${dem}"
-}
+# default_fractal BUILD_DIR: the gentle 1025^2 fractal.
+default_fractal() { bench_fractal "$1" fractal_1025; }
+
+# steep_fractal BUILD_DIR: the steep one, 3000 m of relief (mean slope 15 deg, p95 28
+# deg, as real mountain DEMs).
+steep_fractal() { bench_fractal "$1" steep_1025 3000; }
 
 # A scratch folder for the run, removed at exit.
 work="$(mktemp -d)"
