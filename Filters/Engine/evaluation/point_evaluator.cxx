@@ -294,11 +294,15 @@ PointIrradiance PointEvaluator::irradianceAt(
         budget.knownSurfaces = largestBand(expected);
     }
     const Spectrum& sun = irradiance[SunLight];
-    // Its rays start two more offsets above (three in all): on rough terrain the move
-    // into the leaf, toward a centre across a crease, can end that far below the
-    // surface the point's normal lifts from.
-    const Vec3 lifted = (post ? inside : this->openSideOf(point, inside, normal, gatherSeed)) +
-      2.0 * this->Rays.offset() * normal;
+    // A post's rays start at the post itself, one offset along its normal (as every
+    // ray does), which clears the grid's triangles around it: any higher, the thin band
+    // of terrain a gentle slope sees above its plane shrinks, and posts moved into their
+    // leaves disagree with their neighbours, which costs the lattice's reads
+    // (docs/tuning.md). Elsewhere they start two more
+    // offsets above (three in all): on rough terrain the move into the leaf, toward a
+    // centre across a crease, can end that far below the surface the normal lifts from.
+    const Vec3 lifted =
+      post ? point : this->openSideOf(point, inside, normal, gatherSeed) + 2.0 * this->Rays.offset() * normal;
     const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
       largestBand(sun), this->Solver.largestRadiosity() > 0.0, post);
     irradiance[ReflectedLight] = light.surfaces;

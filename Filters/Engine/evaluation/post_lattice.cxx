@@ -35,9 +35,8 @@ PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* spli
   const std::size_t posts = this->Held.count();
   this->Reflected.resize(posts);
   this->Variance.assign(posts, -1.0);
-  this->PerTerrain.resize(posts);
+  this->Found.resize(posts);
   this->Received.assign(posts, 0.0);
-  this->TerrainSeen.assign(posts, 0.0);
   const std::size_t cells = this->HeldCells.empty() ? 0
     : static_cast<std::size_t>(this->HeldCells.i1 - this->HeldCells.i0 + 1) * (this->HeldCells.j1 - this->HeldCells.j0 + 1);
   this->Refined.assign(cells, CellRefined); // every cell fine until refine decides
@@ -69,13 +68,18 @@ bool PostLattice::gatheredInPass(int i, int j, bool first) const
   return false;
 }
 
+bool PostLattice::seesTerrain(std::size_t k) const
+{
+  return this->Found[k][terrainSeenSlot] > minimumTerrainSeen;
+}
+
 double PostLattice::largestPerTerrainSeen(std::size_t k) const
 {
-  const Scaled& scaled = this->PerTerrain[k];
+  const Beyond& found = this->Found[k];
   double largest = -std::numeric_limits<double>::infinity();
   for (int band = 0; band < maxBands; ++band)
-    largest = std::max(largest, scaled[band] + scaled[maxBands + band]);
-  return largest;
+    largest = std::max(largest, found[band] + found[maxBands + band]);
+  return largest / found[terrainSeenSlot];
 }
 
 void PostLattice::refine(double allowedSpread, double allowedFloor)
@@ -96,7 +100,7 @@ void PostLattice::refine(double allowedSpread, double allowedFloor)
         const Around corners = this->aroundCell(coarse);
         this->forEachCorner(coarse, [&](std::size_t k) {
           if (this->Variance[k] < 0.0 ||
-            this->TerrainSeen[k] * (corners.largestPerTerrainSeen - corners.leastPerTerrainSeen) >
+            this->Found[k][terrainSeenSlot] * (corners.largestPerTerrainSeen - corners.leastPerTerrainSeen) >
               std::max(allowedSpread * this->Received[k], allowedFloor))
             refined = CellRefined;
         });
@@ -144,20 +148,15 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   const std::size_t k = this->index(i / this->Step, j / this->Step);
   this->Reflected[k] = gathered.reflected;
   this->Variance[k] = std::max(0.0, gathered.variance);
-  // A post that sees next to no terrain tells nothing per terrain seen: 0.
-  Scaled scaled{};
-  if (gathered.terrainSeen > 1e-6)
+  Beyond& found = this->Found[k];
+  for (int band = 0; band < maxBands; ++band)
   {
-    for (int band = 0; band < maxBands; ++band)
-    {
-      scaled[band] = gathered.reflected[band] / gathered.terrainSeen;
-      scaled[maxBands + band] = gathered.skyCorrection[band] / gathered.terrainSeen;
-    }
-    scaled[2 * maxBands] = gathered.skyViewCorrection / gathered.terrainSeen;
+    found[band] = gathered.reflected[band];
+    found[maxBands + band] = gathered.skyCorrection[band];
   }
-  this->PerTerrain[k] = scaled;
+  found[2 * maxBands] = gathered.skyViewCorrection;
+  found[terrainSeenSlot] = std::max(0.0, gathered.terrainSeen);
   this->Received[k] = gathered.received;
-  this->TerrainSeen[k] = gathered.terrainSeen;
 }
 
 void PostLattice::share()
@@ -165,9 +164,8 @@ void PostLattice::share()
   constexpr int latticeTag = 903; // after the posts' skies' and suns' (post_sky.cxx, post_sunlight.cxx)
   this->Held.share(this->Reflected, latticeTag);
   this->Held.share(this->Variance, latticeTag + 1);
-  this->Held.share(this->PerTerrain, latticeTag + 2);
+  this->Held.share(this->Found, latticeTag + 2);
   this->Held.share(this->Received, latticeTag + 3);
-  this->Held.share(this->TerrainSeen, latticeTag + 4);
 }
 
 template <class Corner>
@@ -185,11 +183,15 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
   this->forEachCorner(cell, [&](std::size_t k) {
     if (this->Variance[k] < 0.0)
       return;
-    const double largest = this->largestPerTerrainSeen(k);
     result.variance = std::max(result.variance, this->Variance[k]);
+    if (!this->seesTerrain(k))
+      return; // tells nothing per terrain seen
+    const double largest = this->largestPerTerrainSeen(k);
     result.largestPerTerrainSeen = std::max(result.largestPerTerrainSeen, largest);
     result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
   });
+  if (result.leastPerTerrainSeen > result.largestPerTerrainSeen) // no corner sees terrain
+    result.leastPerTerrainSeen = result.largestPerTerrainSeen = 0.0;
   return result;
 }
 
@@ -205,15 +207,21 @@ bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
 
 bool PostLattice::perTerrainSeenAt(double u, double v, PerTerrainSeen& value) const
 {
-  Scaled scaled;
-  if (!this->interpolate(u, v, [&](std::size_t k) { return this->PerTerrain[k]; }, scaled))
+  // A ratio of the corners' sums (each weighted by the terrain it sees) rather than a
+  // mean of their ratios: a corner that sees next to no terrain (an open ridge between
+  // valleys) tells next to nothing of what terrain sends, and counting its ratio as 0
+  // read too little light from surfaces on gentle terrain (docs/tuning.md).
+  Beyond found;
+  if (!this->interpolate(u, v, [&](std::size_t k) { return this->Found[k]; }, found) ||
+    !(found[terrainSeenSlot] > minimumTerrainSeen))
     return false;
+  const double perTerrainSeen = 1.0 / found[terrainSeenSlot];
   for (int band = 0; band < maxBands; ++band)
   {
-    value.reflected[band] = scaled[band];
-    value.skyCorrection[band] = scaled[maxBands + band];
+    value.reflected[band] = found[band] * perTerrainSeen;
+    value.skyCorrection[band] = found[maxBands + band] * perTerrainSeen;
   }
-  value.skyViewCorrection = scaled[2 * maxBands];
+  value.skyViewCorrection = found[2 * maxBands] * perTerrainSeen;
   return true;
 }
 } // namespace terralux

@@ -80,7 +80,8 @@ public:
   double varianceAround(int i, int j) const { return this->around(i, j).variance; }
   /// What the gathered corners of the lattice cell holding post (i, j) found: the
   /// largest variance (-1 where none was gathered), and the largest and least light
-  /// beyond their horizons' sky per terrain seen (largest band; see perTerrainSeenAt).
+  /// beyond their horizons' sky per terrain seen (largest band; see perTerrainSeenAt),
+  /// over the corners that see terrain (both 0 where none does).
   struct Around
   {
     double variance = -1.0;
@@ -92,10 +93,10 @@ public:
   /// posts; false where none around holds a value.
   bool reflectedAt(double u, double v, Spectrum& reflected) const;
   /// What the lattice's posts found beyond their horizons' sky (light from surfaces,
-  /// the sky's corrections), each over the part of their hemisphere that is terrain (1 -
-  /// sky view factor), bilinear between them at grid parameters (u, v): a post there
+  /// the sky's corrections) over the part of their hemisphere that is terrain (1 - sky
+  /// view factor), both bilinear between them at grid parameters (u, v): a post there
   /// that sees terrainSeen of terrain receives about terrainSeen times this. False where
-  /// none around holds a value.
+  /// none around holds a value or sees terrain.
   struct PerTerrainSeen
   {
     Spectrum reflected{};
@@ -134,10 +135,14 @@ private:
   Around aroundCell(const Cell& cell) const;
   template <class Value, class NodeValue>
   bool interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const;
+  /// Whether lattice post k sees enough terrain to tell what terrain sends.
+  bool seesTerrain(std::size_t k) const;
   double largestPerTerrainSeen(std::size_t k) const;
-  // Per lattice post, over terrain seen: reflected, sky correction (maxBands each), sky
-  // view correction.
-  using Scaled = std::array<double, 2 * maxBands + 1>;
+  // Per lattice post: what it found beyond its horizons' sky, reflected and sky
+  // correction (maxBands each), sky view correction, then the terrain it sees.
+  using Beyond = std::array<double, 2 * maxBands + 2>;
+  static constexpr std::size_t terrainSeenSlot = 2 * maxBands + 1;
+  static constexpr double minimumTerrainSeen = 1e-6;
 
   int Step, Nx, Ny; // lattice posts each way
   int CoarseX, CoarseY; // coarse cells each way
@@ -145,8 +150,8 @@ private:
   WorkSplit::Window HeldCells; // the coarse cells over them
   std::vector<Spectrum> Reflected; // per held lattice post, as the vectors below
   std::vector<double> Variance; // -1: not gathered (no data there, or not asked for)
-  std::vector<Scaled> PerTerrain;
-  std::vector<double> Received, TerrainSeen;
+  std::vector<Beyond> Found;
+  std::vector<double> Received;
   std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells
 };
 } // namespace terralux

@@ -130,3 +130,43 @@ TEST(PostLattice, ReadsBetweenItsPostsAndTellsTheLargestSpreadAround)
   EXPECT_DOUBLE_EQ(per.skyViewCorrection, 0.5 * (0.0 - 0.1));
   EXPECT_FALSE(lattice.perTerrainSeenAt(8.0, 4.0, per));
 }
+
+// What terrain sends, read between lattice posts, is the ratio of what the corners
+// found to the terrain they see: a corner on an open ridge, which sees next to no
+// terrain, tells nothing of it and must not read as 0; corners weigh by the terrain
+// they see.
+TEST(PostLattice, ReadsPerTerrainSeenByTheTerrainEachCornerSees)
+{
+  PostLattice lattice(9, 5, 4); // lattice posts at i = 0, 4, 8 and j = 0, 4
+  auto gathered = [](double reflected, double terrainSeen) {
+    PostLattice::Gathered g;
+    g.reflected = uniformSpectrum(reflected);
+    g.variance = 1.0;
+    g.terrainSeen = terrainSeen;
+    return g;
+  };
+  lattice.set(0, 0, gathered(0.0, 0.0)); // an open ridge: no terrain seen
+  lattice.set(4, 0, gathered(3.0, 0.1));  // 30 per terrain seen
+  lattice.set(0, 4, gathered(0.0, 0.0));
+  lattice.set(4, 4, gathered(12.0, 0.3)); // 40
+  PostLattice::PerTerrainSeen per;
+  // Half way between the ridge and (4, 0): what (4, 0) found, not half of it.
+  ASSERT_TRUE(lattice.perTerrainSeenAt(2.0, 0.0, per));
+  EXPECT_DOUBLE_EQ(per.reflected[0], 30.0);
+  // Between (4, 0) and (4, 4): (3 + 12) / (0.1 + 0.3), not the mean of 30 and 40.
+  ASSERT_TRUE(lattice.perTerrainSeenAt(4.0, 2.0, per));
+  EXPECT_DOUBLE_EQ(per.reflected[0], 37.5);
+  // The spread around is that of the corners that see terrain.
+  const PostLattice::Around around = lattice.around(1, 1);
+  EXPECT_DOUBLE_EQ(around.largestPerTerrainSeen, 40.0);
+  EXPECT_DOUBLE_EQ(around.leastPerTerrainSeen, 30.0);
+  // Where no corner sees terrain there is nothing to read, and no spread.
+  PostLattice open(5, 5, 4);
+  for (int j : { 0, 4 })
+    for (int i : { 0, 4 })
+      open.set(i, j, gathered(0.0, 0.0));
+  EXPECT_FALSE(open.perTerrainSeenAt(2.0, 2.0, per));
+  EXPECT_DOUBLE_EQ(open.around(1, 1).largestPerTerrainSeen, 0.0);
+  EXPECT_DOUBLE_EQ(open.around(1, 1).leastPerTerrainSeen, 0.0);
+  EXPECT_EQ(open.around(1, 1).variance, 1.0);
+}
