@@ -408,12 +408,16 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
   radiosity->Update();
   const double wall = seconds(start);
 
-  std::vector<double> value[4], ref[4], refError[4], estimate;
+  std::vector<double> value[4], ref[4], refError[4], estimate, skyView;
   for (vtkDataSet* data : vtkRadiosityScene::DataSetsOf(radiosity->GetOutput()))
   {
     vtkDataArray* error = data->GetPointData()->GetArray("IrradianceError");
+    vtkDataArray* view = data->GetPointData()->GetArray("SkyViewFactor");
     for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
+    {
       estimate.push_back(error ? error->GetComponent(p, 0) : std::nan(""));
+      skyView.push_back(view ? view->GetComponent(p, 0) : std::nan(""));
+    }
     const char* names[4] = { "SunIrradiance", "SkyIrradiance", "ReflectedIrradiance", "Irradiance" };
     for (int c = 0; c < 4; ++c)
     {
@@ -456,13 +460,13 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     loadScene(input, where);
     std::ofstream csv(pointsFile);
     csv << "x,y,z,nx,ny,nz,sun,sky,reflected,global,ref_sun,ref_sky,ref_reflected,ref_global,estimate,ref_error,"
-           "used,sun_facing\n";
+           "used,sun_facing,sky_view\n";
     for (std::size_t k = 0; k < n; ++k)
       csv << where.points[k].x << "," << where.points[k].y << "," << where.points[k].z << "," << where.normals[k].x
           << "," << where.normals[k].y << "," << where.normals[k].z << "," << value[0][k] << "," << value[1][k] << ","
           << value[2][k] << "," << value[3][k] << "," << ref[0][k] << "," << ref[1][k] << "," << ref[2][k] << ","
           << ref[3][k] << "," << estimate[k] << "," << refError[3][k] << "," << (reference[k].used != 0.0) << ","
-          << (reference[k].sunFacing != 0.0) << "\n";
+          << (reference[k].sunFacing != 0.0) << "," << skyView[k] << "\n";
   }
   // The floor: one Embree occlusion ray per point toward the sun.
   ScenePoints s;

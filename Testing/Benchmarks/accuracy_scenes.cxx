@@ -135,7 +135,7 @@ void fractalTerrain(AccuracyScene& scene, int n, std::uint32_t seed, double reli
 }
 
 // The centre 129 x 129 posts of the steep benchmark DEM (make_fractal_dem 1025 posts,
-// seed 1, 3000 m relief: mean slope 15 deg, p95 28 deg; the crop 14 and 26 deg) under a
+// seed 1, 3000 m relief: mean slope 15 deg, p95 28 deg; the crop 17 and 30 deg) under a
 // sun `altitude` deg up toward compass `azimuth` and its CIE clear sky.
 void steepCrop(AccuracyScene& scene, double altitude, double azimuth, double reflectance)
 {

@@ -11,7 +11,7 @@ namespace
 const char* const usage =
   "usage: make_fractal_dem OUT.tif [N=4097] [SEED=1] [SPACING_M=30] [RELIEF_M=1500]\n"
   "  an N x N fractal DEM (N = 2^k + 1; UTM 32N), seeded, as a float32 GeoTIFF; relief 1500 m is the\n"
-  "  gentle benchmark DEM (1025^2: mean slope 7.8 deg), 3000 m the steep one (mean 15 deg, p95 28 deg)\n";
+  "  gentle benchmark DEM (1025^2: mean slope 8.0 deg), 3000 m the steep one (mean 15 deg, p95 28 deg)\n";
 
 // The whole argument as a number, or false.
 bool parse(const char* text, double& value)
