@@ -50,7 +50,7 @@ std::vector<float> fractalHeights(int n, std::uint32_t seed, double roughness, d
   // Octaves from the grid's side down to 2 posts, each `roughness` times the one
   // before, each on its own lattice turned and shifted at random, so that no scale of
   // the relief lines up with the posts (diamond-square's did, which biased anything
-  // that samples every 4th post: docs/validation.md).
+  // that samples every 4th post: docs/benchmarks.md).
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   struct Octave
