@@ -35,8 +35,10 @@ double gradientNoise(double x, double y, std::uint64_t key)
     return std::cos(angle) * (u - dx) + std::sin(angle) * (v - dy);
   };
   auto fade = [](double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); };
-  const double a = corner(0, 0) + fade(u) * (corner(1, 0) - corner(0, 0));
-  const double b = corner(0, 1) + fade(u) * (corner(1, 1) - corner(0, 1));
+  const double c00 = corner(0, 0), c10 = corner(1, 0), c01 = corner(0, 1), c11 = corner(1, 1);
+  const double fu = fade(u);
+  const double a = c00 + fu * (c10 - c00);
+  const double b = c01 + fu * (c11 - c01);
   return a + fade(v) * (b - a);
 }
 } // namespace
@@ -62,9 +64,14 @@ std::vector<float> fractalHeights(int n, std::uint32_t seed, double roughness, d
   double amplitude = 1.0;
   for (int wavelength = n - 1; wavelength >= 2; wavelength /= 2, amplitude *= roughness)
   {
+    // Drawn one statement at a time: the order of draws within one expression is
+    // unspecified, and a seed must give one DEM whatever order a compiler picks.
     const double angle = 6.283185307179586 * uniform(random);
-    octaves.push_back({ std::cos(angle), std::sin(angle), 1.0 / wavelength, 1024.0 * uniform(random),
-      1024.0 * uniform(random), amplitude, (static_cast<std::uint64_t>(random()) << 32) | random() });
+    const double offsetX = 1024.0 * uniform(random);
+    const double offsetY = 1024.0 * uniform(random);
+    const std::uint64_t high = random();
+    const std::uint64_t low = random();
+    octaves.push_back({ std::cos(angle), std::sin(angle), 1.0 / wavelength, offsetX, offsetY, amplitude, (high << 32) | low });
   }
   std::vector<float> h(static_cast<std::size_t>(n) * n, 0.0f);
   for (int j = 0; j < n; ++j)

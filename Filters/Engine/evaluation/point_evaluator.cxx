@@ -298,9 +298,9 @@ PointIrradiance PointEvaluator::irradianceAt(
     // ray does), which clears the grid's triangles around it: any higher, the thin band
     // of terrain a gentle slope sees above its plane shrinks, and posts moved into their
     // leaves disagree with their neighbours, which costs the lattice's reads
-    // (docs/tuning.md). Elsewhere they start two more
-    // offsets above (three in all): on rough terrain the move into the leaf, toward a
-    // centre across a crease, can end that far below the surface the normal lifts from.
+    // (docs/tuning.md). Elsewhere they start two more offsets above (three in all): on
+    // rough terrain the move into the leaf, toward a centre across a crease, can end
+    // that far below the surface the normal lifts from.
     const Vec3 lifted =
       post ? point : this->openSideOf(point, inside, normal, gatherSeed) + 2.0 * this->Rays.offset() * normal;
     const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,

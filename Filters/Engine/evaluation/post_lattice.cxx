@@ -70,7 +70,7 @@ bool PostLattice::gatheredInPass(int i, int j, bool first) const
 
 bool PostLattice::seesTerrain(std::size_t k) const
 {
-  return this->Found[k][terrainSeenSlot] > minimumTerrainSeen;
+  return this->terrainSeen(k) > minimumTerrainSeen;
 }
 
 double PostLattice::largestPerTerrainSeen(std::size_t k) const
@@ -79,7 +79,7 @@ double PostLattice::largestPerTerrainSeen(std::size_t k) const
   double largest = -std::numeric_limits<double>::infinity();
   for (int band = 0; band < maxBands; ++band)
     largest = std::max(largest, found[band] + found[maxBands + band]);
-  return largest / found[terrainSeenSlot];
+  return largest / this->terrainSeen(k);
 }
 
 void PostLattice::refine(double allowedSpread, double allowedFloor)
@@ -100,7 +100,7 @@ void PostLattice::refine(double allowedSpread, double allowedFloor)
         const Around corners = this->aroundCell(coarse);
         this->forEachCorner(coarse, [&](std::size_t k) {
           if (this->Variance[k] < 0.0 ||
-            this->Found[k][terrainSeenSlot] * (corners.largestPerTerrainSeen - corners.leastPerTerrainSeen) >
+            this->terrainSeen(k) * (corners.largestPerTerrainSeen - corners.leastPerTerrainSeen) >
               std::max(allowedSpread * this->Received[k], allowedFloor))
             refined = CellRefined;
         });

@@ -135,6 +135,7 @@ private:
   Around aroundCell(const Cell& cell) const;
   template <class Value, class NodeValue>
   bool interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const;
+  double terrainSeen(std::size_t k) const { return this->Found[k][terrainSeenSlot]; }
   /// Whether lattice post k sees enough terrain to tell what terrain sends.
   bool seesTerrain(std::size_t k) const;
   double largestPerTerrainSeen(std::size_t k) const;
