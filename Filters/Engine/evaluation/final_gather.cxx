@@ -254,12 +254,12 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   }
 
   // Light from surfaces by rays: at a post of the horizons' map drawn below its horizon
-  // (the sky above it is counted already), elsewhere cosine-weighted over the hemisphere.
+  // (the sky above it is counted already, and stays its horizons': see
+  // TerrainDirections), elsewhere cosine-weighted over the hemisphere.
   std::optional<TerrainDirections> belowHorizon;
   if (horizons && post && this->Horizons->map())
     belowHorizon.emplace(*this->Horizons, post, normal);
-  Spectrum surfaces{}, skyCorrection{};
-  double skyViewCorrection = 0.0; // projected solid angle
+  Spectrum surfaces{};
   // Each ray's estimate of what surfaces send (largest band); its spread sets how many
   // rays are needed. A pilot of budget.pilot rays of their own sets how many rays the
   // point needs; the estimate then comes from that many fresh stratified rays. Rays that
@@ -276,9 +276,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     sum = sumOfSquares = interreflected = 0.0;
     backRays = 0;
     surfaces = Spectrum{};
-    skyCorrection = Spectrum{};
-    skyViewCorrection = 0.0;
-    // One ray's estimate of what the point receives beyond the exact sky (largest band).
+    // One ray's estimate of what surfaces send (largest band).
     auto gather = [&](int k, double s, double t) -> double {
       TerrainDirections::Sample below;
       if (belowHorizon)
@@ -288,27 +286,15 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       if (!(weight > 0.0))
         return 0.0;
       SurfaceHit hit;
-      const bool met = this->Rays.firstHit(point, normal, d, hit);
-      double value = 0.0;
-      // Below the horizon: where the interpolated horizon was wrong, the sky it took as
-      // hidden is seen, or the sky it took as seen is hidden (see TerrainDirections).
-      if (belowHorizon && below.skyTaken == (met ? -1 : 1))
-      {
-        const Spectrum l = this->Sky->radiance(d);
-        for (int band = 0; band < maxBands; ++band)
-          skyCorrection[band] += below.skyTaken * pi * weight * l[band];
-        skyViewCorrection += below.skyTaken * pi * weight;
-        value += below.skyTaken * pi * weight * largestBand(l);
-      }
-      const PolygonElement* leaf = met ? this->leafAt(hit) : nullptr;
+      const PolygonElement* leaf = this->Rays.firstHit(point, normal, d, hit) ? this->leafAt(hit) : nullptr;
       if (!leaf)
-        return value;
+        return 0.0;
       // The back of a one-sided surface sends nothing.
       const Vec3 front = frontAt(hit, *leaf);
       if (!(glm::dot(front, d) < 0.0))
       {
         ++backRays;
-        return value;
+        return 0.0;
       }
       const double sunSample = std::fmod(sunStart + 0.61803398874989485 * k, 1.0);
       double bounced = 0.0;
@@ -316,7 +302,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       for (int band = 0; band < maxBands; ++band)
         surfaces[band] += weight * b[band];
       interreflected += weight * bounced;
-      return value + weight * largestBand(b);
+      return weight * largestBand(b);
     };
     for (int k = 0; k < count; ++k)
     {
@@ -341,14 +327,9 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // E = pi x the mean radiance over cosine-weighted directions: the mean radiosity.
   const double perRay = count > 0 ? 1.0 / count : 0.0;
   for (int band = 0; band < maxBands; ++band)
-  {
     result.surfaces[band] = surfaces[band] * perRay;
-    result.sky[band] = std::max(0.0, result.sky[band] + skyCorrection[band] * perRay);
-  }
   if (this->Sky)
-    // Within what the plane could see of the sky at most, whatever the corrections' noise.
-    result.skyViewFactor =
-      std::clamp((openOmega + skyViewCorrection * perRay) / pi, 0.0, 0.5 * (1.0 + std::clamp(normal.z, -1.0, 1.0)));
+    result.skyViewFactor = openOmega / pi;
   result.rays += count;
   result.count = count;
   result.backRays = backRays;

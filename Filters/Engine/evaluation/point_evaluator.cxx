@@ -307,12 +307,12 @@ PointIrradiance PointEvaluator::irradianceAt(
       largestBand(sun), this->Solver.largestRadiosity() > 0.0, post);
     irradiance[ReflectedLight] = light.surfaces;
     result.gatherVariance = light.variance;
-    // The rays' noise, and the error of the light from surfaces their hits read, which
-    // the hierarchy's measured deficit estimates (as well as its sample tells: the same
-    // margin).
+    // The rays' noise and the sky's error, independent of each other (in quadrature),
+    // and the error of the light from surfaces their hits read, which the hierarchy's
+    // measured deficit estimates (as well as its sample tells: the same margin).
     result.irradianceError =
-      errorCoverage * (light.standardError + this->ReadRelativeError * light.interreflected) +
-      this->skyError(normal, light.sky, light.count > 0 || !post);
+      std::hypot(errorCoverage * light.standardError, this->skyError(normal, light.sky, !post)) +
+      errorCoverage * this->ReadRelativeError * light.interreflected;
     // Rays that met no lit surface say nothing of a rare one they missed: the terrain and
     // objects the point sees (all but its sky) send at most the scene's largest radiosity.
     if (!(largestBand(light.surfaces) > 0.0))
@@ -329,9 +329,9 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   PostSky::Value sky;
   if (!this->PostSkies || !this->PostSkies->found(post, normal, sky))
     return false;
-  // What a gather adds to the horizons' sky (light from surfaces, the sky where the
-  // interpolated horizon was wrong) comes from the terrain the post sees, 1 - its sky
-  // view factor: that times what the lattice's posts around found per terrain seen.
+  // The sky is its horizons'. The light from surfaces comes from the terrain the post
+  // sees, 1 - its sky view factor: that times what the lattice's posts around found per
+  // terrain seen.
   // Read between them it errs by at most their spread, plus the bias of reading light
   // from surfaces between posts (Tuning::latticeReadBias); the post reads it where that
   // meets its target, else gathers. The error of what the lattice's posts read from the
@@ -342,30 +342,27 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   const double received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
   const double spread = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen);
   const double largestReflected = terrainSeen * std::max(0.0, around.largestPerTerrainSeen);
-  const bool horizonsChecked = this->Solver.largestRadiosity() > 0.0;
-  PostLattice::PerTerrainSeen found;
-  if (spread + Tuning::latticeReadBias * largestReflected + this->skyError(normal, sky.irradiance, horizonsChecked) >
+  const double skyError = this->skyError(normal, sky.irradiance, false);
+  Spectrum perTerrainSeen;
+  if (spread + Tuning::latticeReadBias * largestReflected + skyError >
       this->Options.errorTarget(received + largestReflected) ||
-    !this->Lattice->perTerrainSeenAt(i, j, found))
+    !this->Lattice->perTerrainSeenAt(i, j, perTerrainSeen))
     return false;
   for (int band = 0; band < maxBands; ++band)
-  {
-    result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * found.reflected[band]);
-    result.irradiance[SkyLight][band] = std::max(0.0, sky.irradiance[band] + terrainSeen * found.skyCorrection[band]);
-  }
-  result.skyViewFactor = std::clamp(sky.skyViewFactor + terrainSeen * found.skyViewCorrection, 0.0, 1.0);
+    result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * perTerrainSeen[band]);
+  result.irradiance[SkyLight] = sky.irradiance;
+  result.skyViewFactor = sky.skyViewFactor;
   result.gatherVariance = around.variance;
   // The lattice's posts cast no ray below their horizons where nothing sends light.
   const double readRelativeError = errorCoverage * this->ReadRelativeError + Tuning::latticeReadBias;
-  result.irradianceError = spread + readRelativeError * largestBand(result.irradiance[ReflectedLight]) +
-    this->skyError(normal, result.irradiance[SkyLight], horizonsChecked);
+  result.irradianceError = spread + readRelativeError * largestBand(result.irradiance[ReflectedLight]) + skyError;
   return true;
 }
 
-double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, bool horizonsChecked) const
+double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, bool byRays) const
 {
   const double own = Tuning::openSkyError * largestBand(sky);
-  if (horizonsChecked || !this->SkyAtPoints)
+  if (byRays || !this->SkyAtPoints)
     return own;
   Spectrum open{};
   double projectedSolidAngle = 0.0;
@@ -473,15 +470,11 @@ void PointEvaluator::gatherLatticePosts(
         continue;
       const Vec3 normal = grid.normalAt(i, j, hornNormals);
       const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), normal);
-      // What the gather found beyond the post's horizons' sky.
       PostSky::Value sky;
       if (!this->PostSkies || !this->PostSkies->found({ true, static_cast<std::size_t>(j) * grid.postsX() + i }, normal, sky))
         continue;
       PostLattice::Gathered gathered;
       gathered.reflected = result.irradiance[ReflectedLight];
-      for (int band = 0; band < maxBands; ++band)
-        gathered.skyCorrection[band] = result.irradiance[SkyLight][band] - sky.irradiance[band];
-      gathered.skyViewCorrection = result.skyViewFactor - sky.skyViewFactor;
       gathered.variance = result.gatherVariance;
       gathered.terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
       gathered.received = receivedBesideSurfaces(result.irradiance[SunLight], sky);

@@ -109,10 +109,10 @@ private:
   bool gathersAtPoints() const;
   bool wantsDenseHorizons() const;
   /// The error estimate's part for the sky a point receives: the open sky's own error
-  /// (Tuning::openSkyError) and, where no ray below a post's horizons checked them
-  /// (nothing there sends light), Tuning::horizonSkyError of the sky they hide from the
-  /// plane at `normal`: found at a few dozen azimuths.
-  double skyError(const Vec3& normal, const Spectrum& sky, bool horizonsChecked) const;
+  /// (Tuning::openSkyError) and, where the sky comes from a post's horizons rather than
+  /// from rays (`byRays`), Tuning::horizonSkyError of the sky they hide from the plane
+  /// at `normal`: found at a few dozen azimuths.
+  double skyError(const Vec3& normal, const Spectrum& sky, bool byRays) const;
   /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
   /// leaf) unless that sees the back of a surface, then the most open of four points two
   /// ray offsets from it diagonally in its plane, if clearly more open (the reference's

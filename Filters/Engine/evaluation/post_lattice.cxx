@@ -78,7 +78,7 @@ double PostLattice::largestPerTerrainSeen(std::size_t k) const
   const Beyond& found = this->Found[k];
   double largest = -std::numeric_limits<double>::infinity();
   for (int band = 0; band < maxBands; ++band)
-    largest = std::max(largest, found[band] + found[maxBands + band]);
+    largest = std::max(largest, found[band]);
   return largest / this->terrainSeen(k);
 }
 
@@ -150,11 +150,7 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   this->Variance[k] = std::max(0.0, gathered.variance);
   Beyond& found = this->Found[k];
   for (int band = 0; band < maxBands; ++band)
-  {
     found[band] = gathered.reflected[band];
-    found[maxBands + band] = gathered.skyCorrection[band];
-  }
-  found[2 * maxBands] = gathered.skyViewCorrection;
   found[terrainSeenSlot] = std::max(0.0, gathered.terrainSeen);
   this->Received[k] = gathered.received;
 }
@@ -205,7 +201,7 @@ bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
   return this->interpolate(u, v, [&](std::size_t k) { return this->Reflected[k]; }, reflected);
 }
 
-bool PostLattice::perTerrainSeenAt(double u, double v, PerTerrainSeen& value) const
+bool PostLattice::perTerrainSeenAt(double u, double v, Spectrum& reflected) const
 {
   // A ratio of the corners' sums (each weighted by the terrain it sees) rather than a
   // mean of their ratios: a corner that sees next to no terrain (an open ridge between
@@ -217,11 +213,7 @@ bool PostLattice::perTerrainSeenAt(double u, double v, PerTerrainSeen& value) co
     return false;
   const double perTerrainSeen = 1.0 / found[terrainSeenSlot];
   for (int band = 0; band < maxBands; ++band)
-  {
-    value.reflected[band] = found[band] * perTerrainSeen;
-    value.skyCorrection[band] = found[maxBands + band] * perTerrainSeen;
-  }
-  value.skyViewCorrection = found[2 * maxBands] * perTerrainSeen;
+    reflected[band] = found[band] * perTerrainSeen;
   return true;
 }
 } // namespace terralux

@@ -54,12 +54,10 @@ public:
   /// coarse corners there. Cells with a corner this process does not hold stay
   /// undecided (a read there throws).
   void refine(double allowedSpread, double allowedFloor = 0.0);
-  /// What a lattice post's gather found beyond the sky of its horizons.
+  /// What a lattice post's gather found: the light from surfaces below its horizons.
   struct Gathered
   {
     Spectrum reflected{};          ///< light from surfaces
-    Spectrum skyCorrection{};      ///< sky its rays found where the interpolated horizon was wrong
-    double skyViewCorrection = 0.0;
     double variance = 0.0;         ///< of one ray's estimate
     double terrainSeen = 0.0;      ///< 1 - its horizons' sky view factor
     double received = 0.0;         ///< from the sun and its horizons' sky (largest bands)
@@ -80,8 +78,8 @@ public:
   double varianceAround(int i, int j) const { return this->around(i, j).variance; }
   /// What the gathered corners of the lattice cell holding post (i, j) found: the
   /// largest variance (-1 where none was gathered), and the largest and least light
-  /// beyond their horizons' sky per terrain seen (largest band; see perTerrainSeenAt),
-  /// over the corners that see terrain (both 0 where none does).
+  /// from surfaces per terrain seen (largest band; see perTerrainSeenAt), over the
+  /// corners that see terrain (both 0 where none does).
   struct Around
   {
     double variance = -1.0;
@@ -92,18 +90,12 @@ public:
   /// Light from surfaces at grid parameters (u, v), bilinear between the lattice's
   /// posts; false where none around holds a value.
   bool reflectedAt(double u, double v, Spectrum& reflected) const;
-  /// What the lattice's posts found beyond their horizons' sky (light from surfaces,
-  /// the sky's corrections) over the part of their hemisphere that is terrain (1 - sky
-  /// view factor), both bilinear between them at grid parameters (u, v): a post there
-  /// that sees terrainSeen of terrain receives about terrainSeen times this. False where
-  /// none around holds a value or sees terrain.
-  struct PerTerrainSeen
-  {
-    Spectrum reflected{};
-    Spectrum skyCorrection{};
-    double skyViewCorrection = 0.0;
-  };
-  bool perTerrainSeenAt(double u, double v, PerTerrainSeen& value) const;
+  /// The light from surfaces the lattice's posts found over the part of their
+  /// hemisphere that is terrain (1 - sky view factor), both bilinear between them at
+  /// grid parameters (u, v): a post there that sees terrainSeen of terrain receives
+  /// about terrainSeen times this. False where none around holds a value or sees
+  /// terrain.
+  bool perTerrainSeenAt(double u, double v, Spectrum& reflected) const;
 
 private:
   /// Where lattice post (li, lj) is in the held values; throws unless held.
@@ -139,10 +131,10 @@ private:
   /// Whether lattice post k sees enough terrain to tell what terrain sends.
   bool seesTerrain(std::size_t k) const;
   double largestPerTerrainSeen(std::size_t k) const;
-  // Per lattice post: what it found beyond its horizons' sky, reflected and sky
-  // correction (maxBands each), sky view correction, then the terrain it sees.
-  using Beyond = std::array<double, 2 * maxBands + 2>;
-  static constexpr std::size_t terrainSeenSlot = 2 * maxBands + 1;
+  // Per lattice post: the light from surfaces it found (maxBands), then the terrain it
+  // sees.
+  using Beyond = std::array<double, maxBands + 1>;
+  static constexpr std::size_t terrainSeenSlot = maxBands;
   static constexpr double minimumTerrainSeen = 1e-6;
 
   int Step, Nx, Ny; // lattice posts each way

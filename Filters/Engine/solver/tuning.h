@@ -28,8 +28,8 @@ struct Tuning
   static constexpr int leafGatherPasses = 3;
   /// Leaves sampled to measure how far the hierarchy's light from surfaces is off.
   static constexpr std::size_t deficitProbeLeaves = 512;
-  /// The share of the sky a post's horizons hide that its error estimate takes where no
-  /// ray below them checked them.
+  /// The share of the sky a post's horizons hide that its error estimate takes: the
+  /// horizons are interpolated between the map's azimuths, and no ray corrects them.
   static constexpr double horizonSkyError = 0.1;
   /// The open sky's own relative error (OpenSky: patches split to level 5 where a
   /// plane's horizon crosses them), which every point's error estimate takes of its sky.

@@ -69,23 +69,21 @@ TerrainDirections::TerrainDirections(const HorizonSky& horizons, const HorizonMa
       const double sinMiddle = 0.5 * (sinLow + sinHigh), cosMiddle = std::sqrt(1.0 - sinMiddle * sinMiddle);
       const double cosine = std::max(0.02,
         normal.x * cosMiddle * piece.middle.cos + normal.y * cosMiddle * piece.middle.sin + normal.z * sinMiddle);
-      // Around the interpolated horizon, where its corrections lie, rays are drawn
-      // marginDensity times as densely: few there, each would carry a large weight.
-      const double sinSkyLow = std::max(0.0, sinPlaneMiddle);
+      // Around the interpolated horizon, where terrain it misses may rise, rays are
+      // drawn marginDensity times as densely: few there, each would carry a large weight.
       const double sinSplit = margin ? std::max(sinLow, sinOfElevation(horizon - horizonMargin)) : sinHigh;
-      this->addBox(piece.phi0, width, sinLow, sinSplit, cosine, sinHorizon, sinSkyLow);
-      this->addBox(piece.phi0, width, sinSplit, sinHigh, marginDensity * cosine, sinHorizon, sinSkyLow);
+      this->addBox(piece.phi0, width, sinLow, sinSplit, cosine);
+      this->addBox(piece.phi0, width, sinSplit, sinHigh, marginDensity * cosine);
     }
   }
 }
 
-void TerrainDirections::addBox(
-  double phi0, double width, double sinLow, double sinHigh, double cosine, double sinHorizon, double sinSkyLow)
+void TerrainDirections::addBox(double phi0, double width, double sinLow, double sinHigh, double cosine)
 {
   if (!(sinHigh > sinLow))
     return;
   this->Total += width * (sinHigh - sinLow) * cosine;
-  this->Boxes[this->Count++] = { phi0, width, sinLow, sinHigh - sinLow, cosine, this->Total, sinHorizon, sinSkyLow };
+  this->Boxes[this->Count++] = { phi0, width, sinLow, sinHigh - sinLow, cosine, this->Total };
 }
 
 TerrainDirections::Sample TerrainDirections::sample(double s, double t) const
@@ -106,7 +104,6 @@ TerrainDirections::Sample TerrainDirections::sample(double s, double t) const
   result.direction = Vec3(cosU * std::cos(azimuth), cosU * std::sin(azimuth), sinU);
   const double cosine = glm::dot(this->Normal, result.direction);
   result.weight = cosine > 0.0 ? cosine * this->Total / (pi * box->cosine) : 0.0;
-  result.skyTaken = sinU > box->sinHorizon ? -1 : (sinU >= box->sinSkyLow ? 1 : 0);
   return result;
 }
 } // namespace terralux

@@ -9,10 +9,10 @@
 // below the horizon, nearly every ray meets terrain and the noise left is the spread of
 // what the terrain sends. A flat, open post has no such directions and takes no ray.
 // Between the map's azimuths the true horizon can rise above the interpolated one (a
-// peak between two azimuths): the boxes reach a little above the higher of the two,
-// and the rays there and in the band HorizonSky hides correct what the interpolated
-// line got wrong, both ways (terrain above it, sky below it), so that the sky and the
-// terrain together stay unbiased against the true horizon.
+// peak between two azimuths): the boxes reach a little above the higher of the two, so
+// that the terrain there sends its light. The sky stays what HorizonSky takes: rays
+// that corrected it where the interpolated line was wrong (terrain above it, sky below
+// it) carried far more noise than the error they removed (docs/tuning.md).
 
 #include "horizons/horizon_map.h"
 #include "horizons/horizon_sky.h"
@@ -38,9 +38,6 @@ public:
     /// weight over the samples estimates the irradiance the terrain sends (0 behind
     /// the plane).
     double weight = 0.0;
-    /// Where HorizonSky took the sky as hidden (+1: below the interpolated horizon,
-    /// above the plane and the world's horizon) or as seen (-1: above that horizon).
-    int skyTaken = 0;
   };
   /// The sample at a point (s, t) of the unit square; stratified points give
   /// stratified directions.
@@ -55,10 +52,8 @@ private:
   struct Box
   {
     double phi0, width, sinLow, sinSpan, cosine, cumulative;
-    double sinHorizon, sinSkyLow; // the interpolated horizon, the lowest sky hidden
   };
-  void addBox(double phi0, double width, double sinLow, double sinHigh, double cosine, double sinHorizon,
-    double sinSkyLow);
+  void addBox(double phi0, double width, double sinLow, double sinHigh, double cosine);
   std::array<Box, 2 * HorizonMap::maximumAzimuths * HorizonSky::piecesPerSector> Boxes;
   int Count = 0;
   double Total = 0.0;

@@ -15,6 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+
 using namespace terralux;
 using namespace terralux_test;
 
@@ -325,4 +328,48 @@ TEST(PointValues, APostSeesTheThinBandOfALowRidgeAsItsOwnPlaneDoes)
   // The one offset every ray starts above its point (1e-5 of the scene's diagonal, 2.7
   // cm here) costs 1 %; the gather lifted two more and moved into its leaf, 4.4 %.
   EXPECT_NEAR(e.irradiance[ReflectedLight][0], exact, 0.02 * exact) << "view factor " << viewFactor;
+}
+
+TEST(PointValues, APostsSkyIsItsHorizonsWhateverItsRays)
+{
+  // A post's sky comes from its horizons alone, interpolated between the map's
+  // azimuths: rays below them gather light from surfaces only (sky they found or lost
+  // there added more noise than the interpolation's error; docs/tuning.md).
+  // At the floor of a V valley whose walls rise at beta, under a uniform sky of
+  // diffuse horizontal irradiance D, the horizon toward azimuth phi from the axis is
+  // atan(tan beta sin phi) at any distance, and the sky is D cos beta.
+  constexpr int posts = 65;
+  constexpr double spacing = 30.0, beta = 25.0 * degree, diffuse = 100.0;
+  const auto valley = makeGrid(posts, posts, spacing, [&](double x, double) {
+    return std::abs(x - 32 * spacing) * std::tan(beta);
+  });
+  // Black walls that glow a little, so that every post gathers.
+  valley->setUniformMaterial(uniformSpectrum(0.0), uniformSpectrum(10.0));
+  const SkyHierarchy sky(UniformSky(), diffuse, 6);
+  auto skyAt = [&](const TerrainGrid& grid, double targetError, int i, int j) {
+    RadiosityOptions options;
+    options.targetError = targetError;
+    HierarchicalRadiosity solver(sceneOf(grid), options);
+    solver.setSky(&sky);
+    EXPECT_TRUE(solver.solve());
+    const PointEvaluator points(solver, EvaluationPlan{});
+    return points.irradianceAt(*solver.terrainRoots()[0]->mostLitLeafAt(i, j), grid.post(i, j), grid.postNormal(i, j));
+  };
+  const PointIrradiance floor = skyAt(*valley, 0.008, 32, 32);
+  EXPECT_NEAR(floor.irradiance[SkyLight][0], diffuse * std::cos(beta), 0.005 * diffuse * std::cos(beta));
+  EXPECT_NEAR(floor.skyViewFactor, std::cos(beta), 0.005);
+  EXPECT_GT(floor.irradiance[ReflectedLight][0], 0.0);
+  // On rough terrain, where interpolated horizons miss peaks between azimuths, the sky
+  // is the same for a gather of a few rays and one of many.
+  const auto rough = makeGrid(posts, posts, spacing, [](double x, double y) {
+    return 40.0 * std::sin(x / 37.0) * std::cos(y / 29.0) + 15.0 * std::sin(x / 11.0 + y / 13.0);
+  });
+  rough->setUniformMaterial(uniformSpectrum(0.0), uniformSpectrum(10.0));
+  for (const auto [i, j] : { std::array<int, 2>{ 20, 31 }, { 33, 40 }, { 45, 17 } })
+  {
+    const PointIrradiance few = skyAt(*rough, 0.05, i, j), many = skyAt(*rough, 0.001, i, j);
+    EXPECT_GT(many.irradiance[ReflectedLight][0], 0.0);
+    EXPECT_EQ(few.irradiance[SkyLight][0], many.irradiance[SkyLight][0]) << i << ", " << j;
+    EXPECT_EQ(few.skyViewFactor, many.skyViewFactor) << i << ", " << j;
+  }
 }

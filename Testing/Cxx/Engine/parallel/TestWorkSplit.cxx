@@ -315,7 +315,6 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
     // Smooth in the west, rough in the east: some cells refine, some do not.
     const double light = 10.0 + (i > 60 ? 8.0 * std::sin(1.7 * i) * std::cos(0.9 * j) : 0.01 * i + 0.02 * j);
     g.reflected = { light, 0.5 * light, 0.25 * light };
-    g.skyCorrection = { 0.1 * std::sin(0.3 * j), 0.0, 0.0 };
     g.variance = 0.5 + 0.01 * i;
     g.terrainSeen = 0.3 + 0.002 * j;
     g.received = 100.0;
@@ -352,10 +351,9 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
         Spectrum r, s;
         const bool found = lattice.reflectedAt(i + 0.3, j + 0.6, r);
         differences += found != alone.reflectedAt(i + 0.3, j + 0.6, s) || (found && r != s);
-        PostLattice::PerTerrainSeen p, q;
+        Spectrum p, q;
         const bool foundPer = lattice.perTerrainSeenAt(i, j, p);
-        differences += foundPer != alone.perTerrainSeenAt(i, j, q) ||
-          (foundPer && (p.reflected != q.reflected || p.skyCorrection != q.skyCorrection));
+        differences += foundPer != alone.perTerrainSeenAt(i, j, q) || (foundPer && p != q);
         if (i % (2 * step) == 1 && j % (2 * step) == 1)
           (alone.gatheredInPass(i - 1 + step, j - 1, false) ? refined : coarse) += 1;
       }
