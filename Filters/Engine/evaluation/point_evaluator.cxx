@@ -335,17 +335,15 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // Read between them it errs by at most their spread, plus the bias of reading light
   // from surfaces between posts (Tuning::latticeReadBias); the post reads it where that
   // meets its target, else gathers. The error of what the lattice's posts read from the
-  // hierarchy is in both (a gather's hits read the lattice too), so it does not decide:
-  // nor does anything else a process computes for itself (a window's own hierarchy),
-  // and pieces read where one process does.
+  // hierarchy is in both (a gather's hits read the lattice too), so it does not decide;
+  // nor does the sky's (no ray corrects it), nor anything else a process computes for
+  // itself (a window's own hierarchy), and pieces read where one process does.
   const double terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
   const double received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
   const double spread = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen);
   const double largestReflected = terrainSeen * std::max(0.0, around.largestPerTerrainSeen);
-  const double skyError = this->skyError(normal, sky.irradiance, false);
   Spectrum perTerrainSeen;
-  if (spread + Tuning::latticeReadBias * largestReflected + skyError >
-      this->Options.errorTarget(received + largestReflected) ||
+  if (spread + Tuning::latticeReadBias * largestReflected > this->Options.errorTarget(received + largestReflected) ||
     !this->Lattice->perTerrainSeenAt(i, j, perTerrainSeen))
     return false;
   for (int band = 0; band < maxBands; ++band)
@@ -355,7 +353,8 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   result.gatherVariance = around.variance;
   // The lattice's posts cast no ray below their horizons where nothing sends light.
   const double readRelativeError = errorCoverage * this->ReadRelativeError + Tuning::latticeReadBias;
-  result.irradianceError = spread + readRelativeError * largestBand(result.irradiance[ReflectedLight]) + skyError;
+  result.irradianceError = spread + readRelativeError * largestBand(result.irradiance[ReflectedLight]) +
+    this->skyError(normal, sky.irradiance, false);
   return true;
 }
 
