@@ -222,10 +222,10 @@ TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
   // surfaces is a small, smooth share of what they receive. Read between the lattice's
   // gathered posts it agrees with each post's own gather within their error estimates,
   // for a fraction of the rays; a post reads only where its estimate meets its target,
-  // and where ripples (10 m high, 60-80 m long) make the lattice's posts disagree, posts
+  // and where ripples (20 m high, 60-80 m long) make the lattice's posts disagree, posts
   // still gather.
   const auto grid = makeGrid(97, 97, 30.0, [](double x, double y) {
-    return rollingHills(x, y) + 10.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
+    return rollingHills(x, y) + 20.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
   });
   grid->setUniformMaterial(uniformSpectrum(0.2), Spectrum{});
   const Direction sun = directionFromZenithAzimuth(55.0 * degree, 2.0);
