@@ -132,8 +132,8 @@ public:
   /// (SkyImportance), which also give the sky view factor. `surfacesSend` false skips
   /// what surfaces send (every radiosity 0): no cosine-weighted rays then. `post`: the
   /// terrain post the point stands for, whose horizons the horizons' map holds; there
-  /// the rays are drawn below its horizon instead (TerrainDirections), correct the
-  /// sky where the interpolated horizon was wrong, and a hit on the terrain sends the
+  /// the rays are drawn below its horizon instead (TerrainDirections) and gather light
+  /// from surfaces alone (the sky is its horizons'), and a hit on the terrain sends the
   /// sky of the posts around it (GatherInputs::postSkies) and the lattice's light from surfaces
   /// (GatherInputs::lattice) instead of its leaf's.
   GatheredLight irradianceAt(const Vec3& point, const Vec3& normal, const GatherBudget& budget, std::uint64_t seed,
