@@ -1,7 +1,8 @@
 #pragma once
 // What the horizon sweeps share (horizon_map.cxx, horizon_window.cxx,
 // horizon_handoff.cxx): where a line of
-// posts crosses its grid's cells, and a fast arctangent for the horizons they find.
+// posts crosses its grid's cells, and a fast arctangent for the horizons they find (and
+// for the planes' elevations HorizonSky compares them with).
 
 #include "base/angles.h"
 

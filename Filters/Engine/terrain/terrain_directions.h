@@ -51,9 +51,9 @@ public:
 private:
   struct Box
   {
-    double phi0, width, sinLow, sinSpan, cosine, cumulative;
+    double sinPhi0, cosPhi0, width, sinLow, sinSpan, cosine, cumulative;
   };
-  void addBox(double phi0, double width, double sinLow, double sinHigh, double cosine);
+  void addBox(const HorizonSky::MapPiece& piece, double sinLow, double sinHigh, double cosine);
   std::array<Box, 2 * HorizonMap::maximumAzimuths * HorizonSky::piecesPerSector> Boxes;
   int Count = 0;
   double Total = 0.0;
