@@ -33,7 +33,6 @@ PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* spli
   if (!own.empty())
     this->HeldCells = WorkSplit::Window{ own.i0 / 2, own.i1 / 2, own.j0 / 2, own.j1 / 2 }.clampedTo(CoarseX, CoarseY);
   const std::size_t posts = this->Held.count();
-  this->Reflected.resize(posts);
   this->Variance.assign(posts, -1.0);
   this->Found.resize(posts);
   this->Received.assign(posts, 0.0);
@@ -146,7 +145,6 @@ bool PostLattice::interpolate(double u, double v, const NodeValue& nodeValue, Va
 void PostLattice::set(int i, int j, const Gathered& gathered)
 {
   const std::size_t k = this->index(i / this->Step, j / this->Step);
-  this->Reflected[k] = gathered.reflected;
   this->Variance[k] = std::max(0.0, gathered.variance);
   Beyond& found = this->Found[k];
   for (int band = 0; band < maxBands; ++band)
@@ -158,10 +156,9 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
 void PostLattice::share()
 {
   constexpr int latticeTag = 903; // after the posts' skies' and suns' (post_sky.cxx, post_sunlight.cxx)
-  this->Held.share(this->Reflected, latticeTag);
-  this->Held.share(this->Variance, latticeTag + 1);
-  this->Held.share(this->Found, latticeTag + 2);
-  this->Held.share(this->Received, latticeTag + 3);
+  this->Held.share(this->Variance, latticeTag);
+  this->Held.share(this->Found, latticeTag + 1);
+  this->Held.share(this->Received, latticeTag + 2);
 }
 
 template <class Corner>
@@ -198,7 +195,14 @@ PostLattice::Around PostLattice::around(int i, int j) const
 
 bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
 {
-  return this->interpolate(u, v, [&](std::size_t k) { return this->Reflected[k]; }, reflected);
+  return this->interpolate(
+    u, v,
+    [&](std::size_t k) {
+      Spectrum found;
+      std::copy_n(this->Found[k].begin(), maxBands, found.begin());
+      return found;
+    },
+    reflected);
 }
 
 bool PostLattice::perTerrainSeenAt(double u, double v, Spectrum& reflected) const

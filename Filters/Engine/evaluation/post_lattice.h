@@ -141,8 +141,8 @@ private:
   int CoarseX, CoarseY; // coarse cells each way
   HeldPosts Held; // the lattice posts this process holds
   WorkSplit::Window HeldCells; // the coarse cells over them
-  std::vector<Spectrum> Reflected; // per held lattice post, as the vectors below
-  std::vector<double> Variance; // -1: not gathered (no data there, or not asked for)
+  // Per held lattice post. Variance -1: not gathered (no data there, or not asked for).
+  std::vector<double> Variance;
   std::vector<Beyond> Found;
   std::vector<double> Received;
   std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells

@@ -339,7 +339,7 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
     PostLattice lattice(nx, ny, step, &split, halo);
     gatherLattice(lattice, &split);
     // Each share sends to (or broadcasts from) each other process, per vector.
-    EXPECT_EQ(split.Shares + split.Sends, 2 * 4 * static_cast<int>(pointToPoint ? parts - 1 : parts));
+    EXPECT_EQ(split.Shares + split.Sends, 2 * 3 * static_cast<int>(pointToPoint ? parts - 1 : parts));
     const HeldPosts read(nx, ny, &split, halo); // where gather rays read
     int differences = 0, coarse = 0, refined = 0;
     for (int j = read.own().j0; j <= read.own().j1; ++j)
