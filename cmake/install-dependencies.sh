@@ -4,7 +4,9 @@
 #
 # Usage: cmake/install-dependencies.sh [DATA_DIR]
 #   DATA_DIR (default: <repo>/Testing/Data/External) receives olinda_dem_utm25s.tif
-#   (r-cran-stars) and elev.tif (r-cran-terra), extracted with dpkg -x, R is not installed.
+#   (r-cran-stars) and elev.tif (r-cran-terra), extracted with dpkg -x, R is not installed;
+#   and jacksboro_fault_dem.tif, a rough real DEM (3 arc-seconds, ridge and valley in
+#   Tennessee) that matplotlib ships as a NumPy archive, written as a GeoTIFF.
 set -euo pipefail
 
 repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -70,3 +72,33 @@ extract_from_deb() { # package, path inside the package (below site-library), ta
 
 extract_from_deb r-cran-stars stars/tif/olinda_dem_utm25s.tif "${data_dir}/olinda_dem_utm25s.tif"
 extract_from_deb r-cran-terra terra/ex/elev.tif "${data_dir}/elev.tif"
+
+# Matplotlib's sample of the Jacksboro fault (344 x 403 posts, 3 arc-seconds, WGS84,
+# north row first): numpy writes it as an Esri ASCII grid, gdal_translate as a GeoTIFF.
+matplotlib_dem_to_geotiff() { # .npz archive, target file
+  local npz="$1" target="$2"
+  [ -s "$target" ] && return 0
+  local tmp
+  tmp="$(mktemp -d)"
+  /usr/bin/python3 - "$npz" "$tmp/dem.asc" <<'PY'
+import sys
+import numpy as np
+d = np.load(sys.argv[1])
+z = d["elevation"]
+# The archive names its north edge ymin (36.73) and its south edge ymax (36.45).
+south, north = sorted((float(d["ymin"]), float(d["ymax"])))
+assert abs((north - south) - z.shape[0] * float(d["dy"])) < 1e-9
+with open(sys.argv[2], "w") as f:
+    f.write(f"ncols {z.shape[1]}\nnrows {z.shape[0]}\n")
+    f.write(f"xllcorner {float(d['xmin']):.12f}\nyllcorner {south:.12f}\n")
+    f.write(f"cellsize {float(d['dx']):.15f}\n")
+    np.savetxt(f, z, fmt="%d")
+PY
+  mkdir -p "$(dirname "$target")"
+  gdal_translate -q -a_srs EPSG:4326 -ot Int16 -of GTiff "$tmp/dem.asc" "$target"
+  rm -rf "$tmp"
+  echo "install-dependencies: wrote ${target}"
+}
+
+matplotlib_dem_to_geotiff /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz \
+  "${data_dir}/jacksboro_fault_dem.tif"

@@ -115,7 +115,7 @@ vtkSmartPointer<vtkPolyData> box(double x0, double x1, double y0, double y1, dou
 std::vector<std::string> accuracySceneNames()
 {
   return { "olinda", "fractal", "hills", "crater", "canyon", "box", "house-sky", "house-sun", "olinda-sky", "olinda-black",
-    "steep-morning", "steep-noon", "snowbowl" };
+    "steep-morning", "steep-noon", "snowbowl", "ridges" };
 }
 
 namespace
@@ -145,6 +145,37 @@ void steepCrop(AccuracyScene& scene, double altitude, double azimuth, double ref
     n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(first + j) * full + first + i]; });
   sunAndClearSky(scene, altitude, azimuth);
   scene.reflectance = reflectance;
+  scene.terrain = true;
+}
+
+// A real DEM (a pixel window of it, or all of it when `window` is null) under the sun
+// and CIE clear sky (type 12) of `dateTime` at its centre, reflectance 0.2.
+void realTerrain(AccuracyScene& scene, const std::string& file, const int* window, const char* dateTime)
+{
+  vtkNew<vtkTerrainSource> terrain;
+  terrain->SetFileName(file.c_str());
+  if (window)
+    terrain->SetPixelWindow(window[0], window[1], window[2], window[3]);
+  vtkNew<vtkSunSource> sun;
+  sun->SetInputConnection(terrain->GetOutputPort());
+  sun->SetDateTime(dateTime);
+  vtkNew<vtkSkySource> sky;
+  sky->SetSunConnection(sun->GetOutputPort());
+  sky->SetSkyType(12);
+  terrain->Update();
+  if (terrain->GetOutput()->GetNumberOfPoints() == 0)
+    throw std::runtime_error(file + " is missing: run cmake/install-dependencies.sh");
+  sun->Update();
+  sky->Update();
+  auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+  grid->DeepCopy(terrain->GetOutput());
+  scene.geometry = grid;
+  auto sunData = vtkSmartPointer<vtkPolyData>::New();
+  sunData->DeepCopy(sun->GetOutput());
+  auto map = vtkSmartPointer<vtkImageData>::New();
+  map->DeepCopy(sky->GetRadianceOutput());
+  scene.lights = { sunData, map };
+  scene.reflectance = 0.2;
   scene.terrain = true;
 }
 
@@ -193,30 +224,18 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
   if (name == "olinda")
   {
     // (a) The paper's Fig. 4: Olinda on an August morning, sun and CIE clear sky.
-    vtkNew<vtkTerrainSource> terrain;
-    terrain->SetFileName((dataDir + "/olinda_dem_utm25s.tif").c_str());
-    vtkNew<vtkSunSource> sun;
-    sun->SetInputConnection(terrain->GetOutputPort());
-    sun->SetDateTime("2024-08-15T08:30:00-03:00");
-    vtkNew<vtkSkySource> sky;
-    sky->SetSunConnection(sun->GetOutputPort());
-    sky->SetSkyType(12);
-    terrain->Update();
-    if (terrain->GetOutput()->GetNumberOfPoints() == 0)
-      throw std::runtime_error("Olinda's DEM is missing: run cmake/install-dependencies.sh");
-    sun->Update();
-    sky->Update();
-    auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
-    grid->DeepCopy(terrain->GetOutput());
-    scene.geometry = grid;
-    auto sunData = vtkSmartPointer<vtkPolyData>::New();
-    sunData->DeepCopy(sun->GetOutput());
-    auto map = vtkSmartPointer<vtkImageData>::New();
-    map->DeepCopy(sky->GetRadianceOutput());
-    scene.lights = { sunData, map };
-    scene.reflectance = 0.2;
-    scene.terrain = true;
+    realTerrain(scene, dataDir + "/olinda_dem_utm25s.tif", nullptr, "2024-08-15T08:30:00-03:00");
     scene.description = "Olinda SRTM DEM 111 x 111, 2024-08-15 08:30 -03:00, ESRA sun + CIE 12 sky, reflectance 0.2";
+  }
+  else if (name == "ridges")
+  {
+    // (a') A rough real DEM: the centre 129 x 129 posts of the Jacksboro fault's ridges
+    // and valleys (3 arc-seconds, 74 x 93 m; mean slope 16 deg, p95 26 deg) on a
+    // December morning, the sun 16 deg up in the south-east (09:00 local solar time).
+    const int window[4] = { 137, 107, 129, 129 };
+    realTerrain(scene, dataDir + "/jacksboro_fault_dem.tif", window, "2024-12-21T09:35:00-05:00");
+    scene.description =
+      "Jacksboro fault ridges 129 x 129 (3 arc-seconds), 2024-12-21 09:35 -05:00, ESRA sun + CIE 12 sky, reflectance 0.2";
   }
   else if (name == "house-sky" || name == "house-sun")
   {

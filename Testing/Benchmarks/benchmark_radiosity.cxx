@@ -1,5 +1,6 @@
-// Radiosity benchmark: the Olinda DEM under the sun and a CIE clear sky, reflectance
-// 0.2, at one tolerance. Prints wall time, peak memory, elements, links, rays; with a
+// Radiosity benchmark: a DEM under the sun and a CIE clear sky of 09:00 local solar time
+// on 21 December at its centre (r.sun's time=9.0 of day 356), reflectance 0.2, at one
+// tolerance. Prints wall time, peak memory, elements, links, rays; with a
 // reference file (per-vertex global irradiance of a converged run) also the relative
 // RMS error and the 95th percentile of the absolute relative error.
 //   benchmark_radiosity DEM TOLERANCE SAMPLES [--write REF | --compare REF]
@@ -20,6 +21,9 @@
 #include "vtkSunSource.h"
 #include "vtkTerrainSource.h"
 
+#include "sun/date_time.h"
+#include "sun/solar_position.h"
+
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -29,7 +33,25 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <string>
 #include <vector>
+
+namespace
+{
+// The UTC instant of 09:00 local apparent solar time on 2024-12-21 at a longitude: mean
+// solar time runs lon / 15 h ahead of UTC, apparent time the equation of time further.
+std::string nineLocalSolarTime(double latitude, double longitude)
+{
+  terralux::DateTime nine = terralux::DateTime::parse("2024-12-21T09:00:00Z");
+  double julianDay = nine.julianDay() - longitude / 15.0 / 24.0;
+  terralux::SolarPositionInput input;
+  input.latitudeDeg = latitude;
+  input.longitudeDeg = longitude;
+  input.julianDayUT = julianDay;
+  julianDay -= terralux::computeSolarPosition(input).equationOfTimeMinutes / (24.0 * 60.0);
+  return terralux::DateTime::fromJulianDay(julianDay).toUtcString();
+}
+} // namespace
 
 int main(int argc, char* argv[])
 {
@@ -42,7 +64,6 @@ int main(int argc, char* argv[])
   terrain->SetFileName(argv[1]);
   vtkNew<vtkSunSource> sun;
   sun->SetInputConnection(terrain->GetOutputPort());
-  sun->SetDateTime("2024-12-21T09:00:00-03:00");
   vtkNew<vtkSkySource> sky;
   sky->SetSunConnection(sun->GetOutputPort());
   sky->SetSkyType(12);
@@ -61,6 +82,13 @@ int main(int argc, char* argv[])
   if (const char* value = std::getenv("TERRALUX_BENCH_TARGET_FLOOR"))
     radiosity->SetTargetErrorFloor(std::atof(value));
   terrain->Update();
+  vtkDataArray* origin = terrain->GetOutput()->GetFieldData()->GetArray("GeoOrigin");
+  if (!origin)
+  {
+    std::cerr << "benchmark_radiosity: " << argv[1] << " gave no terrain\n";
+    return 1;
+  }
+  sun->SetDateTime(nineLocalSolarTime(origin->GetComponent(0, 0), origin->GetComponent(0, 1)).c_str());
   sky->Update();
 
   const auto start = std::chrono::steady_clock::now();
@@ -80,7 +108,8 @@ int main(int argc, char* argv[])
             << " MiB  elements " << stat("Elements") << "  links " << stat("Links") << "  rays " << stat("Rays")
             << "  iterations " << stat("Iterations") << "  horizons " << stat("SecondsHorizons") << " s  points "
             << stat("SecondsPoints") << " s, "
-            << stat("RaysPoints") << " rays";
+            << stat("RaysPoints") << " rays  sun " << 90.0 - sun->GetOutput()->GetFieldData()->GetArray("SunZenith")->GetComponent(0, 0)
+            << " deg up";
   if (argc == 6 && std::strcmp(argv[4], "--write") == 0)
   {
     std::ofstream(argv[5], std::ios::binary)

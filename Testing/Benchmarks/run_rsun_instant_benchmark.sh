@@ -23,7 +23,8 @@ cmake --build "${build_dir}" --target make_fractal_dem benchmark_radiosity >/dev
 fractal="$(default_fractal "${build_dir}")"
 dems=("$@")
 [ "${#dems[@]}" -gt 0 ] ||
-  dems=("${fractal}" "$(steep_fractal "${build_dir}")" "${repo_dir}/Testing/Data/External/olinda_dem_utm25s.tif")
+  dems=("${fractal}" "$(steep_fractal "${build_dir}")" "${repo_dir}/Testing/Data/External/jacksboro_fault_dem.tif"
+    "${repo_dir}/Testing/Data/External/olinda_dem_utm25s.tif")
 for dem in "${dems[@]}"; do
   name="$(basename "${dem}" .tif)"
   echo "== ${name}"
