@@ -81,7 +81,9 @@ int main(int argc, char* argv[])
     radiosity->SetTargetError(std::atof(value));
   if (const char* value = std::getenv("TERRALUX_BENCH_TARGET_FLOOR"))
     radiosity->SetTargetErrorFloor(std::atof(value));
+  const auto processStart = std::chrono::steady_clock::now();
   terrain->Update();
+  const double terrainSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - processStart).count();
   vtkDataArray* origin = terrain->GetOutput()->GetFieldData()->GetArray("GeoOrigin");
   if (!origin)
   {
@@ -90,6 +92,8 @@ int main(int argc, char* argv[])
   }
   sun->SetDateTime(nineLocalSolarTime(origin->GetComponent(0, 0), origin->GetComponent(0, 1)).c_str());
   sky->Update();
+  std::cerr << "terrain " << terrainSeconds << " s, sun and sky "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - processStart).count() - terrainSeconds << " s\n";
 
   const auto start = std::chrono::steady_clock::now();
   radiosity->Update();

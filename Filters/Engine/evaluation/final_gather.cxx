@@ -265,7 +265,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // point needs; the estimate then comes from that many fresh stratified rays. Rays that
   // decided when to stop would be biased: they stop early where they happened to miss
   // a bright hit.
-  double sum = 0.0, sumOfSquares = 0.0, interreflected = 0.0;
+  double sum = 0.0, sumOfSquares = 0.0, interreflected = 0.0, reflectanceSeen = 0.0;
   int backRays = 0;
   const CosineFrame frame(normal);
   auto cast = [&](int count, SampleGenerator& random)
@@ -273,7 +273,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     // The sun each hit takes (when there are many), by a golden-ratio sequence: evenly
     // spread over the suns for any count, and unrelated to the rays' strata.
     const double sunStart = this->SunCumulative.empty() ? 0.0 : random.uniform();
-    sum = sumOfSquares = interreflected = 0.0;
+    sum = sumOfSquares = interreflected = reflectanceSeen = 0.0;
     backRays = 0;
     surfaces = Spectrum{};
     // One ray's estimate of what surfaces send (largest band).
@@ -302,6 +302,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       for (int band = 0; band < maxBands; ++band)
         surfaces[band] += weight * b[band];
       interreflected += weight * bounced;
+      reflectanceSeen += weight * largestBand(leaf->reflectance());
       return weight * largestBand(b);
     };
     for (int k = 0; k < count; ++k)
@@ -337,6 +338,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     result.variance = std::max(0.0, sumOfSquares * perRay - sum * perRay * sum * perRay);
   result.standardError = std::sqrt(result.variance * perRay + skyVariance);
   result.interreflected = interreflected * perRay;
+  result.reflectanceSeen = reflectanceSeen * perRay;
   return result;
 }
 } // namespace terralux

@@ -42,6 +42,10 @@ struct GatheredLight
   /// Of `surfaces`, the part the hits' reflectances made of the light from surfaces they
   /// read (largest band): what a bounce beyond those reads would change.
   double interreflected = 0.0;
+  /// The mean over the rays of the reflectance (largest band) of the surface each met,
+  /// 0 where it met none or a surface's back: the share of a change in the light from
+  /// surfaces that one bounce brings back to the point.
+  double reflectanceSeen = 0.0;
   int backRays = 0; ///< of those rays, the ones that met the back of a surface
 };
 

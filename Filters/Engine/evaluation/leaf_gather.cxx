@@ -44,7 +44,7 @@ LeafGather::LeafGather(std::vector<PolygonElement*> leaves, const Visibility& ra
 }
 
 std::vector<LeafLight::Sample> LeafGather::at(
-  std::size_t k, const FinalGather& gather, std::uint64_t pass, double* interreflected) const
+  std::size_t k, const FinalGather& gather, std::uint64_t pass, Bounce* bounce) const
 {
   // A few rays from each point, no pilot: a point's rays meet many leaves, whose noise
   // averages out.
@@ -54,7 +54,7 @@ std::vector<LeafLight::Sample> LeafGather::at(
   const PolygonElement& leaf = *this->Leaves[k];
   SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
   std::vector<LeafLight::Sample> seen;
-  double bounced = 0.0;
+  Bounce sum;
   int buried = 0;
   auto gatherAt = [&](int p, int n) {
     const SurfaceSample at = leaf.sample(p, n, random);
@@ -64,7 +64,11 @@ std::vector<LeafLight::Sample> LeafGather::at(
     if (4 * received.backRays > received.count)
       ++buried;
     else
-      seen.push_back({ at.position, received.sky, received.surfaces }), bounced += received.interreflected;
+    {
+      seen.push_back({ at.position, received.sky, received.surfaces });
+      sum.interreflected += received.interreflected;
+      sum.reflectanceSeen += received.reflectanceSeen;
+    }
   };
   for (int p = 0; p < points; ++p)
     gatherAt(p, points);
@@ -73,32 +77,32 @@ std::vector<LeafLight::Sample> LeafGather::at(
   if (buried > 0)
   {
     seen.clear();
-    bounced = 0.0;
+    sum = Bounce{};
     for (int p = 0; p < morePoints; ++p)
       gatherAt(p, morePoints);
   }
-  if (interreflected)
-    *interreflected = seen.empty() ? 0.0 : bounced / static_cast<double>(seen.size());
+  if (bounce && !seen.empty())
+    *bounce = { sum.interreflected / static_cast<double>(seen.size()), sum.reflectanceSeen / static_cast<double>(seen.size()) };
   return seen;
 }
 
 double HierarchyDeficit::after(int bounces) const
 {
-  return this->relative * std::pow(this->bounceFactor, bounces);
+  return bounces == 0 ? this->relative : this->ofGathered * std::pow(this->bounceFactor, bounces);
 }
 
 HierarchyDeficit HierarchyDeficit::measure(const LeafGather& leaves, const FinalGather& gather, std::size_t sampled)
 {
   const std::size_t count = leaves.leaves().size(), stride = std::max<std::size_t>(1, count / std::max<std::size_t>(1, sampled));
   const std::size_t taken = (count + stride - 1) / stride;
-  // Per sampled leaf, by its area: R0, R1 and M1 (largest bands).
-  std::vector<double> held(taken), gathered(taken), bounced(taken);
+  // Per sampled leaf, by its area: R0, R1 and what its hits bring back of a change.
+  std::vector<double> held(taken), gathered(taken), seenReflectance(taken), seenArea(taken);
   constexpr std::uint64_t probe = 0x5EED; // points and rays of their own
   tbb::parallel_for(std::size_t(0), taken, [&](std::size_t s) {
     const std::size_t k = s * stride;
     const PolygonElement& leaf = *leaves.leaves()[k];
-    double interreflected = 0.0;
-    const std::vector<LeafLight::Sample> seen = leaves.at(k, gather, probe, &interreflected);
+    LeafGather::Bounce bounce;
+    const std::vector<LeafLight::Sample> seen = leaves.at(k, gather, probe, &bounce);
     if (seen.empty())
       return;
     double reflected = 0.0;
@@ -106,20 +110,21 @@ HierarchyDeficit HierarchyDeficit::measure(const LeafGather& leaves, const Final
       reflected += largestBand(sample.reflected) / static_cast<double>(seen.size());
     held[s] = leaf.area() * largestBand(leaf.Irradiance[ReflectedLight]);
     gathered[s] = leaf.area() * reflected;
-    bounced[s] = leaf.area() * interreflected;
+    seenReflectance[s] = leaf.area() * bounce.reflectanceSeen;
+    seenArea[s] = leaf.area();
   });
-  double r0 = 0.0, r1 = 0.0, m1 = 0.0;
+  double r0 = 0.0, r1 = 0.0, reflectance = 0.0, area = 0.0;
   for (std::size_t s = 0; s < taken; ++s)
-    r0 += held[s], r1 += gathered[s], m1 += bounced[s];
+    r0 += held[s], r1 += gathered[s], reflectance += seenReflectance[s], area += seenArea[s];
   HierarchyDeficit deficit;
-  if (!(r1 > 0.0))
+  if (!(r1 > 0.0) || !(area > 0.0))
     return deficit;
-  deficit.bounceFactor = r0 > 0.0 ? std::clamp(m1 / r0, 0.0, 1.0) : 1.0;
-  // Where R0 - M1 is near 0 (the leaves hold next to nothing, or noise) the quotient
-  // means nothing: the leaves are then taken as wrong by their whole value or more.
-  const double kept = r0 - m1;
-  deficit.relative = kept > 0.05 * std::max(r0, r1) ? std::min(HierarchyDeficit::maximumRelative, std::abs(r1 - r0) / kept)
-                                                    : HierarchyDeficit::maximumRelative;
+  deficit.bounceFactor = std::clamp(reflectance / area, 0.0, largestBounceFactor);
+  const double e0 = std::abs(r1 - r0) / (1.0 - deficit.bounceFactor);
+  // Where the leaves hold next to nothing (or noise) the quotient over R0 means
+  // nothing: they are then taken as wrong by their whole value or more.
+  deficit.relative = r0 > 0.05 * r1 ? std::min(maximumRelative, e0 / r0) : maximumRelative;
+  deficit.ofGathered = std::min(1.0 / (1.0 - largestBounceFactor), e0 / r1);
   return deficit;
 }
 } // namespace terralux

@@ -24,10 +24,15 @@ public:
   /// What the points of leaf k receive through `gather`, from points lifted clear of the
   /// leaf's surface; `pass` varies the points and rays. A point whose rays meet the backs
   /// of surfaces lies inside something (the part of a house's wall below the ground): it
-  /// is left out, and a partly buried leaf is sought with more points. With
-  /// `interreflected`, the mean over the points kept of GatheredLight::interreflected.
+  /// is left out, and a partly buried leaf is sought with more points. With `bounce`,
+  /// the means over the points kept of GatheredLight::interreflected and
+  /// GatheredLight::reflectanceSeen.
+  struct Bounce
+  {
+    double interreflected = 0.0, reflectanceSeen = 0.0;
+  };
   std::vector<LeafLight::Sample> at(
-    std::size_t k, const FinalGather& gather, std::uint64_t pass, double* interreflected = nullptr) const;
+    std::size_t k, const FinalGather& gather, std::uint64_t pass, Bounce* bounce = nullptr) const;
 
 private:
   std::vector<PolygonElement*> Leaves;
@@ -38,25 +43,27 @@ private:
 };
 
 /// How far the light from surfaces the hierarchy holds at its leaves is off, measured on
-/// a sample of its leaves by gathers that read it: they find R1 where the leaves hold R0,
-/// while R1 itself reads R0 through its hits' reflectances (its interreflected part M1).
-/// If the leaves err by a fraction d, R1 errs by d M1, so d (R0 - M1) = R1 - R0 over the
-/// sample. Each gathered bounce carries the error on scaled by s = M1 / R0 (the
-/// reflectance times the share of the view that is lit surfaces; in a closed uniform
-/// room, the reflectance).
+/// a sample of its leaves by gathers that read it: they find R1 where the leaves hold R0.
+/// If the leaves are off by E0 (R = R0 + E0), a gathered bounce is off by s E0, s the
+/// share of a change that a bounce brings back (the hits' reflectance times the share of
+/// the view that is surfaces, GatheredLight::reflectanceSeen): R1 - R0 = (1 - s) E0.
+/// Light read through b >= 1 gathered bounces is off by s^b E0, about R1 in size.
 struct HierarchyDeficit
 {
-  double relative = 0.0; ///< d, the leaves' relative error (its size)
+  double relative = 0.0;     ///< E0 / R0: the leaves' error over what they hold (d)
+  double ofGathered = 0.0;   ///< E0 / R1: the same over what a gathered bounce finds (at most 1 / (1 - s))
   double bounceFactor = 0.0; ///< s
-  /// The relative error, against what the hierarchy holds, of light from surfaces read
-  /// through `bounces` gathered bounces above it: d s^bounces.
+  /// The relative error of light from surfaces read through `bounces` gathered bounces
+  /// above the hierarchy, over what is read: E0 / R0 for none, s^b E0 / R1 after b.
   double after(int bounces) const;
   /// Measured by gathering (through `gather`, which must read the hierarchy's values) at
   /// up to `sampled` leaves spread evenly over `leaves`.
   static HierarchyDeficit measure(const LeafGather& leaves, const FinalGather& gather, std::size_t sampled);
   /// The bound taken where it is not measured: the leaves wrong by their whole value or
   /// more, every bounce carrying it on.
-  static HierarchyDeficit unknown() { return { maximumRelative, 1.0 }; }
-  static constexpr double maximumRelative = 4.0; ///< of d: the leaves hold a fifth or more
+  static HierarchyDeficit unknown() { return { maximumRelative, maximumRelative, 1.0 }; }
+  static constexpr double maximumRelative = 4.0; ///< of `relative`: the leaves hold a fifth or more
+  /// s at most: a bounce that brought back nearly all of a change would make E0 unbounded.
+  static constexpr double largestBounceFactor = 0.95;
 };
 } // namespace terralux

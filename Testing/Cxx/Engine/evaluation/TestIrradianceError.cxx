@@ -23,10 +23,10 @@ namespace
 // B = 20 / (1 - 0.8) = 100 W/m^2 from surfaces, whatever its place.
 constexpr double exactIrradiance = 100.0;
 
-RadiosityScene closedSphere()
+RadiosityScene closedSphere(double reflectance = 0.8)
 {
   RadiosityScene scene;
-  addInwardSphere(scene, 1.0, 12, 24, 0.8, 20.0);
+  addInwardSphere(scene, 1.0, 12, 24, reflectance, 20.0);
   return scene;
 }
 } // namespace
@@ -93,4 +93,26 @@ TEST(IrradianceError, TheHierarchysDeficitIsMeasuredByGatheringOverIt)
   EXPECT_NEAR(deficit.relative, trueDeficit, 0.3 * trueDeficit);
   EXPECT_NEAR(deficit.bounceFactor, 0.8, 0.02);
   EXPECT_LT(deficit.after(3), deficit.after(1));
+}
+
+TEST(IrradianceError, AGatheredBounceOverALightlessHierarchyErrsByWhatItBringsBack)
+{
+  // Leaves that hold no light from surfaces at all (R0 = 0) in a sphere of reflectance
+  // 0.2: a bounce gathered over them finds the emission, R1 = 20, where 25 arrives, so
+  // what it reads is 0.25 of itself off: the bounce factor's share, s / (1 - s), not the
+  // bound for leaves that hold nothing (4, which made the estimates 16 times too wide).
+  const RadiosityScene scene = closedSphere(0.2);
+  HierarchicalRadiosity solver(scene, RadiosityOptions{});
+  ASSERT_TRUE(solver.solve());
+  for (PolygonElement* leaf : solver.surfaceLeaves())
+    leaf->Irradiance[ReflectedLight] = Spectrum{};
+  GatherInputs inputs{ solver.geometry()->pointRays(), solver.polygonRoots(), solver.terrainRoots(),
+    solver.hierarchySuns() };
+  const FinalGather gather(inputs);
+  const LeafGather leaves(solver.surfaceLeaves(), solver.geometry()->hierarchyRays(), 256, true);
+  const HierarchyDeficit deficit = HierarchyDeficit::measure(leaves, gather, 512);
+  std::printf("after one bounce %.3f, bounce factor %.3f\n", deficit.after(1), deficit.bounceFactor);
+  EXPECT_EQ(deficit.after(0), HierarchyDeficit::maximumRelative);
+  EXPECT_NEAR(deficit.bounceFactor, 0.2, 0.01);
+  EXPECT_NEAR(deficit.after(1), 0.25, 0.03);
 }
