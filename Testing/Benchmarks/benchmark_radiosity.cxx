@@ -1,6 +1,6 @@
 // Radiosity benchmark: a DEM under the sun and a CIE clear sky of 09:00 local solar time
-// on 21 December at its centre (r.sun's time=9.0 of day 356), reflectance 0.2, at one
-// tolerance. Prints wall time, peak memory, elements, links, rays; with a
+// on 21 December at its centre (r.sun's time=9.0 of day 356; TERRALUX_BENCH_SOLAR_TIME
+// sets another hour), reflectance 0.2, at one tolerance. Prints wall time, peak memory, elements, links, rays; with a
 // reference file (per-vertex global irradiance of a converged run) also the relative
 // RMS error and the 95th percentile of the absolute relative error.
 //   benchmark_radiosity DEM TOLERANCE SAMPLES [--write REF | --compare REF]
@@ -38,12 +38,12 @@
 
 namespace
 {
-// The UTC instant of 09:00 local apparent solar time on 2024-12-21 at a longitude: mean
+// The UTC instant of `hour` local apparent solar time on 2024-12-21 at a longitude: mean
 // solar time runs lon / 15 h ahead of UTC, apparent time the equation of time further.
-std::string nineLocalSolarTime(double latitude, double longitude)
+std::string localSolarTime(double hour, double latitude, double longitude)
 {
-  terralux::DateTime nine = terralux::DateTime::parse("2024-12-21T09:00:00Z");
-  double julianDay = nine.julianDay() - longitude / 15.0 / 24.0;
+  const terralux::DateTime midnight = terralux::DateTime::parse("2024-12-21T00:00:00Z");
+  double julianDay = midnight.julianDay() + (hour - longitude / 15.0) / 24.0;
   terralux::SolarPositionInput input;
   input.latitudeDeg = latitude;
   input.longitudeDeg = longitude;
@@ -90,7 +90,9 @@ int main(int argc, char* argv[])
     std::cerr << "benchmark_radiosity: " << argv[1] << " gave no terrain\n";
     return 1;
   }
-  sun->SetDateTime(nineLocalSolarTime(origin->GetComponent(0, 0), origin->GetComponent(0, 1)).c_str());
+  const char* hour = std::getenv("TERRALUX_BENCH_SOLAR_TIME");
+  sun->SetDateTime(
+    localSolarTime(hour ? std::atof(hour) : 9.0, origin->GetComponent(0, 0), origin->GetComponent(0, 1)).c_str());
   sky->Update();
   std::cerr << "terrain " << terrainSeconds << " s, sun and sky "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - processStart).count() - terrainSeconds << " s\n";

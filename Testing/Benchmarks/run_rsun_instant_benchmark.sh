@@ -3,21 +3,23 @@
 # benchmark of the fast-per-post issue; needs grass-core, not run by ctest). Whole
 # processes: r.sun with its DEM ingest (r.in.gdal) and slopes (r.slope.aspect), sun and
 # diffuse at 09:00 local solar time of 21 December, Linke 3.0, albedo 0.2, shadows, 2
-# threads; TerraLux's benchmark_radiosity (sun and CIE clear sky at 09:00 of the same
-# day, reflectance 0.2, interreflection) at every post at the defaults (ErrorTolerance
-# 1e-2, TargetError 0.008) and at the knob's coarse end (TargetError 0.04, the command's
-# --fast). Prints the times, peak memory, rays per post and ratios.
+# threads; TerraLux's benchmark_radiosity (sun and CIE clear sky at the same instant at
+# the DEM's centre, reflectance 0.2, interreflection) at every post at the defaults
+# (ErrorTolerance 1e-2, TargetError 0.008) and at the knob's coarse end (TargetError
+# 0.04, the command's --fast). Prints the times, peak memory, rays per post and ratios.
 # Then the same physics in GRASS: r.sun takes no terrain off the diffuse sky unless
 # given horizons, so r.horizon finds them first at TerraLux's 32 azimuths (every 11.25
 # deg; one thread, it has no nprocs) and r.sun reads them (horizon_basename); skipped
 # with RSUN_HORIZONS=0 (r.horizon takes about 80 s at 1025^2).
+# RSUN_SOLAR_TIME: another local solar time (hours) for both, 9.0 unless set.
 # Usage: Testing/Benchmarks/run_rsun_instant_benchmark.sh [BUILD_DIR] [DEM ...]
-#   default DEMs: the gentle and the steep 1025^2 fractals (made by make_fractal_dem) and
-#   Olinda.
+#   default DEMs: the gentle and the steep 1025^2 fractals (made by make_fractal_dem), the
+#   Jacksboro fault's ridges (a rough real DEM) and Olinda.
 set -euo pipefail
 repo_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build_dir="$(cd "${1:-${repo_dir}/build}" && pwd)"
 shift || true
+export TERRALUX_BENCH_SOLAR_TIME="${RSUN_SOLAR_TIME:-9.0}"
 source "${repo_dir}/Testing/Benchmarks/rsun_common.sh"
 cmake --build "${build_dir}" --target make_fractal_dem benchmark_radiosity >/dev/null
 fractal="$(default_fractal "${build_dir}")"
@@ -29,7 +31,7 @@ for dem in "${dems[@]}"; do
   name="$(basename "${dem}" .tif)"
   echo "== ${name}"
   # The instant both GRASS sessions compute, with and without horizons.
-  rsun_call="r.sun elevation=dem slope=slope aspect=aspect day=356 time=9.0 linke_value=3.0 albedo_value=0.2
+  rsun_call="r.sun elevation=dem slope=slope aspect=aspect day=356 time=${RSUN_SOLAR_TIME:-9.0} linke_value=3.0 albedo_value=0.2
     beam_rad=beam diff_rad=diff refl_rad=refl glob_rad=glob nprocs=2 --overwrite --quiet"
   rsun_script "${dem}" "${work}" "${name}"
   echo ${rsun_call} >> "${work}/${name}.sh"
