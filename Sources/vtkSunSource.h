@@ -13,7 +13,10 @@
  * The place comes from Latitude, Longitude and Height, or from the `GeoOrigin` field
  * data of an optional input (e.g. vtkTerrainSource's output), so terrain -> sun
  * composes in a pipeline; the sun direction is then expressed in that terrain's
- * local east-north-up frame.
+ * local east-north-up frame. The irradiances are that one place's, at its height (a
+ * terrain's GeoOrigin: by default its centre post's ground): every post of the terrain
+ * receives them, where the clear sky's air mass would give higher posts more beam
+ * (ESRA: about 3 % a kilometre at a low sun; GRASS r.sun takes each cell's height).
  *
  * Output: vtkPolyData with one vertex DisplayDistance metres along the sun direction
  * (for display), and field data `SunDirection` (unit vector toward the sun, ENU),
