@@ -159,7 +159,7 @@ int raysFor(const GatherBudget& budget, double variance, double received)
 int raysNeeded(const GatherBudget& budget, double sum, double sumOfSquares, double received)
 {
   const double mean = sum / budget.pilot;
-  return raysFor(budget, std::max(0.0, sumOfSquares / budget.pilot - mean * mean), received);
+  return raysFor(budget, std::max(budget.varianceFloor, sumOfSquares / budget.pilot - mean * mean), received);
 }
 
 bool pilotDecides(const GatherBudget& budget)

@@ -69,6 +69,10 @@ struct GatherBudget
   /// pilot.
   double knownVariance = -1.0;
   double knownSurfaces = 0.0;
+  /// The least variance of one ray's estimate a pilot's may be taken as: what the
+  /// solved hierarchy's links say the point's view holds (a bright strip of a few
+  /// percent of it, which a pilot of 64 meets once or not at all, still counts).
+  double varianceFloor = 0.0;
 };
 
 /// What a final gather reads, fixed for its life. The optional parts (null: absent)

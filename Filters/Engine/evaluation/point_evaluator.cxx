@@ -42,6 +42,25 @@ double receivedBesideSurfaces(const Spectrum& sun, const PostSky::Value& sky)
 // Standard errors in an error estimate: about 95 % of normal errors lie within two. The
 // same margin on estimated biases.
 constexpr double errorCoverage = 2.0;
+
+// The variance of one cosine-weighted ray's estimate of light from surfaces, as the
+// solved links from surfaces to a leaf and its ancestors (together all it sees, each
+// part once) give it: sum F_i B_i^2 - (sum F_i B_i)^2, F_i the seen form factor and B_i
+// the sender's radiosity (largest band). Variation within a sender adds to it: a floor.
+double linkVariance(const PolygonElement& leaf)
+{
+  double mean = 0.0, square = 0.0;
+  for (const HElement* element = &leaf; element; element = element->Parent)
+    for (const Link& link : element->Incoming)
+    {
+      if (link.sender->asExternal())
+        continue;
+      const double seen = link.kernel * link.visibility, b = largestBand(link.sender->emittance());
+      mean += seen * b;
+      square += seen * b * b;
+    }
+  return std::max(0.0, square - mean * mean);
+}
 } // namespace
 
 PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPlan& plan)
@@ -293,6 +312,10 @@ PointIrradiance PointEvaluator::irradianceAt(
         budget.knownVariance = around.variance, budget.pilot = 0, budget.minimum = std::min(budget.maximum, Tuning::latticeKnownRays),
         budget.knownSurfaces = largestBand(expected);
     }
+    // Elsewhere the hierarchy's links tell how the point's view is lit: their spread
+    // is the least the rays' can be.
+    if (!post)
+      budget.varianceFloor = linkVariance(leaf);
     const Spectrum& sun = irradiance[SunLight];
     // A post's rays start at the post itself, one offset along its normal (as every
     // ray does), which clears the grid's triangles around it: any higher, the thin band
