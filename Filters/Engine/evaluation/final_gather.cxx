@@ -103,11 +103,11 @@ Spectrum FinalGather::radiosityAt(const PolygonElement& leaf, const SurfaceHit& 
   return radiosityOf(leaf.emission(), leaf.reflectance(), totalIrradiance(sun, sky, reflected));
 }
 
-int FinalGather::openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed) const
+int FinalGather::openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed, int* skyRays) const
 {
   const CosineFrame frame(normal);
   SampleGenerator random(seed);
-  int open = 0;
+  int open = 0, sky = 0;
   for (int k = 0; k < strata * strata; ++k)
   {
     double s, t;
@@ -116,7 +116,10 @@ int FinalGather::openRays(const Vec3& point, const Vec3& normal, int strata, std
     SurfaceHit hit;
     const PolygonElement* leaf = this->Rays.firstHit(point, normal, d, hit) ? this->leafAt(hit) : nullptr;
     open += !leaf || glm::dot(frontAt(hit, *leaf), d) < 0.0;
+    sky += !leaf;
   }
+  if (skyRays)
+    *skyRays = sky;
   return open;
 }
 

@@ -157,7 +157,8 @@ public:
   /// meet the front of a surface: how open its side is (a point that sees the back of
   /// a one-sided surface lies inside something, as a post on the line of a house's wall
   /// may).
-  int openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed) const;
+  /// With `skyRays`, also how many met nothing at all.
+  int openRays(const Vec3& point, const Vec3& normal, int strata, std::uint64_t seed, int* skyRays = nullptr) const;
   /// The triangle's own normal at a hit, turned to the side its leaf faces.
   static Vec3 frontAt(const struct SurfaceHit& hit, const PolygonElement& leaf);
   /// The leaf a ray's hit lies on (null where nothing solved is there).

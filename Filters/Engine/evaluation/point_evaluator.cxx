@@ -43,6 +43,9 @@ double receivedBesideSurfaces(const Spectrum& sun, const PostSky::Value& sky)
 // same margin on estimated biases.
 constexpr double errorCoverage = 2.0;
 
+// Where a point's gather starts: 6 x 6 probes of how open its side is.
+constexpr int openStrata = 6;
+
 // The variance of one cosine-weighted ray's estimate of light from surfaces, as the
 // solved links from surfaces to a leaf and its ancestors (together all it sees, each
 // part once) give it: sum F_i B_i^2 - (sum F_i B_i)^2, F_i the seen form factor and B_i
@@ -238,17 +241,8 @@ PointIrradiance PointEvaluator::irradianceAt(
   // must not share their jitter, or the noise would be the same pattern at each.
   const std::uint64_t pointSeed = this->Rays.seedOf(point);
   std::uint64_t salt = pointSeed ^ (leaf.id() * 31);
-  // The gather's rays belong to the point alone, so that two discretisations of one
-  // surface (terrain patches, triangles) cast the same rays from each post.
-  const std::uint64_t gatherSeed = pointSeed * 0x9E3779B97F4A7C15ull;
-  // A point on the leaf's border is the limit from inside the leaf: at a concave
-  // junction (a wall's foot, a box's corner) the point itself lies in the plane of the
-  // other surface, which it would see edge-on with a form factor of 0, and rays that
-  // skip their first offset would skip that surface too. So the point moves two ray
-  // offsets into its leaf (at most half way to the leaf's centre).
-  const Vec3 toCentre = toward - point;
-  const double distance = glm::length(toCentre);
-  const Vec3 inside = distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays.offset() / distance) * toCentre : point;
+  const std::uint64_t gatherSeed = this->gatherSeedOf(point);
+  const Vec3 inside = this->movedInside(point, toward);
   const bool gathered = this->gathersAtPoints();
   double visibilityVariance = 0.0; // of the links' sampled visibility, without a gather
   // Without a gather, every link that reaches the leaf, re-evaluated at the point.
@@ -392,14 +386,38 @@ double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, bool by
   return own + Tuning::horizonSkyError * std::max(0.0, largestBand(open) - largestBand(sky));
 }
 
+std::uint64_t PointEvaluator::gatherSeedOf(const Vec3& point) const
+{
+  return this->Rays.seedOf(point) * 0x9E3779B97F4A7C15ull;
+}
+
+Vec3 PointEvaluator::movedInside(const Vec3& point, const Vec3& toward) const
+{
+  // A point on the leaf's border is the limit from inside the leaf: at a concave
+  // junction (a wall's foot, a box's corner) the point itself lies in the plane of the
+  // other surface, which it would see edge-on with a form factor of 0, and rays that
+  // skip their first offset would skip that surface too.
+  const Vec3 toCentre = toward - point;
+  const double distance = glm::length(toCentre);
+  return distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays.offset() / distance) * toCentre : point;
+}
+
+PointEvaluator::Openness PointEvaluator::opennessAt(const Vec3& point, const Vec3& normal, const Vec3& toward) const
+{
+  Openness result;
+  if (this->gathersAtPoints() && this->Gather)
+    result.open = this->Gather->openRays(
+      this->movedInside(point, toward), normal, openStrata, this->gatherSeedOf(point), &result.sky);
+  return result;
+}
+
 Vec3 PointEvaluator::openSideOf(
   const Vec3& point, const Vec3& inside, const Vec3& normal, std::uint64_t seed) const
 {
-  constexpr int strata = 6;
   const double offset = this->Rays.offset();
-  auto openness = [&](const Vec3& p) { return this->Gather->openRays(p, normal, strata, seed); };
+  auto openness = [&](const Vec3& p) { return this->Gather->openRays(p, normal, openStrata, seed); };
   int most = openness(inside);
-  if (most == strata * strata)
+  if (most == openStrata * openStrata)
     return inside;
   Vec3 u, v;
   tangentsOf(normal, u, v);

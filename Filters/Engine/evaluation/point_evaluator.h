@@ -81,6 +81,14 @@ public:
   /// Many points at once, in parallel, each moved toward its own centre (see above).
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
     const std::vector<Vec3>& normals, const std::vector<Vec3>& towards, std::vector<PointIrradiance>& results) const;
+  /// How open a point's side is where irradianceAt moves it toward `toward`: of the 36
+  /// rays its gather first casts from there (openSideOf), those that meet no surface's
+  /// back, and those that meet nothing; both -1 without a final gather.
+  struct Openness
+  {
+    int open = -1, sky = -1;
+  };
+  Openness opennessAt(const Vec3& point, const Vec3& normal, const Vec3& toward) const;
   /// Direct sunlight at a point with a unit normal: normal irradiance x cosine, 0 where
   /// the point is shadowed (one ray per sun, or the post's horizons); zero without a
   /// sun. With `sunlitHours`, also the durations of the suns that reach the point.
@@ -119,6 +127,11 @@ private:
   /// rule, Testing/Reference): a post on the line of a house's wall is judged from
   /// outside the house, not from its dark inside.
   Vec3 openSideOf(const Vec3& point, const Vec3& inside, const Vec3& normal, std::uint64_t seed) const;
+  /// A point moved two ray offsets toward `toward` (at most half way): inside its leaf.
+  Vec3 movedInside(const Vec3& point, const Vec3& toward) const;
+  /// The seed of a point's gather: its rays belong to the point alone, so that two
+  /// discretisations of one surface (terrain patches, triangles) cast the same rays.
+  std::uint64_t gatherSeedOf(const Vec3& point) const;
   /// The lattice's posts of one pass this process gathers (its share where the work is
   /// split).
   void gatherLatticePosts(const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const;

@@ -150,7 +150,10 @@ PointSides sidesOf(const PointEvaluator& evaluator, const RadiosityScene& scene,
 }
 
 // One evaluation per side: the side's first leaf, then its other leaves; the clearly
-// most open wins.
+// most open wins. An other leaf is evaluated only where its side is clearly more open
+// than the first's (more of the gather's first probes meet no surface's back, or
+// nothing at all: a corner's outside against a wall's foot): on a flat surface the
+// leaves around a vertex give the same rays from next to the same place.
 std::vector<PointValues> evaluatedAtPoints(const PointEvaluator& evaluator,
   const std::vector<const Side*>& sides, const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
   const std::vector<Vec3>& towards)
@@ -158,17 +161,38 @@ std::vector<PointValues> evaluatedAtPoints(const PointEvaluator& evaluator,
   std::vector<const PolygonElement*> leaves;
   for (const Side* side : sides)
     leaves.push_back(side->leaf);
-  std::vector<Vec3> allPoints = points, allNormals = normals, allTowards = towards;
   std::vector<std::size_t> evaluationOf;
+  std::vector<const PolygonElement*> otherLeaves;
+  std::vector<Vec3> otherPoints, otherNormals, otherTowards;
   for (std::size_t k = 0; k < sides.size(); ++k)
     for (const PolygonElement* other : sides[k]->otherLeaves)
     {
-      leaves.push_back(other);
-      allPoints.push_back(points[k]);
-      allNormals.push_back(normals[k]);
-      allTowards.push_back(other->centre());
+      otherLeaves.push_back(other);
+      otherPoints.push_back(points[k]);
+      otherNormals.push_back(normals[k]);
+      otherTowards.push_back(other->centre());
       evaluationOf.push_back(k);
     }
+  std::vector<PointEvaluator::Openness> firstOpen(points.size()), otherOpen(evaluationOf.size());
+  tbb::parallel_for(std::size_t(0), points.size(),
+    [&](std::size_t k) { firstOpen[k] = evaluator.opennessAt(points[k], normals[k], towards[k]); });
+  tbb::parallel_for(std::size_t(0), evaluationOf.size(), [&](std::size_t m) {
+    otherOpen[m] = evaluator.opennessAt(otherPoints[m], otherNormals[m], otherTowards[m]);
+  });
+  std::vector<Vec3> allPoints = points, allNormals = normals, allTowards = towards;
+  std::vector<std::size_t> evaluated; // of the other leaves, those evaluated
+  for (std::size_t m = 0; m < evaluationOf.size(); ++m)
+  {
+    const PointEvaluator::Openness &other = otherOpen[m], &first = firstOpen[evaluationOf[m]];
+    if (other.open < 0 || other.open > first.open + 3 || other.sky > first.sky + 3) // clearly, not noise
+    {
+      leaves.push_back(otherLeaves[m]);
+      allPoints.push_back(otherPoints[m]);
+      allNormals.push_back(otherNormals[m]);
+      allTowards.push_back(otherTowards[m]);
+      evaluated.push_back(m);
+    }
+  }
   std::vector<PointIrradiance> results;
   evaluator.irradianceAt(leaves, allPoints, allNormals, allTowards, results);
   auto openness = [](const PointIrradiance& r) {
@@ -177,9 +201,9 @@ std::vector<PointValues> evaluatedAtPoints(const PointEvaluator& evaluator,
   std::vector<std::size_t> best(points.size());
   for (std::size_t k = 0; k < points.size(); ++k)
     best[k] = k;
-  for (std::size_t m = 0; m < evaluationOf.size(); ++m)
+  for (std::size_t e = 0; e < evaluated.size(); ++e)
   {
-    const std::size_t k = evaluationOf[m], candidate = points.size() + m;
+    const std::size_t k = evaluationOf[evaluated[e]], candidate = points.size() + e;
     // Only a clearly more open leaf (a hidden one next to a visible one), not the larger
     // of two noisy estimates of the same value.
     if (openness(results[candidate]) > 1.1 * openness(results[best[k]]) + 1e-9)
