@@ -1,8 +1,9 @@
 // Radiosity benchmark: a DEM under the sun and a CIE clear sky of 09:00 local solar time
 // on 21 December at its centre (r.sun's time=9.0 of day 356; TERRALUX_BENCH_SOLAR_TIME
-// sets another hour), reflectance 0.2, at one tolerance. Prints wall time, peak memory, elements, links, rays; with a
-// reference file (per-vertex global irradiance of a converged run) also the relative
-// RMS error and the 95th percentile of the absolute relative error.
+// sets another hour), reflectance 0.2, at one tolerance. Prints wall time, peak memory,
+// elements, links, rays; with a reference file (per-vertex global irradiance of a
+// converged run) also the relative RMS error and the 95th percentile of the absolute
+// relative error.
 //   benchmark_radiosity DEM TOLERANCE SAMPLES [--write REF | --compare REF]
 // With TERRALUX_BENCH_AVERAGED=1 in the environment, point values are averaged over
 // elements (EvaluateAtPoints off) instead of evaluated at the points; with

@@ -43,8 +43,9 @@ double receivedBesideSurfaces(const Spectrum& sun, const PostSky::Value& sky)
 // same margin on estimated biases.
 constexpr double errorCoverage = 2.0;
 
-// Where a point's gather starts: 6 x 6 probes of how open its side is.
-constexpr int openStrata = 6;
+// Where a point's gather starts: 6 x 6 probes of how open its side is; one side is
+// clearly more open than another where more than 3 more of them are open (not noise).
+constexpr int openStrata = 6, clearlyMoreOpen = 3;
 
 // The variance of one cosine-weighted ray's estimate of light from surfaces, as the
 // solved links from surfaces to a leaf and its ancestors (together all it sees, each
@@ -402,6 +403,11 @@ Vec3 PointEvaluator::movedInside(const Vec3& point, const Vec3& toward) const
   return distance > 0.0 ? point + std::min(0.5, 2.0 * this->Rays.offset() / distance) * toCentre : point;
 }
 
+bool PointEvaluator::Openness::clearlyMoreOpenThan(const Openness& other) const
+{
+  return this->open < 0 || this->open > other.open + clearlyMoreOpen || this->sky > other.sky + clearlyMoreOpen;
+}
+
 PointEvaluator::Openness PointEvaluator::opennessAt(const Vec3& point, const Vec3& normal, const Vec3& toward) const
 {
   Openness result;
@@ -426,7 +432,7 @@ Vec3 PointEvaluator::openSideOf(
   {
     const Vec3 candidate = point + 2.0 * offset * glm::normalize(along);
     const int open = openness(candidate);
-    if (open > most + 3) // clearly more open, not noise
+    if (open > most + clearlyMoreOpen)
       best = candidate, most = open;
   }
   return best;

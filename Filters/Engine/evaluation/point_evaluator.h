@@ -87,6 +87,9 @@ public:
   struct Openness
   {
     int open = -1, sky = -1;
+    /// Whether this side is clearly more open than `other` (by more than noise: the
+    /// rule openSideOf picks a gather's start by), or unknown (no final gather).
+    bool clearlyMoreOpenThan(const Openness& other) const;
   };
   Openness opennessAt(const Vec3& point, const Vec3& normal, const Vec3& toward) const;
   /// Direct sunlight at a point with a unit normal: normal irradiance x cosine, 0 where

@@ -161,38 +161,37 @@ std::vector<PointValues> evaluatedAtPoints(const PointEvaluator& evaluator,
   std::vector<const PolygonElement*> leaves;
   for (const Side* side : sides)
     leaves.push_back(side->leaf);
+  // Each other leaf of a side (the side's index in evaluationOf), and how open each
+  // side with other leaves is from its first leaf and from each other.
   std::vector<std::size_t> evaluationOf;
   std::vector<const PolygonElement*> otherLeaves;
-  std::vector<Vec3> otherPoints, otherNormals, otherTowards;
   for (std::size_t k = 0; k < sides.size(); ++k)
     for (const PolygonElement* other : sides[k]->otherLeaves)
     {
       otherLeaves.push_back(other);
-      otherPoints.push_back(points[k]);
-      otherNormals.push_back(normals[k]);
-      otherTowards.push_back(other->centre());
       evaluationOf.push_back(k);
     }
   std::vector<PointEvaluator::Openness> firstOpen(points.size()), otherOpen(evaluationOf.size());
-  tbb::parallel_for(std::size_t(0), points.size(),
-    [&](std::size_t k) { firstOpen[k] = evaluator.opennessAt(points[k], normals[k], towards[k]); });
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t k) {
+    if (!sides[k]->otherLeaves.empty())
+      firstOpen[k] = evaluator.opennessAt(points[k], normals[k], towards[k]);
+  });
   tbb::parallel_for(std::size_t(0), evaluationOf.size(), [&](std::size_t m) {
-    otherOpen[m] = evaluator.opennessAt(otherPoints[m], otherNormals[m], otherTowards[m]);
+    const std::size_t k = evaluationOf[m];
+    otherOpen[m] = evaluator.opennessAt(points[k], normals[k], otherLeaves[m]->centre());
   });
   std::vector<Vec3> allPoints = points, allNormals = normals, allTowards = towards;
   std::vector<std::size_t> evaluated; // of the other leaves, those evaluated
   for (std::size_t m = 0; m < evaluationOf.size(); ++m)
-  {
-    const PointEvaluator::Openness &other = otherOpen[m], &first = firstOpen[evaluationOf[m]];
-    if (other.open < 0 || other.open > first.open + 3 || other.sky > first.sky + 3) // clearly, not noise
+    if (otherOpen[m].clearlyMoreOpenThan(firstOpen[evaluationOf[m]]))
     {
+      const std::size_t k = evaluationOf[m];
       leaves.push_back(otherLeaves[m]);
-      allPoints.push_back(otherPoints[m]);
-      allNormals.push_back(otherNormals[m]);
-      allTowards.push_back(otherTowards[m]);
+      allPoints.push_back(points[k]);
+      allNormals.push_back(normals[k]);
+      allTowards.push_back(otherLeaves[m]->centre());
       evaluated.push_back(m);
     }
-  }
   std::vector<PointIrradiance> results;
   evaluator.irradianceAt(leaves, allPoints, allNormals, allTowards, results);
   auto openness = [](const PointIrradiance& r) {
