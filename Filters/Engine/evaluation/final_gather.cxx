@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace terralux
@@ -153,7 +154,8 @@ namespace
 int raysFor(const GatherBudget& budget, double variance, double received)
 {
   const double target = std::max({ budget.relativeError * received, budget.absoluteError, 1e-12 });
-  const double needed = std::clamp<double>(std::ceil(variance / (target * target)), budget.minimum, budget.maximum);
+  const double allowed = std::max(0.5 * target * target, target * target - budget.spentVariance);
+  const double needed = std::clamp<double>(std::ceil(variance / allowed), budget.minimum, budget.maximum);
   const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
   return side * side;
 }
@@ -249,8 +251,13 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       result.rays += horizon.rays;
     }
     else
+    {
+      // Half the target's variance for the sky, the rest for the surfaces' rays below.
+      GatherBudget skyBudget = budget;
+      skyBudget.spentVariance = std::numeric_limits<double>::infinity();
       hidden = this->hiddenSkyByRadiance(
-        point, normal, budget, seed, directIrradiance + largestBand(open), hiddenOmega, result.rays, skyVariance);
+        point, normal, skyBudget, seed, directIrradiance + largestBand(open), hiddenOmega, result.rays, skyVariance);
+    }
     openOmega = std::max(0.0, openOmega - hiddenOmega);
     for (int band = 0; band < maxBands; ++band)
       result.sky[band] = std::max(0.0, open[band] - hidden[band]);
@@ -318,15 +325,17 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     }
   };
   SampleGenerator pilotRandom(seed ^ 0x5851F42D4C957F2Dull), random(seed);
+  GatherBudget surfacesBudget = budget;
+  surfacesBudget.spentVariance += skyVariance;
   int count = surfacesSend && !(belowHorizon && belowHorizon->empty()) ? budget.maximum : 0;
   if (count > 0 && pilotDecides(budget))
   {
     cast(budget.pilot, pilotRandom);
     result.rays += budget.pilot;
-    count = raysNeeded(budget, sum, sumOfSquares, directIrradiance + largestBand(result.sky) + sum / budget.pilot);
+    count = raysNeeded(surfacesBudget, sum, sumOfSquares, directIrradiance + largestBand(result.sky) + sum / budget.pilot);
   }
   else if (count > 0 && budget.knownVariance >= 0.0)
-    count = raysFor(budget, budget.knownVariance, directIrradiance + largestBand(result.sky) + budget.knownSurfaces);
+    count = raysFor(surfacesBudget, budget.knownVariance, directIrradiance + largestBand(result.sky) + budget.knownSurfaces);
   cast(count, random);
   // E = pi x the mean radiance over cosine-weighted directions: the mean radiosity.
   const double perRay = count > 0 ? 1.0 / count : 0.0;

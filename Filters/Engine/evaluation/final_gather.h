@@ -73,6 +73,10 @@ struct GatherBudget
   /// solved hierarchy's links say the point's view holds (a bright strip of a few
   /// percent of it, which a pilot of 64 meets once or not at all, still counts).
   double varianceFloor = 0.0;
+  /// The variance (W/m^2 squared) of the point's other estimates by rays, which add to
+  /// the same global value: these rays aim at what the target leaves, at least half
+  /// of it (the hidden sky by rays aims at half: the two then meet the target together).
+  double spentVariance = 0.0;
 };
 
 /// What a final gather reads, fixed for its life. The optional parts (null: absent)

@@ -43,6 +43,32 @@ std::vector<std::array<int, 2>> stepsOfAllAzimuths(bool dense)
 }
 } // namespace
 
+/// A line's hull as the sweep keeps it: storage that only grows, and the points in use,
+/// so a post's pushes and pops run on a pointer and a count kept in registers, not on a
+/// vector's bookkeeping (docs/tuning.md).
+struct HorizonMap::HullStack
+{
+  std::vector<HullPoint> storage;
+  std::size_t size = 0;
+  /// Storage for `more` points past those in use.
+  HullPoint* reserve(std::size_t more)
+  {
+    if (this->storage.size() < this->size + more)
+      this->storage.resize(2 * (this->size + more));
+    return this->storage.data();
+  }
+  void assign(const Hull* hull)
+  {
+    this->size = 0;
+    if (hull)
+    {
+      std::copy(hull->begin(), hull->end(), this->reserve(hull->size()));
+      this->size = hull->size();
+    }
+  }
+  void copyTo(Hull& hull) const { hull.assign(this->storage.begin(), this->storage.begin() + this->size); }
+};
+
 HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* split)
   : Terrain(terrain)
 {
@@ -218,25 +244,25 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
     using Point = HullPoint;
     // Up to 128 neighbouring lines are swept in step: at each step they read and write
     // neighbouring posts, which then share cache lines (docs/tuning.md).
-    std::array<std::vector<Point>, 128> hulls; // per line: the upper hull of what lies ahead; the nearest last
+    std::array<HullStack, 128> hulls; // per line: the upper hull of what lies ahead; the nearest last
     std::array<int, 128> onLine{};
     std::array<std::size_t, 128> nextCapture{};
     // Drops the hull's nearest points that (x, z) and the next one hide: they are below
     // the segment between them, so no point nearer sees them as its horizon.
-    auto pop = [](std::vector<Point>& hull, double x, double z) {
-      while (hull.size() >= 2)
+    auto pop = [](const Point* hull, std::size_t& size, double x, double z) {
+      while (size >= 2)
       {
-        const Point& a = hull[hull.size() - 1];
-        const Point& b = hull[hull.size() - 2];
+        const Point& a = hull[size - 1];
+        const Point& b = hull[size - 2];
         if ((a.z - z) * (b.x - x) <= (b.z - z) * (a.x - x))
-          hull.pop_back();
+          --size;
         else
           break;
       }
     };
-    auto push = [&pop](std::vector<Point>& hull, const Point& point) {
-      pop(hull, point.x, point.z);
-      hull.push_back(point);
+    auto push = [&pop](Point* hull, std::size_t& size, const Point& point) {
+      pop(hull, size, point.x, point.z);
+      hull[size++] = point;
     };
     auto pointOf = [&](const float* post) { return Point{ post[0] * dx + post[1] * dy, post[2] }; };
     // Crossing n of the step ahead of the post at `here`.
@@ -256,7 +282,7 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
     auto captureAt = [&](const LineRun& run, std::size_t l, int k) {
       std::size_t& n = nextCapture[l];
       while (n < run.firstCapture + run.captureCount && captures[n].k == k)
-        (*captured)[captures[n++].slot] = hulls[l];
+        hulls[l].copyTo((*captured)[captures[n++].slot]);
     };
     // One step's profile, the post ahead first, and the crossings that may count.
     const std::size_t m = crossings.size();
@@ -268,10 +294,7 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
       for (std::size_t l = 0; l < lines; ++l)
       {
         const LineRun& run = runs[first + l];
-        if (run.ahead)
-          hulls[l] = *run.ahead;
-        else
-          hulls[l].clear();
+        hulls[l].assign(run.ahead);
         onLine[l] = run.count;
         nextCapture[l] = run.firstCapture;
         longest = std::max(longest, onLine[l]);
@@ -281,8 +304,10 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
         {
           if (k >= onLine[l])
             continue;
-          std::vector<Point>& hull = hulls[l];
           const LineRun& run = runs[first + l];
+          // Room for this post's pushes, then the stack in registers until it is done.
+          Point* hull = hulls[l].reserve(m + 1);
+          std::size_t size = hulls[l].size;
           const int i = run.i + k * q, j = run.j + k * p;
           const float* here = position(i, j);
           // Where the step ahead lies inside a grid without missing cells, every
@@ -296,7 +321,7 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
               const Crossing& c = crossings[n];
               if (inGrid(i + c.a0, j + c.b0) && inGrid(i + c.a1, j + c.b1) &&
                 (cellValid(i + c.ci, j + c.cj) || cellValid(i + c.di, j + c.dj)))
-                push(hull, crossingAhead(here, n));
+                push(hull, size, crossingAhead(here, n));
             }
           }
           else
@@ -318,21 +343,22 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
               count += aboveChord & aboveNeighbours;
             }
             for (std::size_t n = 0; n < count; ++n)
-              push(hull, kept[n]);
+              push(hull, size, kept[n]);
           }
           std::uint16_t& horizon =
             out[static_cast<std::size_t>(j - window.j0) * outX + static_cast<std::size_t>(i - window.i0)];
           horizon = 0; // nothing above the horizontal, or a post of no cell
           if (!complete && !t.postUsed(i, j))
           {
+            hulls[l].size = size;
             captureAt(run, l, k);
             continue;
           }
           const auto [x, z] = pointOf(here);
-          pop(hull, x, z);
-          if (!hull.empty() && hull.back().x > x)
+          pop(hull, size, x, z);
+          if (size > 0 && hull[size - 1].x > x)
           {
-            const double tangent = (hull.back().z - z) / (hull.back().x - x);
+            const double tangent = (hull[size - 1].z - z) / (hull[size - 1].x - x);
             if (tangent > 0.0)
             {
               // Rounded to the nearest (a positive value: + 0.5, truncated).
@@ -340,7 +366,8 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
               horizon = static_cast<std::uint16_t>(std::min(65535.0, quantised));
             }
           }
-          hull.push_back({ x, z });
+          hull[size++] = { x, z };
+          hulls[l].size = size;
           captureAt(run, l, k);
         }
     }

@@ -221,6 +221,7 @@ private:
   };
   /// The upper convex hull of a line's profile ahead of a post, the nearest point last.
   using Hull = std::vector<HullPoint>;
+  struct HullStack; // the sweep's working copy of a hull (horizon_map.cxx)
   /// The stretch of a line inside a window: posts (i, j) + k g for k < count, swept from
   /// k = count - 1 down, `ahead` the hull of the line beyond it (null: none, or what
   /// the sweep reads from the grid). After post k = captures[n].k it copies its hull to

@@ -231,3 +231,42 @@ TEST(FinalGather, ABrightStripAPilotMissesStillSetsThePointsRays)
   // Each point's estimate has 40 % noise at that count: their mean is within 25 %.
   EXPECT_NEAR(sum / count, exact, 0.25 * exact);
 }
+
+TEST(FinalGather, TheSkyAndTheSurfacesByRaysMeetTheTargetTogether)
+{
+  // Beside a wall that sends light and hides much of a clear sky, a point's hidden sky
+  // and its light from surfaces are both sampled by rays, and both add to its global.
+  // Each aiming at the whole target left the sum's standard error up to sqrt 2 x the
+  // target; the sky now takes half the target's variance and the surfaces what it
+  // leaves, so together they are within it (the rays' own variance estimates scatter a
+  // little about the pilots' that set the counts).
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(50.0 * degree, 1.0)), 100.0, 6);
+  const OpenSky open(sky);
+  RadiosityScene scene;
+  addPolygon(scene, { { -50, -20, 0 }, { 50, -20, 0 }, { 50, 0, 0 }, { -50, 0, 0 } }, 0.0);
+  addPolygon(scene, { { -50, 0, 0 }, { 50, 0, 0 }, { 50, 0, 6 }, { -50, 0, 6 } }, 0.0, 100.0);
+  HierarchicalRadiosity solver(scene, RadiosityOptions{});
+  ASSERT_TRUE(solver.solve());
+  const Visibility rays(scene);
+  const std::vector<TerrainPatch*> noTerrain;
+  const std::vector<HElement*> noSun;
+  GatherInputs inputs{ rays, solver.polygonRoots(), noTerrain, noSun };
+  inputs.sky = &open;
+  const FinalGather gather(inputs);
+  GatherBudget budget;
+  budget.relativeError = 0.0;
+  budget.absoluteError = 1.0; // W/m^2, one standard error
+  budget.maximum = 1 << 16;
+  double worst = 0.0;
+  for (double d : { 1.0, 2.0, 4.0 })
+    for (std::uint64_t seed = 1; seed <= 4; ++seed)
+    {
+      const Vec3 n(0, 0, 1), p(3.0 * seed, -d, 3.0 * rays.offset());
+      const GatheredLight light = gather.irradianceAt(p, n, budget, seed, 0.0);
+      ASSERT_GT(light.count, budget.minimum) << d; // the surfaces' rays set by the aim
+      EXPECT_LT(light.sky[0], 0.9 * 100.0) << d;    // the wall hides a good part of the sky
+      worst = std::max(worst, light.standardError / budget.absoluteError);
+    }
+  EXPECT_LT(worst, 1.15);
+  EXPECT_GT(worst, 0.7); // the aim is what sets the rays, not a floor of them
+}
