@@ -159,12 +159,12 @@ void PointEvaluator::findPostHorizons(bool hornNormals)
   // Beyond the map's memory the posts keep the rays' horizons, slower but within the
   // memory the rest of the solve needs. A window's map sees its far terrain beyond the
   // detail distance, as its rays do.
-  if (!this->Horizons || !this->HeightFieldGrid || !HorizonMap::fits(*this->HeightFieldGrid))
+  if (!this->Horizons || !this->HeightFieldGrid || !HorizonMap::fits(*this->HeightFieldGrid, this->horizonDensity()))
     return;
   const auto start = std::chrono::steady_clock::now();
   // The one terrain's horizons: built by the first solve over this geometry, reused by
   // the next ones.
-  this->PostHorizons = &this->Solver.geometry()->horizons(0, this->wantsDenseHorizons(), this->Split);
+  this->PostHorizons = &this->Solver.geometry()->horizons(0, this->horizonDensity(), this->Split);
   this->Horizons = std::make_unique<HorizonSky>(this->PointRays, *this->SkyAtPoints, this->PostHorizons);
   // With a split and a detail distance, each process holds the posts' skies and suns
   // within it of its window only.
@@ -174,9 +174,13 @@ void PointEvaluator::findPostHorizons(bool hornNormals)
   this->Stats.horizonsSeconds += secondsSince(start);
 }
 
-bool PointEvaluator::wantsDenseHorizons() const
+HorizonMap::Density PointEvaluator::horizonDensity() const
 {
-  return this->Solver.suns().size() >= Tuning::sunsForDenseHorizons && HorizonMap::fits(*this->HeightFieldGrid, true);
+  if (this->Solver.suns().size() >= Tuning::sunsForDenseHorizons &&
+    HorizonMap::fits(*this->HeightFieldGrid, HorizonMap::Density::Dense))
+    return HorizonMap::Density::Dense;
+  return this->Options.targetError >= Tuning::coarseHorizonsTarget ? HorizonMap::Density::Coarse
+                                                                    : HorizonMap::Density::Standard;
 }
 
 void PointEvaluator::findSunHorizons()
@@ -186,10 +190,10 @@ void PointEvaluator::findSunHorizons()
   if (!grid || suns.empty())
     return;
   const HorizonMap* map = this->PostHorizons;
-  if (!map && suns.size() >= Tuning::sunsForHorizonMap && HorizonMap::fits(*grid))
+  if (!map && suns.size() >= Tuning::sunsForHorizonMap && HorizonMap::fits(*grid, this->horizonDensity()))
   {
     const auto start = std::chrono::steady_clock::now();
-    map = &this->Solver.geometry()->horizons(0, this->wantsDenseHorizons(), this->Split);
+    map = &this->Solver.geometry()->horizons(0, this->horizonDensity(), this->Split);
     this->Stats.horizonsSeconds += secondsSince(start);
   }
   if (!map || !map->complete())
@@ -384,7 +388,10 @@ double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, bool by
   Spectrum open{};
   double projectedSolidAngle = 0.0;
   this->SkyAtPoints->irradiance(normal, open, projectedSolidAngle);
-  return own + Tuning::horizonSkyError * std::max(0.0, largestBand(open) - largestBand(sky));
+  const bool coarse = this->PostHorizons &&
+    this->PostHorizons->azimuthCount() <= static_cast<int>(HorizonMap::Density::Coarse);
+  const double share = coarse ? Tuning::coarseHorizonSkyError : Tuning::horizonSkyError;
+  return own + share * std::max(0.0, largestBand(open) - largestBand(sky));
 }
 
 std::uint64_t PointEvaluator::gatherSeedOf(const Vec3& point) const

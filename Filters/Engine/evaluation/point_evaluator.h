@@ -118,11 +118,14 @@ private:
   /// Whether points take a final gather: rays to cast and something for them to see (a
   /// sky, or surfaces that send light).
   bool gathersAtPoints() const;
-  bool wantsDenseHorizons() const;
+  /// The horizon map's azimuths: dense for many suns, coarse at the speed knob's coarse
+  /// end (Tuning::coarseHorizonsTarget), else standard.
+  HorizonMap::Density horizonDensity() const;
   /// The error estimate's part for the sky a point receives: the open sky's own error
   /// (Tuning::openSkyError) and, where the sky comes from a post's horizons rather than
-  /// from rays (`byRays`), Tuning::horizonSkyError of the sky they hide from the plane
-  /// at `normal`: found at a few dozen azimuths.
+  /// from rays (`byRays`), a share of the sky they hide from the plane at `normal`
+  /// (Tuning::horizonSkyError, or coarseHorizonSkyError from a coarse map): found at a
+  /// few dozen azimuths.
   double skyError(const Vec3& normal, const Spectrum& sky, bool byRays) const;
   /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
   /// leaf) unless that sees the back of a surface, then the most open of four points two

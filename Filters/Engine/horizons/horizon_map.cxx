@@ -22,12 +22,15 @@ using horizon_lines::Crossing;
 
 namespace
 {
-/// The 32 steps: slopes 0, 1/5, 2/5, 2/3 and 1 in each octant; dense, 64: also 1/9,
-/// 1/3, 1/2 and 3/4, between them and short (few crossings a step).
-std::vector<std::array<int, 2>> stepsOfAllAzimuths(bool dense)
+/// The steps: slopes 0, 1/5, 2/5, 2/3 and 1 in each octant (32); coarse, 0, 2/5 and 1
+/// (16); dense, 64: also 1/9, 1/3, 1/2 and 3/4, between them and short (few crossings a
+/// step).
+std::vector<std::array<int, 2>> stepsOfAllAzimuths(HorizonMap::Density density)
 {
-  std::vector<std::array<int, 2>> slopes{ { 1, 0 }, { 5, 1 }, { 5, 2 }, { 3, 2 }, { 1, 1 } };
-  if (dense)
+  std::vector<std::array<int, 2>> slopes{ { 1, 0 }, { 5, 2 }, { 1, 1 } };
+  if (density != HorizonMap::Density::Coarse)
+    slopes.insert(slopes.end(), { { 5, 1 }, { 3, 2 } });
+  if (density == HorizonMap::Density::Dense)
     slopes.insert(slopes.end(), { { 9, 1 }, { 3, 1 }, { 2, 1 }, { 4, 3 } });
   std::vector<std::array<int, 2>> steps;
   for (const std::array<int, 2>& s : slopes)
@@ -69,13 +72,13 @@ struct HorizonMap::HullStack
   void copyTo(Hull& hull) const { hull.assign(this->storage.begin(), this->storage.begin() + this->size); }
 };
 
-HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* split)
+HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSplit* split)
   : Terrain(terrain)
 {
   this->fitMeanMap(terrain);
   this->measureRelief();
   this->ExtentU1 = terrain.postsX() - 1, this->ExtentV1 = terrain.postsY() - 1;
-  const std::vector<std::array<int, 2>> slotSteps = this->placeAzimuths(dense);
+  const std::vector<std::array<int, 2>> slotSteps = this->placeAzimuths(density);
   this->Held = WorkSplit::ownWindow(split, terrain.postsX(), terrain.postsY());
   this->holdPosts();
   if (!split)
@@ -90,10 +93,10 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, bool dense, const WorkSplit* 
     this->sweepSharedAzimuths(slotSteps, *split);
 }
 
-std::vector<std::array<int, 2>> HorizonMap::placeAzimuths(bool dense)
+std::vector<std::array<int, 2>> HorizonMap::placeAzimuths(Density density)
 {
   // Azimuths in increasing order, each step's slot its rank.
-  const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths(dense);
+  const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths(density);
   std::vector<double> azimuths;
   for (const auto& g : steps)
   {
@@ -132,9 +135,9 @@ std::size_t HorizonMap::postsX() const
   return static_cast<std::size_t>(this->Terrain.postsX());
 }
 
-bool HorizonMap::fits(const TerrainGrid& terrain, bool dense)
+bool HorizonMap::fits(const TerrainGrid& terrain, Density density)
 {
-  const double bytes = 2.0 * (dense ? maximumAzimuths : standardAzimuths) * terrain.postsX() * terrain.postsY();
+  const double bytes = 2.0 * static_cast<int>(density) * terrain.postsX() * terrain.postsY();
   return bytes <= 2147483648.0;
 }
 

@@ -1,11 +1,10 @@
 #pragma once
-// The horizon of every post of a height-field terrain grid toward 32 azimuths (or 64),
-// found for all posts at once (a scene of one terrain: several grids would hide each
-// other). Toward an azimuth whose step in the grid is a whole number of posts, g = (q, p)
-// (slopes 0, 1/5, 2/5, 2/3, 1 and their mirrors: azimuths 10.5 to 11.9 deg apart on
-// square cells; dense, also 1/9, 1/3, 1/2, 3/4: 3.2 to 8.1 deg apart), the posts lie on
-// lines that repeat g, and the
-// terrain along a line is linear between its crossings of cell edges and diagonals,
+// The horizon of every post of a height-field terrain grid toward 32 azimuths (16 or
+// 64), found for all posts at once (a scene of one terrain: several grids would hide
+// each other). Toward an azimuth whose step in the grid is a whole number of posts, g =
+// (q, p) (slopes 0, 1/5, 2/5, 2/3, 1 and their mirrors: azimuths 10.5 to 11.9 deg apart
+// on square cells; coarse, 0, 2/5 and 1; dense, also 1/9, 1/3, 1/2, 3/4: 3.2 to 8.1 deg
+// apart), the posts lie on lines that repeat g, and the terrain along a line is linear between its crossings of cell edges and diagonals,
 // whose pattern is the same on every step. Swept from its far end, a line keeps the
 // upper convex hull of the crossings ahead; the horizon of each post is its tangent to
 // that hull (Dozier, Bruno & Downey 1981; Stewart 1998 for the sectors): amortised
@@ -33,18 +32,30 @@ class TerrainGrid;
 class HorizonMap
 {
 public:
+  /// How many azimuths a map holds. Standard, 32: slopes 0, 1/5, 2/5, 2/3 and 1 in each
+  /// octant. Coarse, 16 (the speed knob's coarse end, Tuning::coarseHorizonsTarget):
+  /// slopes 0, 2/5 and 1, 21.8 to 23.2 deg apart; half the sweep and the posts' skies,
+  /// the sky between azimuths about 2.5 times less exact (Tuning::coarseHorizonSkyError).
+  /// Dense, 64, for many suns (a year of hours): about half as far from a sun's bearing
+  /// to the nearest mapped azimuth, so fewer suns near a post's horizon need a ray (a
+  /// year's on the 1025^2 fractal: 449 M rays instead of 679 M), for 2.4 times the
+  /// sweep's work.
+  enum class Density
+  {
+    Coarse = 16,
+    Standard = 32,
+    Dense = 64
+  };
   /// A grid whose cells all face up (TerrainGrid::facesUp), alone in its scene; it
-  /// must outlive this. `dense`: 64 azimuths instead of 32, for many suns (a year of
-  /// hours): about half as far from a sun's bearing to the nearest mapped azimuth, so
-  /// fewer suns near a post's horizon need a ray (a year's on the 1025^2 fractal: 449 M
-  /// rays instead of 679 M), for 2.4 times the sweep's work.
+  /// must outlive this.
   /// `split`: processes that build the map together (null: this one alone), each
   /// keeping the horizons of its own window of posts only (holds). Where the split
   /// sends point to point, each sweeps its window's stretch of every line and hands
   /// the hull it reaches to the window the line enters next (horizon_handoff.cxx);
   /// else each sweeps a share of the azimuths over the whole grid and broadcasts it.
   /// Either way every held horizon is one process's, bit for bit.
-  explicit HorizonMap(const TerrainGrid& terrain, bool dense = false, const WorkSplit* split = nullptr);
+  explicit HorizonMap(
+    const TerrainGrid& terrain, Density density = Density::Standard, const WorkSplit* split = nullptr);
   /// The horizons of a window of a terrain whose far terrain is given (a process's
   /// piece and halo; RadiosityScene::farTerrain), as its rays see them (Visibility):
   /// the window's own triangles within `detailDistance` of the post (horizontally),
@@ -54,13 +65,14 @@ public:
   /// they share, bit for bit, as long as each holds detailDistance of terrain around
   /// them (posts nearer its edge see it cut short). The azimuths are those of the far
   /// terrain's mean map, the same on every window; proofs bound both surfaces.
-  HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance, bool dense = false);
-  static constexpr int standardAzimuths = 32, maximumAzimuths = 64; // dense: the maximum
+  HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance,
+    Density density = Density::Standard);
+  static constexpr int maximumAzimuths = static_cast<int>(Density::Dense);
   int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
-  /// Whether the map of `terrain` fits the 2 GiB it may take (64 bytes a post, 128
-  /// dense: grids up to about 5,800^2 posts, 4,100^2 dense); beyond, posts keep the
-  /// rays' horizons.
-  static bool fits(const TerrainGrid& terrain, bool dense = false);
+  /// Whether the map of `terrain` fits the 2 GiB it may take (2 bytes a post and
+  /// azimuth: grids up to about 5,800^2 posts at 32 azimuths, 4,100^2 at 64); beyond,
+  /// posts keep the rays' horizons.
+  static bool fits(const TerrainGrid& terrain, Density density = Density::Standard);
 
   /// A post of the grid.
   struct Post
@@ -210,7 +222,7 @@ public:
 
 private:
   /// The map's azimuths from its mean map; the steps of the slots, in order.
-  std::vector<std::array<int, 2>> placeAzimuths(bool dense);
+  std::vector<std::array<int, 2>> placeAzimuths(Density density);
   /// Sizes the map to the posts of Held.
   void holdPosts();
   void fitMeanMap(const TerrainGrid& grid);

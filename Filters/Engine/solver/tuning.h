@@ -13,6 +13,8 @@ struct Tuning
   static constexpr std::size_t sunsForHorizonMap = 48;
   /// Suns from which the horizon map is dense: 64 azimuths instead of 32.
   static constexpr std::size_t sunsForDenseHorizons = 1000;
+  /// TargetError from which the map is coarse (16 azimuths; fewer suns than above).
+  static constexpr double coarseHorizonsTarget = 0.03;
 
   // The hierarchy's suns (HierarchicalRadiosity::mergeSuns).
   /// Suns beyond which those within mergedSunDegrees of each other are merged into one.
@@ -31,6 +33,8 @@ struct Tuning
   /// The share of the sky a post's horizons hide that its error estimate takes: the
   /// horizons are interpolated between the map's azimuths, and no ray corrects them.
   static constexpr double horizonSkyError = 0.1;
+  /// The same from a coarse map (16 azimuths).
+  static constexpr double coarseHorizonSkyError = 0.25;
   /// The open sky's own relative error (OpenSky: patches split to level 5 where a
   /// plane's horizon crosses them), which every point's error estimate takes of its sky.
   static constexpr double openSkyError = 2e-3;

@@ -4,6 +4,8 @@
 #include "terrain/terrain_grid.h"
 #include "visibility/visibility.h"
 
+#include <algorithm>
+
 namespace terralux
 {
 SceneGeometry::SceneGeometry(const RadiosityScene& scene, const FarSight& far)
@@ -14,7 +16,6 @@ SceneGeometry::SceneGeometry(const RadiosityScene& scene, const FarSight& far)
   , GivenFar(scene.farTerrain)
   , Rays(std::make_unique<Visibility>(scene, far))
   , Horizons(scene.terrains.size())
-  , DenseHorizons(scene.terrains.size())
 {
 }
 
@@ -25,24 +26,22 @@ const Visibility& SceneGeometry::hierarchyRays() const
   return this->Rays->farRays();
 }
 
-const HorizonMap& SceneGeometry::horizons(std::size_t index, bool dense, const WorkSplit* split)
+const HorizonMap& SceneGeometry::horizons(std::size_t index, HorizonMap::Density density, const WorkSplit* split)
 {
   const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
-  auto build = [&](bool denseMap) {
-    // A window with its far terrain given sees that terrain beyond the detail distance.
-    if (this->GivenFar.grid && this->Far.detailDistance > 0.0)
-      return std::make_unique<HorizonMap>(*this->Terrains[index], this->GivenFar, this->Far.detailDistance, denseMap);
-    return std::make_unique<HorizonMap>(*this->Terrains[index], denseMap, split);
-  };
-  if (dense || this->DenseHorizons[index])
-  {
-    if (!this->DenseHorizons[index])
-      this->DenseHorizons[index] = build(true);
-    return *this->DenseHorizons[index];
-  }
-  if (!this->Horizons[index])
-    this->Horizons[index] = build(false);
-  return *this->Horizons[index];
+  const HorizonMap::Density densities[3] = { HorizonMap::Density::Coarse, HorizonMap::Density::Standard,
+    HorizonMap::Density::Dense };
+  std::array<std::unique_ptr<HorizonMap>, 3>& maps = this->Horizons[index];
+  const int asked = static_cast<int>(std::find(densities, densities + 3, density) - densities);
+  for (int k = 2; k >= asked; --k)
+    if (maps[k])
+      return *maps[k];
+  // A window with its far terrain given sees that terrain beyond the detail distance.
+  if (this->GivenFar.grid && this->Far.detailDistance > 0.0)
+    maps[asked] = std::make_unique<HorizonMap>(*this->Terrains[index], this->GivenFar, this->Far.detailDistance, density);
+  else
+    maps[asked] = std::make_unique<HorizonMap>(*this->Terrains[index], density, split);
+  return *maps[asked];
 }
 
 bool SceneGeometry::sameShape(const RadiosityScene& scene, const FarSight& far) const

@@ -5,16 +5,17 @@
 // sun re-solves over the same SceneGeometry without rebuilding either (on the 1025^2
 // fractal DEM the horizons alone take a fifth of an instant's time).
 
+#include "horizons/horizon_map.h"
 #include "terrain/far_terrain.h"
 #include "hierarchy/radiosity_types.h"
 
+#include <array>
 #include <memory>
 #include <mutex>
 #include <vector>
 
 namespace terralux
 {
-class HorizonMap;
 class WorkSplit;
 class TerrainGrid;
 class Visibility;
@@ -39,11 +40,12 @@ public:
   const Visibility& hierarchyRays() const;
 
   /// The horizons of the posts of terrain `index` (a height field alone in its scene),
-  /// built on the first call (64 bytes a post) and kept; `dense`: toward 64 azimuths
-  /// (128 bytes a post). A dense map, once built, also serves where 32 azimuths are
-  /// asked for (it proves more).
+  /// built on the first call toward `density`'s azimuths (2 bytes a post and azimuth)
+  /// and kept. A map of more azimuths, once built, also serves where fewer are asked
+  /// for (it is more exact and proves more).
   /// `split`: the processes that build it together (HorizonMap), all calling this alike.
-  const HorizonMap& horizons(std::size_t index, bool dense = false, const WorkSplit* split = nullptr);
+  const HorizonMap& horizons(
+    std::size_t index, HorizonMap::Density density = HorizonMap::Density::Standard, const WorkSplit* split = nullptr);
 
   /// Whether `scene` has this one's shape: the same polygons over the same points and
   /// terrains with the same posts and valid cells (materials may differ), seen from
@@ -57,7 +59,8 @@ private:
   FarSight Far;
   GivenFarTerrain GivenFar; // its grid, like Terrains, outlives this
   std::unique_ptr<Visibility> Rays;
-  std::vector<std::unique_ptr<HorizonMap>> Horizons, DenseHorizons; // per terrain, built on demand
+  // Per terrain, coarse, standard and dense, built on demand.
+  std::vector<std::array<std::unique_ptr<HorizonMap>, 3>> Horizons;
   std::mutex HorizonsMutex;
 };
 } // namespace terralux

@@ -47,20 +47,32 @@ TEST(HorizonMap, AzimuthsAreEvenlySpreadAndWallsSeenAtTheirTangent)
   EXPECT_FALSE(map.find(Vec3(-500.0, 0.0, 0.0)));
 }
 
-TEST(HorizonMap, DenseAzimuthsLieBetweenTheStandardOnes)
+TEST(HorizonMap, CoarseAndDenseAzimuthsKeepTheStandardOnesOrder)
 {
+  // Dense azimuths lie between the standard ones, coarse ones are every other standard
+  // one, evenly apart either way.
   const auto grid = makeGrid(9, 9, 10.0, [](double, double) { return 0.0; });
-  const HorizonMap standard(*grid), dense(*grid, true);
+  const HorizonMap standard(*grid), dense(*grid, HorizonMap::Density::Dense),
+    coarse(*grid, HorizonMap::Density::Coarse);
   ASSERT_EQ(dense.azimuthCount(), 64);
-  const std::vector<double>& a = dense.azimuths();
-  for (std::size_t k = 0; k < a.size(); ++k)
-  {
-    const double next = k + 1 < a.size() ? a[k + 1] : a[0] + 2.0 * pi;
-    EXPECT_GT(next - a[k], 3.0 * degree);
-    EXPECT_LT(next - a[k], 8.2 * degree);
-  }
+  ASSERT_EQ(coarse.azimuthCount(), 16);
+  auto checkGaps = [](const std::vector<double>& a, double least, double most) {
+    for (std::size_t k = 0; k < a.size(); ++k)
+    {
+      const double next = k + 1 < a.size() ? a[k + 1] : a[0] + 2.0 * pi;
+      EXPECT_GT(next - a[k], least * degree);
+      EXPECT_LT(next - a[k], most * degree);
+    }
+  };
+  checkGaps(dense.azimuths(), 3.0, 8.2);
+  checkGaps(coarse.azimuths(), 21.7, 23.3);
+  auto contains = [](const std::vector<double>& a, double azimuth) {
+    return std::find_if(a.begin(), a.end(), [&](double b) { return std::abs(b - azimuth) < 1e-12; }) != a.end();
+  };
   for (const double azimuth : standard.azimuths())
-    EXPECT_NE(std::find_if(a.begin(), a.end(), [&](double b) { return std::abs(b - azimuth) < 1e-12; }), a.end());
+    EXPECT_TRUE(contains(dense.azimuths(), azimuth));
+  for (const double azimuth : coarse.azimuths())
+    EXPECT_TRUE(contains(standard.azimuths(), azimuth));
 }
 
 TEST(HorizonMap, BearingsWrapAround)

@@ -1,4 +1,4 @@
-// The horizon map at 32 and at 64 azimuths (horizon_map.h): what its proofs say of
+// The horizon map at 16, 32 and 64 azimuths (horizon_map.h): what its proofs say of
 // the sun, against Embree's rays.
 
 #include "horizons/horizon_map.h"
@@ -26,17 +26,17 @@ double rough(double x, double y)
 }
 
 // For `height` on a grid of 129^2 posts `spacing` apart, the proofs at every 4th post.
-Proven checkProvenOpen(const std::function<double(double, double)>& height, double spacing, bool dense)
+Proven checkProvenOpen(const std::function<double(double, double)>& height, double spacing, HorizonMap::Density density)
 {
   const auto grid = makeGrid(129, 129, spacing, height);
   EXPECT_TRUE(grid->facesUp());
-  const HorizonMap map(*grid, dense);
+  const HorizonMap map(*grid, density);
   const Visibility rays(sceneOf({ grid.get() }));
   return checkProofs(map, rays, *grid, 0, 128, 0, 128, 4);
 }
 } // namespace
 
-class HorizonMapDensity : public ::testing::TestWithParam<bool>
+class HorizonMapDensity : public ::testing::TestWithParam<HorizonMap::Density>
 {
 };
 
@@ -45,7 +45,7 @@ TEST_P(HorizonMapDensity, AgreesWithRaysOnRoughTerrain)
   const auto grid = makeGrid(129, 129, 10.0, rough);
   ASSERT_TRUE(grid->facesUp());
   const HorizonMap map(*grid, GetParam());
-  EXPECT_EQ(map.azimuthCount(), GetParam() ? 64 : 32);
+  EXPECT_EQ(map.azimuthCount(), static_cast<int>(GetParam()));
   const Visibility rays(sceneOf({ grid.get() }));
   // The rays start lifted by the visibility's offset (1.8 cm here): 0.1 deg seen from
   // the next post 10 m away, more from a diagonal's crossing nearer.
@@ -116,4 +116,5 @@ TEST_P(HorizonMapDensity, WhatItProvesOpenOrHiddenRaysFindSo)
   EXPECT_GT(share.shadowed, 0.3) << "share " << share.shadowed;
 }
 
-INSTANTIATE_TEST_SUITE_P(StandardAndDense, HorizonMapDensity, ::testing::Values(false, true));
+INSTANTIATE_TEST_SUITE_P(CoarseStandardAndDense, HorizonMapDensity,
+  ::testing::Values(HorizonMap::Density::Coarse, HorizonMap::Density::Standard, HorizonMap::Density::Dense));

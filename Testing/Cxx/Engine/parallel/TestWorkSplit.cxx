@@ -184,9 +184,10 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
   const Visibility rays(sceneOf({ grid.get() }));
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(50.0 * degree, 2.0)), 100.0, 5);
   const OpenSky open(sky);
-  for (const bool dense : { false, true })
+  for (const HorizonMap::Density density :
+    { HorizonMap::Density::Coarse, HorizonMap::Density::Standard, HorizonMap::Density::Dense })
   {
-    const HorizonMap alone(*grid, dense);
+    const HorizonMap alone(*grid, density);
     const HorizonSky aloneSky(rays, open, &alone);
     const PostSky aloneSkies(*grid, aloneSky, open, true);
     const std::vector<HorizonMap::Sight> suns{ alone.sight(2.0, 15.0 * degree), alone.sight(-0.7, 30.0 * degree) };
@@ -196,7 +197,7 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
     {
       ThreadRanks ranks(parts, grid->postsY(), pointToPoint);
       ranks.run([&](const ThreadRanks::Split& split) {
-        const HorizonMap map(*grid, dense, &split);
+        const HorizonMap map(*grid, density, &split);
         const int sweeps = split.Shares;
         // Every azimuth broadcast once, from its owner; or each window's sweeps handed
         // on along the lines, azimuth by azimuth, to the band behind.
@@ -231,7 +232,7 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
             differences += sunlight.at(i, j).seen != aloneSunlight.at(i, j).seen;
             differences += sunlight.at(i, j).hidden != aloneSunlight.at(i, j).hidden;
           }
-        EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts << (dense ? ", dense" : "");
+        EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts << ", " << static_cast<int>(density) << " azimuths";
       });
     }
   }
@@ -264,7 +265,7 @@ TEST(WorkSplit, ProcessesHoldThePostsWithinTheDetailDistanceOfTheirWindowsOnly)
   const std::vector<HorizonMap::Sight> suns{ alone.sight(2.0, 15.0 * degree) };
   const PostSunlight aloneSunlight(grid, alone, suns);
   runOnBandsAndBlocks(nx, ny, [&](const ThreadRanks::Split& split, bool pointToPoint, std::size_t parts) {
-    const HorizonMap map(grid, false, &split);
+    const HorizonMap map(grid, HorizonMap::Density::Standard, &split);
     const HorizonSky mapped(rays, open, &map);
     const PostSky skies(grid, mapped, open, true, &split, halo);
     const PostSunlight sunlight(grid, map, suns, &split, halo);
@@ -396,14 +397,15 @@ TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
     { { 0, 39, 0, 19 }, { 40, 64, 0, 39 }, { 25, 64, 40, 64 }, { 0, 24, 20, 64 }, { 25, 39, 20, 39 } },
     { { 0, 64, 0, 64 }, { 0, -1, 0, -1 } },
   };
-  for (const bool dense : { false, true })
+  for (const HorizonMap::Density density :
+    { HorizonMap::Density::Coarse, HorizonMap::Density::Standard, HorizonMap::Density::Dense })
   {
-    const HorizonMap alone(grid, dense);
+    const HorizonMap alone(grid, density);
     for (std::size_t cut = 0; cut < cuts.size(); ++cut)
     {
       ThreadRanks ranks(cuts[cut]);
       ranks.run([&](const ThreadRanks::Split& split) {
-        const HorizonMap map(grid, dense, &split);
+        const HorizonMap map(grid, density, &split);
         const Window own = split.window(split.part()).clampedTo(n, n);
         int differences = 0, held = 0;
         for (int j = 0; j < n; ++j)
@@ -417,7 +419,7 @@ TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
             for (int a = 0; a < map.azimuthCount(); ++a)
               differences += map.elevation(post, a) != alone.elevation(post, a);
           }
-        EXPECT_EQ(differences, 0) << "cut " << cut << ", part " << split.part() << (dense ? ", dense" : "");
+        EXPECT_EQ(differences, 0) << "cut " << cut << ", part " << split.part() << ", " << static_cast<int>(density) << " azimuths";
         EXPECT_EQ(held, own.empty() ? 0 : (own.i1 - own.i0 + 1) * (own.j1 - own.j0 + 1));
         // Blocks hand hulls on, and broadcast nothing.
         if (cut < 2)

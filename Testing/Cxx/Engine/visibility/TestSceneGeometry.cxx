@@ -33,12 +33,14 @@ struct Solved
 };
 
 // Sun from `azimuth` and a CIE clear sky; every 5th post evaluated as the filter does.
-Solved solve(const TerrainGrid& grid, double azimuth, std::shared_ptr<SceneGeometry> geometry)
+Solved solve(const TerrainGrid& grid, double azimuth, std::shared_ptr<SceneGeometry> geometry,
+  double targetError = RadiosityOptions{}.targetError)
 {
   static const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(50.0 * degree, 2.0)), 120.0, 6);
   RadiosityOptions options;
   options.errorTolerance = 1e-2;
   options.gatherSamples = 256;
+  options.targetError = targetError;
   Solved result;
   result.solver = std::make_unique<HierarchicalRadiosity>(sceneOf(grid), options, std::move(geometry));
   const Direction sun = directionFromZenithAzimuth(50.0 * degree, azimuth);
@@ -97,4 +99,31 @@ TEST(SceneGeometry, AnotherShapeGetsGeometryOfItsOwn)
   const Solved other = solve(*raised, 1.0, first.solver->geometry());
   EXPECT_NE(other.solver->geometry(), first.solver->geometry());
   EXPECT_GT(other.solver->statistics().secondsVisibilityBuild, 0.0);
+}
+
+TEST(SceneGeometry, TheKnobsCoarseEndMapsHorizonsCoarselyAndAFinerMapOnceBuiltServesIt)
+{
+  // From Tuning::coarseHorizonsTarget the posts' horizons are found toward 16
+  // azimuths; a solve at the default then builds the map of 32, which serves both.
+  const auto grid = hills(0.2);
+  const Solved coarse = solve(*grid, 1.0, nullptr, 0.04);
+  const std::shared_ptr<SceneGeometry> geometry = coarse.solver->geometry();
+  const HorizonMap& coarseMap = geometry->horizons(0, HorizonMap::Density::Coarse);
+  EXPECT_EQ(coarseMap.azimuthCount(), 16);
+  const Solved standard = solve(*grid, 1.0, geometry);
+  EXPECT_EQ(geometry->horizons(0, HorizonMap::Density::Standard).azimuthCount(), 32);
+  EXPECT_EQ(geometry->horizons(0, HorizonMap::Density::Coarse).azimuthCount(), 32);
+  // The sky at posts comes from their horizons alone: the coarse map's differs from
+  // the standard one's, by little.
+  ASSERT_EQ(coarse.posts.size(), standard.posts.size());
+  double largest = 0.0, sum = 0.0;
+  for (std::size_t k = 0; k < standard.posts.size(); ++k)
+  {
+    const double a = coarse.posts[k].irradiance[SkyLight][0], b = standard.posts[k].irradiance[SkyLight][0];
+    largest = std::max(largest, std::abs(a - b) / b);
+    sum += b;
+  }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(largest, 0.04); // 2.3 %; the report holds it against the reference
+  EXPECT_GT(sum, 0.0);
 }
