@@ -62,7 +62,7 @@ vtkRadiosityFilter::vtkRadiosityFilter(int inputPorts, int farTerrainPort)
   , VisibilitySamples(4)
   , MaximumGatherRays(4096)
   , TargetError(0.008)
-  , TargetErrorFloor(2.0)
+  , TargetErrorFloor(-1.0)
   , DetailDistance(0.0)
   , FarTerrainStride(1)
   , MaximumIterations(30)
@@ -316,6 +316,12 @@ int vtkRadiosityFilter::RequestData(
 }
 
 //------------------------------------------------------------------------------
+double vtkRadiosityFilter::GetEffectiveTargetErrorFloor()
+{
+  return this->TargetErrorFloor >= 0.0 ? this->TargetErrorFloor : FloorPerTargetError * this->TargetError;
+}
+
+//------------------------------------------------------------------------------
 std::unique_ptr<vtkRadiosityScene> vtkRadiosityFilter::BuildScene(vtkInformationVector** inputVector)
 {
   terralux::requireFiniteParameters({ { "ErrorTolerance", this->ErrorTolerance },
@@ -375,6 +381,7 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumGatherRays: " << this->MaximumGatherRays << "\n";
   os << indent << "TargetError: " << this->TargetError << "\n";
   os << indent << "TargetErrorFloor: " << this->TargetErrorFloor << "\n";
+  os << indent << "EffectiveTargetErrorFloor: " << this->GetEffectiveTargetErrorFloor() << "\n";
   os << indent << "DetailDistance: " << this->DetailDistance << "\n";
   os << indent << "FarTerrainStride: " << this->FarTerrainStride << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";

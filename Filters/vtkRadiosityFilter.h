@@ -85,19 +85,29 @@ public:
   /**
    * Set/Get the error each point's value aims at, with EvaluateAtPoints on: its
    * IrradianceError (an estimate that holds the true error at about 95 % of points)
-   * within TargetError x the point's global irradiance, or TargetErrorFloor (W/m^2)
-   * where that is more. Gather rays, and reads between the posts a terrain gathers
+   * within TargetError x the point's global irradiance, or a floor in W/m^2 where
+   * that is more: TargetErrorFloor, or where it is negative (the default, -1)
+   * FloorPerTargetError x TargetError, so that TargetError alone moves both (2 W/m^2 at
+   * the default, 10 at 0.04). Gather rays, and reads between the posts a terrain gathers
    * first, go where a point's estimate is not yet within it. The speed-accuracy knob:
    * 0.008 (the default) gives 0.2-0.7 % global RMS on the validation's scenes, 0.04
    * (the command's --fast) 2-3 times faster at most 2 % (docs/validation.md). From
    * 0.03 up, a terrain's horizons are found toward 16 azimuths instead of 32 (see
    * SkyFromHorizons): half their time, the sky between azimuths less exact.
-   * Defaults are 0.008 and 2 W/m^2.
+   * Defaults are 0.008 and -1 (the floor follows TargetError).
    */
   vtkSetClampMacro(TargetError, double, 1e-6, 1.0);
   vtkGetMacro(TargetError, double);
-  vtkSetClampMacro(TargetErrorFloor, double, 0.0, 1e6);
+  vtkSetClampMacro(TargetErrorFloor, double, -1.0, 1e6);
   vtkGetMacro(TargetErrorFloor, double);
+  /// The floor a point's aim takes (W/m^2): TargetErrorFloor, or where that is
+  /// negative FloorPerTargetError x TargetError.
+  double GetEffectiveTargetErrorFloor();
+  /// W/m^2 of floor per unit of TargetError where the floor follows it: shaded posts
+  /// (a global of about 100 W/m^2 under a low sun) aim at the same 2 % of what they
+  /// receive at TargetError 0.008 and at 10 % at 0.04, so that the knob's coarse end
+  /// saves their rays too (docs/tuning.md).
+  static constexpr double FloorPerTargetError = 250.0;
   ///@}
 
   ///@{

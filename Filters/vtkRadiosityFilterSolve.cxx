@@ -169,7 +169,7 @@ terralux::HierarchicalRadiosity& vtkRadiosityFilter::PrepareSolver(std::unique_p
   options.visibilitySamples = this->VisibilitySamples;
   options.gatherSamples = this->MaximumGatherRays;
   options.targetError = this->TargetError;
-  options.targetErrorFloor = this->TargetErrorFloor;
+  options.targetErrorFloor = this->GetEffectiveTargetErrorFloor();
   options.gatherDetailDistance = this->DetailDistance;
   options.farTerrainStride = this->FarTerrainStride;
   options.skyFromHorizons = this->SkyFromHorizons != 0;

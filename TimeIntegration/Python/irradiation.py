@@ -64,8 +64,9 @@ def parse_arguments(argv):
                            "times what it receives (default 0.008, about 0.4 %% RMS); larger is faster")
     knob.add_argument("--fast", dest="target_error", action="store_const", const=FAST_TARGET_ERROR,
                       help="the knob's coarse end: --target-error " + str(FAST_TARGET_ERROR) + " (about 2 %% RMS)")
-    parser.add_argument("--target-floor", type=float, default=2.0, metavar="W",
-                        help="W/m^2: the error a post aims at where E of what it receives is less (default 2)")
+    parser.add_argument("--target-floor", type=float, default=None, metavar="W",
+                        help="W/m^2: the error a post aims at where E of what it receives is less (default "
+                             "250 E: 2 at the default E, 10 with --fast)")
     parser.add_argument("--kwh", action="store_true", help="write kWh/m^2 instead of Wh/m^2")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--mpi", action="store_true",
@@ -213,7 +214,7 @@ def run(args):
         raise InputError("--detail-distance %g is not a distance in metres (>= 0; 0: none)" % args.detail_distance)
     if not 1e-6 <= args.target_error <= 1.0:
         raise InputError("--target-error %g is not a fraction of what a post receives (1e-6..1)" % args.target_error)
-    if not 0.0 <= args.target_floor < float("inf"):
+    if args.target_floor is not None and not 0.0 <= args.target_floor < float("inf"):
         raise InputError("--target-floor %g is not an irradiance in W/m^2 (>= 0)" % args.target_floor)
     if args.far_stride < 1:
         raise InputError("--far-stride %d is not a stride of posts (>= 1; 1: none)" % args.far_stride)
@@ -235,7 +236,8 @@ def run(args):
     if far:
         irradiation.SetFarTerrainConnection(terrain.GetOutputPort(1))
     irradiation.SetTargetError(args.target_error)
-    irradiation.SetTargetErrorFloor(args.target_floor)
+    if args.target_floor is not None:
+        irradiation.SetTargetErrorFloor(args.target_floor)
     irradiation.SetPostNormalsToHorn()  # as r.slope.aspect and gdaldem
     if args.weather:
         if not os.path.isfile(args.weather):

@@ -300,6 +300,30 @@ TEST_P(TargetErrorKnob, TradesRaysForAccuracyAsTheEstimateSays)
   EXPECT_GE(previousMet, 0.9 * static_cast<double>(posts * posts));
 }
 
+// Left at its default, the floor in W/m^2 follows TargetError (2 at 0.008): the
+// coarse end saves the shaded posts' rays too; set, it stays what the user set.
+TEST_P(TargetErrorKnob, TheFloorFollowsTheKnobUnlessSet)
+{
+  auto terrain = Terrain();
+  auto following = Lit(terrain);
+  EXPECT_EQ(following->GetTargetErrorFloor(), -1.0);
+  EXPECT_DOUBLE_EQ(following->GetEffectiveTargetErrorFloor(), 2.0);
+  following->SetTargetError(0.064);
+  EXPECT_DOUBLE_EQ(following->GetEffectiveTargetErrorFloor(), 16.0);
+  std::vector<double> errors;
+  const std::vector<double> coarse = Solve(following, 1, &errors);
+  auto set = Lit(terrain);
+  set->SetTargetError(0.064);
+  set->SetTargetErrorFloor(2.0);
+  EXPECT_DOUBLE_EQ(set->GetEffectiveTargetErrorFloor(), 2.0);
+  const std::vector<double> atTwo = Solve(set, 1, &errors);
+  auto raysOf = [](vtkRadiosityFilter* filter) {
+    return filter->GetOutput()->GetFieldData()->GetArray("RaysPerPoint")->GetTuple1(0);
+  };
+  EXPECT_LT(raysOf(following), raysOf(set));
+  ASSERT_EQ(coarse.size(), atTwo.size());
+}
+
 INSTANTIATE_TEST_SUITE_P(AtPoints, TargetErrorKnob, ::testing::Values(Modes{ true, true, true, false }),
   [](const ::testing::TestParamInfo<Modes>& info) { return nameOf(info.param); });
 } // namespace
