@@ -229,8 +229,8 @@ public:
   /**
    * Set/Get whether, in a scene that is a height field (terrains whose cells all face
    * up, no polygons), the sky each point does not see comes from its horizon toward 32
-   * azimuths (16 where TargetError is 0.03 or more), interpolated between them, the sky below it integrated exactly over the
-   * sky's cells (as r.horizon and HORAYZON work). With one terrain, the horizons of all
+   * azimuths (16 where TargetError is 0.03 or more), interpolated between them, the sky
+   * below it integrated exactly over the sky's cells (as r.horizon and HORAYZON work). With one terrain, the horizons of all
    * its posts are found at once by sweeping lines of posts (exact on its triangles);
    * elsewhere each is bisected with occlusion rays to 0.2 % of its sector's sky.
    * The gather's rays then gather only the light of surfaces, and the sky has no

@@ -159,12 +159,15 @@ void PointEvaluator::findPostHorizons(bool hornNormals)
   // Beyond the map's memory the posts keep the rays' horizons, slower but within the
   // memory the rest of the solve needs. A window's map sees its far terrain beyond the
   // detail distance, as its rays do.
-  if (!this->Horizons || !this->HeightFieldGrid || !HorizonMap::fits(*this->HeightFieldGrid, this->horizonDensity()))
+  if (!this->Horizons || !this->HeightFieldGrid)
+    return;
+  const HorizonMap::Density density = this->horizonDensity();
+  if (!HorizonMap::fits(*this->HeightFieldGrid, density))
     return;
   const auto start = std::chrono::steady_clock::now();
   // The one terrain's horizons: built by the first solve over this geometry, reused by
   // the next ones.
-  this->PostHorizons = &this->Solver.geometry()->horizons(0, this->horizonDensity(), this->Split);
+  this->PostHorizons = &this->Solver.geometry()->horizons(0, density, this->Split);
   this->Horizons = std::make_unique<HorizonSky>(this->PointRays, *this->SkyAtPoints, this->PostHorizons);
   // With a split and a detail distance, each process holds the posts' skies and suns
   // within it of its window only.
@@ -190,10 +193,11 @@ void PointEvaluator::findSunHorizons()
   if (!grid || suns.empty())
     return;
   const HorizonMap* map = this->PostHorizons;
-  if (!map && suns.size() >= Tuning::sunsForHorizonMap && HorizonMap::fits(*grid, this->horizonDensity()))
+  const HorizonMap::Density density = this->horizonDensity();
+  if (!map && suns.size() >= Tuning::sunsForHorizonMap && HorizonMap::fits(*grid, density))
   {
     const auto start = std::chrono::steady_clock::now();
-    map = &this->Solver.geometry()->horizons(0, this->horizonDensity(), this->Split);
+    map = &this->Solver.geometry()->horizons(0, density, this->Split);
     this->Stats.horizonsSeconds += secondsSince(start);
   }
   if (!map || !map->complete())

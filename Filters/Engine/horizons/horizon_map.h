@@ -4,8 +4,9 @@
 // each other). Toward an azimuth whose step in the grid is a whole number of posts, g =
 // (q, p) (slopes 0, 1/5, 2/5, 2/3, 1 and their mirrors: azimuths 10.5 to 11.9 deg apart
 // on square cells; coarse, 0, 2/5 and 1; dense, also 1/9, 1/3, 1/2, 3/4: 3.2 to 8.1 deg
-// apart), the posts lie on lines that repeat g, and the terrain along a line is linear between its crossings of cell edges and diagonals,
-// whose pattern is the same on every step. Swept from its far end, a line keeps the
+// apart), the posts lie on lines that repeat g, and the terrain along a line is linear
+// between its crossings of cell edges and diagonals, whose pattern is the same on every
+// step. Swept from its far end, a line keeps the
 // upper convex hull of the crossings ahead; the horizon of each post is its tangent to
 // that hull (Dozier, Bruno & Downey 1981; Stewart 1998 for the sectors): amortised
 // constant work per crossing, a few per post and azimuth, instead of a search per post.
@@ -46,6 +47,8 @@ public:
     Standard = 32,
     Dense = 64
   };
+  /// Every density, fewest azimuths first.
+  static constexpr std::array<Density, 3> densities{ Density::Coarse, Density::Standard, Density::Dense };
   /// A grid whose cells all face up (TerrainGrid::facesUp), alone in its scene; it
   /// must outlive this.
   /// `split`: processes that build the map together (null: this one alone), each

@@ -29,11 +29,10 @@ const Visibility& SceneGeometry::hierarchyRays() const
 const HorizonMap& SceneGeometry::horizons(std::size_t index, HorizonMap::Density density, const WorkSplit* split)
 {
   const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
-  const HorizonMap::Density densities[3] = { HorizonMap::Density::Coarse, HorizonMap::Density::Standard,
-    HorizonMap::Density::Dense };
-  std::array<std::unique_ptr<HorizonMap>, 3>& maps = this->Horizons[index];
-  const int asked = static_cast<int>(std::find(densities, densities + 3, density) - densities);
-  for (int k = 2; k >= asked; --k)
+  const auto& densities = HorizonMap::densities;
+  MapsOfEachDensity& maps = this->Horizons[index];
+  const std::size_t asked = std::find(densities.begin(), densities.end(), density) - densities.begin();
+  for (std::size_t k = densities.size(); k-- > asked;)
     if (maps[k])
       return *maps[k];
   // A window with its far terrain given sees that terrain beyond the detail distance.

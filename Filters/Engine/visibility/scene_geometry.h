@@ -59,8 +59,9 @@ private:
   FarSight Far;
   GivenFarTerrain GivenFar; // its grid, like Terrains, outlives this
   std::unique_ptr<Visibility> Rays;
-  // Per terrain, coarse, standard and dense, built on demand.
-  std::vector<std::array<std::unique_ptr<HorizonMap>, 3>> Horizons;
+  // Per terrain, a map of each of HorizonMap::densities, built on demand.
+  using MapsOfEachDensity = std::array<std::unique_ptr<HorizonMap>, HorizonMap::densities.size()>;
+  std::vector<MapsOfEachDensity> Horizons;
   std::mutex HorizonsMutex;
 };
 } // namespace terralux

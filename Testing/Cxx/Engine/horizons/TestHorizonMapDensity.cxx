@@ -117,4 +117,4 @@ TEST_P(HorizonMapDensity, WhatItProvesOpenOrHiddenRaysFindSo)
 }
 
 INSTANTIATE_TEST_SUITE_P(CoarseStandardAndDense, HorizonMapDensity,
-  ::testing::Values(HorizonMap::Density::Coarse, HorizonMap::Density::Standard, HorizonMap::Density::Dense));
+  ::testing::ValuesIn(HorizonMap::densities));

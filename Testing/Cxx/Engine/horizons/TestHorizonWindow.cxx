@@ -83,8 +83,7 @@ TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
 {
   const auto grid = ridgesAndMountain();
   const FarTerrain far(*grid, stride);
-  for (const HorizonMap::Density density :
-    { HorizonMap::Density::Coarse, HorizonMap::Density::Standard, HorizonMap::Density::Dense })
+  for (const HorizonMap::Density density : HorizonMap::densities)
   {
   SCOPED_TRACE(std::to_string(static_cast<int>(density)) + " azimuths");
   const HorizonMap whole(*grid, GivenFarTerrain{ &far.grid(), stride, 0, 0 }, detail, density);
@@ -120,8 +119,7 @@ TEST(HorizonWindow, WhatAWindowsHorizonsProveRaysFindSo)
   const auto grid = ridgesAndMountain();
   const FarTerrain far(*grid, stride);
   const Window window = windowWithRays(*grid, far, 40, 16, 113, 129);
-  for (const HorizonMap::Density density :
-    { HorizonMap::Density::Coarse, HorizonMap::Density::Standard, HorizonMap::Density::Dense })
+  for (const HorizonMap::Density density : HorizonMap::densities)
   {
     const HorizonMap map(*window.grid, window.given, detail, density);
     const Proven share = checkProofs(map, *window.rays, *window.grid, 15, 97, 15, 113, 4);

@@ -184,8 +184,7 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
   const Visibility rays(sceneOf({ grid.get() }));
   const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(50.0 * degree, 2.0)), 100.0, 5);
   const OpenSky open(sky);
-  for (const HorizonMap::Density density :
-    { HorizonMap::Density::Coarse, HorizonMap::Density::Standard, HorizonMap::Density::Dense })
+  for (const HorizonMap::Density density : HorizonMap::densities)
   {
     const HorizonMap alone(*grid, density);
     const HorizonSky aloneSky(rays, open, &alone);
@@ -397,8 +396,7 @@ TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
     { { 0, 39, 0, 19 }, { 40, 64, 0, 39 }, { 25, 64, 40, 64 }, { 0, 24, 20, 64 }, { 25, 39, 20, 39 } },
     { { 0, 64, 0, 64 }, { 0, -1, 0, -1 } },
   };
-  for (const HorizonMap::Density density :
-    { HorizonMap::Density::Coarse, HorizonMap::Density::Standard, HorizonMap::Density::Dense })
+  for (const HorizonMap::Density density : HorizonMap::densities)
   {
     const HorizonMap alone(grid, density);
     for (std::size_t cut = 0; cut < cuts.size(); ++cut)
