@@ -145,6 +145,7 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
   addValue("SecondsGather", stats.secondsGather);
   addValue("SecondsPushPull", stats.secondsPushPull);
   addValue("SecondsHorizons", evaluation.horizonsSeconds);
+  addValue("HorizonAzimuths", evaluation.horizonAzimuths);
   addValue("SecondsPoints", pointsSeconds); // the lattice's gathers included
   addValue("SecondsLattice", evaluation.latticeSeconds);
   addValue("RaysRefine", static_cast<double>(stats.raysRefine));

@@ -140,13 +140,15 @@ int main(int argc, char* argv[])
               << relative[static_cast<std::size_t>(0.95 * (relative.size() - 1))];
   }
   std::cout << std::endl;
-  // Every phase's seconds and rays, as the output's field data keeps them (on standard error:
-  // scripts read the line above as the run's figures).
+  // Every phase's seconds and rays, and the horizon map's azimuths, as the output's
+  // field data keeps them (on standard error: scripts read the line above as the run's
+  // figures).
   std::cerr << "phases:";
   vtkFieldData* fields = output->GetFieldData();
   for (int a = 0; a < fields->GetNumberOfArrays(); ++a)
     if (const char* name = fields->GetArrayName(a);
-        name && (std::strncmp(name, "Seconds", 7) == 0 || std::strncmp(name, "Rays", 4) == 0))
+        name && (std::strncmp(name, "Seconds", 7) == 0 || std::strncmp(name, "Rays", 4) == 0 ||
+                  std::strcmp(name, "HorizonAzimuths") == 0))
       std::cerr << " " << name << " " << fields->GetArray(a)->GetComponent(0, 0);
   std::cerr << "\n";
   return 0;

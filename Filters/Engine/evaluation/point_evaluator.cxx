@@ -154,78 +154,6 @@ std::unique_ptr<FinalGather> PointEvaluator::makeGather() const
   return std::make_unique<FinalGather>(inputs);
 }
 
-void PointEvaluator::findPostHorizons(bool hornNormals)
-{
-  // Beyond the map's memory the posts keep the rays' horizons, slower but within the
-  // memory the rest of the solve needs. A window's map sees its far terrain beyond the
-  // detail distance, as its rays do.
-  if (!this->Horizons || !this->HeightFieldGrid)
-    return;
-  const HorizonMap::Density density = this->horizonDensity();
-  if (!HorizonMap::fits(*this->HeightFieldGrid, density))
-    return;
-  const auto start = std::chrono::steady_clock::now();
-  // The one terrain's horizons: built by the first solve over this geometry, reused by
-  // the next ones.
-  this->PostHorizons = &this->Solver.geometry()->horizons(0, density, this->Split);
-  this->Horizons = std::make_unique<HorizonSky>(this->PointRays, *this->SkyAtPoints, this->PostHorizons);
-  // With a split and a detail distance, each process holds the posts' skies and suns
-  // within it of its window only.
-  this->PostsHalo = this->Split ? HeldPosts::haloFor(*this->HeightFieldGrid, this->Options.gatherDetailDistance) : -1;
-  this->PostSkies = std::make_unique<PostSky>(
-    *this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals, this->Split, this->PostsHalo);
-  this->Stats.horizonsSeconds += secondsSince(start);
-}
-
-HorizonMap::Density PointEvaluator::horizonDensity() const
-{
-  if (this->Solver.suns().size() >= Tuning::sunsForDenseHorizons &&
-    HorizonMap::fits(*this->HeightFieldGrid, HorizonMap::Density::Dense))
-    return HorizonMap::Density::Dense;
-  return this->Options.targetError >= Tuning::coarseHorizonsTarget ? HorizonMap::Density::Coarse
-                                                                    : HorizonMap::Density::Standard;
-}
-
-void PointEvaluator::findSunHorizons()
-{
-  const TerrainGrid* grid = this->HeightFieldGrid;
-  const std::vector<HElement*>& suns = this->Solver.suns();
-  if (!grid || suns.empty())
-    return;
-  const HorizonMap* map = this->PostHorizons;
-  const HorizonMap::Density density = this->horizonDensity();
-  if (!map && suns.size() >= Tuning::sunsForHorizonMap && HorizonMap::fits(*grid, density))
-  {
-    const auto start = std::chrono::steady_clock::now();
-    map = &this->Solver.geometry()->horizons(0, density, this->Split);
-    this->Stats.horizonsSeconds += secondsSince(start);
-  }
-  if (!map || !map->complete())
-    return;
-  for (HElement* sun : suns)
-  {
-    const ExternalSource& source = *sun->asExternal();
-    const Vec3& d = source.direction();
-    this->MappedSuns.push_back({ map->sight(std::atan2(d.y, d.x), std::asin(std::max(-1.0, std::min(1.0, d.z)))), d,
-      sun->emittance(), source.duration() });
-  }
-  this->SunHorizons = map;
-  // Gather hits on the terrain read the suns its posts prove (where each hit takes
-  // every sun, the hierarchy's suns being the points' own, all parallel).
-  const bool everySunParallel =
-    std::all_of(suns.begin(), suns.end(), [](const HElement* sun) { return sun->asExternal()->parallel(); });
-  if (this->PostSkies && map == this->PostHorizons && this->Solver.hierarchySuns() == suns && everySunParallel &&
-    suns.size() <= std::min(PostSunlight::maximumSuns, FinalGather::maximumSunsPerHit))
-  {
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<HorizonMap::Sight> sights;
-    for (const MappedSun& sun : this->MappedSuns)
-      sights.push_back(sun.sight);
-    this->PostSuns = std::make_unique<PostSunlight>(*grid, *map, sights, this->Split, this->PostsHalo);
-    this->Stats.horizonsSeconds += secondsSince(start);
-  }
-}
-
 PointIrradiance PointEvaluator::irradianceAt(const PolygonElement& leaf, const Vec3& point) const
 {
   return this->irradianceAt(leaf, point, leaf.normal());
@@ -382,20 +310,6 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   result.irradianceError = spread + readRelativeError * largestBand(result.irradiance[ReflectedLight]) +
     this->skyError(normal, sky.irradiance, false);
   return true;
-}
-
-double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, bool byRays) const
-{
-  const double own = Tuning::openSkyError * largestBand(sky);
-  if (byRays || !this->SkyAtPoints)
-    return own;
-  Spectrum open{};
-  double projectedSolidAngle = 0.0;
-  this->SkyAtPoints->irradiance(normal, open, projectedSolidAngle);
-  const bool coarse = this->PostHorizons &&
-    this->PostHorizons->azimuthCount() <= static_cast<int>(HorizonMap::Density::Coarse);
-  const double share = coarse ? Tuning::coarseHorizonSkyError : Tuning::horizonSkyError;
-  return own + share * std::max(0.0, largestBand(open) - largestBand(sky));
 }
 
 std::uint64_t PointEvaluator::gatherSeedOf(const Vec3& point) const

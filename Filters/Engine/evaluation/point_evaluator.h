@@ -40,6 +40,7 @@ struct EvaluationPlan
 struct EvaluationStatistics
 {
   double horizonsSeconds = 0.0; ///< the posts' horizons (HorizonMap), skies and sun proofs
+  int horizonAzimuths = 0;      ///< the azimuths of the map the posts' skies came from (0: none)
   double latticeSeconds = 0.0;  ///< the lattice of posts gathered first
   std::uint64_t latticeRays = 0;
 };
@@ -119,8 +120,15 @@ private:
   /// sky, or surfaces that send light).
   bool gathersAtPoints() const;
   /// The horizon map's azimuths: dense for many suns, coarse at the speed knob's coarse
-  /// end (Tuning::coarseHorizonsTarget), else standard.
+  /// end (Tuning::coarseHorizonsTarget), else standard (which findPostHorizons narrows
+  /// to coarse where that serves every post: coarseSkyServes).
   HorizonMap::Density horizonDensity() const;
+  /// PostHorizons toward `density` (the geometry's map) and Horizons over it.
+  void takeHorizons(HorizonMap::Density density);
+  /// Whether the sky from a coarse PostHorizons errs, by skyError, within the target of
+  /// every post of the grid's lattice of `stride` posts (1: every post), its sky at
+  /// least what it receives; with a split, at every process's.
+  bool coarseSkyServes(bool hornNormals, int stride) const;
   /// The error estimate's part for the sky a point receives: the open sky's own error
   /// (Tuning::openSkyError) and, where the sky comes from a post's horizons rather than
   /// from rays (`byRays`), a share of the sky they hide from the plane at `normal`

@@ -148,6 +148,8 @@ void HorizonMap::sweepWindows(const std::vector<std::array<int, 2>>& slotSteps, 
   std::iota(schedule.begin(), schedule.end(), std::size_t{ 0 });
   std::stable_sort(schedule.begin(), schedule.end(),
     [&](std::size_t a, std::size_t b) { return depth[a][me] < depth[b][me]; });
+  schedule.erase(std::remove_if(schedule.begin(), schedule.end(), [&](std::size_t slot) { return this->copied(slot); }),
+    schedule.end());
 
   const Window& own = windows[me];
   // The windows that hold posts of this one before it: a post they hold is theirs to
@@ -307,17 +309,20 @@ void HorizonMap::sweepSharedAzimuths(const std::vector<std::array<int, 2>>& slot
   }
   std::stable_sort(
     schedule.begin(), schedule.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
+  schedule.erase(std::remove_if(schedule.begin(), schedule.end(), [&](std::size_t slot) { return this->copied(slot); }),
+    schedule.end());
+  const std::size_t rounds = schedule.size();
   const int parts = split.parts(), part = split.part();
-  for (std::size_t first = 0; first < slots; first += static_cast<std::size_t>(parts))
+  for (std::size_t first = 0; first < rounds; first += static_cast<std::size_t>(parts))
     WorkSplit::partThenShare(
       &split,
       [&]() {
         const std::size_t round = first + static_cast<std::size_t>(part);
-        if (round < slots)
+        if (round < rounds)
           this->sweepWholeGrid(slotSteps[schedule[round]][0], slotSteps[schedule[round]][1], swept.data());
       },
       [&]() {
-        for (int owner = 0; owner < parts && first + static_cast<std::size_t>(owner) < slots; ++owner)
+        for (int owner = 0; owner < parts && first + static_cast<std::size_t>(owner) < rounds; ++owner)
         {
           const std::size_t slot = schedule[first + static_cast<std::size_t>(owner)];
           std::vector<std::uint16_t>& whole = owner == part ? swept : received;

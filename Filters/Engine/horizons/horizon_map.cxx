@@ -1,6 +1,7 @@
 #include "horizons/horizon_map.h"
 
 #include "base/angles.h"
+#include "base/error.h"
 #include "horizons/horizon_lines.h"
 #include "terrain/terrain_grid.h"
 #include "parallel/work_split.h"
@@ -72,7 +73,7 @@ struct HorizonMap::HullStack
   void copyTo(Hull& hull) const { hull.assign(this->storage.begin(), this->storage.begin() + this->size); }
 };
 
-HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSplit* split)
+HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSplit* split, const HorizonMap* coarser)
   : Terrain(terrain)
 {
   this->fitMeanMap(terrain);
@@ -81,16 +82,45 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSp
   const std::vector<std::array<int, 2>> slotSteps = this->placeAzimuths(density);
   this->Held = WorkSplit::ownWindow(split, terrain.postsX(), terrain.postsY());
   this->holdPosts();
+  this->findCopiedSlots(coarser);
   if (!split)
   {
     this->Elevations.resize(this->HeldCount * slotSteps.size());
     for (std::size_t slot = 0; slot < slotSteps.size(); ++slot)
-      this->sweepWholeGrid(slotSteps[slot][0], slotSteps[slot][1], &this->Elevations[slot * this->PostCount]);
+      if (!this->copied(slot))
+        this->sweepWholeGrid(slotSteps[slot][0], slotSteps[slot][1], &this->Elevations[slot * this->PostCount]);
   }
   else if (split->sendsPointToPoint())
     this->sweepWindows(slotSteps, *split);
   else
     this->sweepSharedAzimuths(slotSteps, *split);
+  this->copyFromCoarser(coarser);
+}
+
+void HorizonMap::findCopiedSlots(const HorizonMap* coarser)
+{
+  if (!coarser)
+    return;
+  // Only from a map of the same posts: the same terrain, mean map and held window.
+  if (&coarser->Terrain != &this->Terrain || coarser->Held.i0 != this->Held.i0 || coarser->Held.i1 != this->Held.i1 ||
+    coarser->Held.j0 != this->Held.j0 || coarser->Held.j1 != this->Held.j1)
+    throw Error("HorizonMap: a coarser map copied from must hold the same posts of the same terrain");
+  this->Copied.assign(this->SlotSteps.size(), false);
+  this->CoarserSlot.assign(this->SlotSteps.size(), 0);
+  for (std::size_t slot = 0; slot < this->SlotSteps.size(); ++slot)
+  {
+    const auto found = std::find(coarser->SlotSteps.begin(), coarser->SlotSteps.end(), this->SlotSteps[slot]);
+    if (found != coarser->SlotSteps.end())
+      this->Copied[slot] = true, this->CoarserSlot[slot] = static_cast<std::size_t>(found - coarser->SlotSteps.begin());
+  }
+}
+
+void HorizonMap::copyFromCoarser(const HorizonMap* coarser)
+{
+  for (std::size_t slot = 0; slot < this->Copied.size(); ++slot)
+    if (this->Copied[slot])
+      std::copy_n(&coarser->Elevations[this->CoarserSlot[slot] * coarser->HeldCount], this->HeldCount,
+        &this->Elevations[slot * this->HeldCount]);
 }
 
 std::vector<std::array<int, 2>> HorizonMap::placeAzimuths(Density density)
@@ -116,6 +146,7 @@ std::vector<std::array<int, 2>> HorizonMap::placeAzimuths(Density density)
     this->AzimuthDirections.push_back({ x, y });
     slotSteps.push_back(steps[static_cast<std::size_t>(step)]);
   }
+  this->SlotSteps = slotSteps;
   return slotSteps;
 }
 

@@ -57,8 +57,11 @@ public:
   /// the hull it reaches to the window the line enters next (horizon_handoff.cxx);
   /// else each sweeps a share of the azimuths over the whole grid and broadcasts it.
   /// Either way every held horizon is one process's, bit for bit.
-  explicit HorizonMap(
-    const TerrainGrid& terrain, Density density = Density::Standard, const WorkSplit* split = nullptr);
+  /// `coarser`: a map of the same terrain and split with fewer azimuths (or null),
+  /// whose sweeps this one copies instead of sweeping them again (the coarse azimuths
+  /// are every other standard one); the map is the same, bit for bit.
+  explicit HorizonMap(const TerrainGrid& terrain, Density density = Density::Standard,
+    const WorkSplit* split = nullptr, const HorizonMap* coarser = nullptr);
   /// The horizons of a window of a terrain whose far terrain is given (a process's
   /// piece and halo; RadiosityScene::farTerrain), as its rays see them (Visibility):
   /// the window's own triangles within `detailDistance` of the post (horizontally),
@@ -69,7 +72,7 @@ public:
   /// them (posts nearer its edge see it cut short). The azimuths are those of the far
   /// terrain's mean map, the same on every window; proofs bound both surfaces.
   HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance,
-    Density density = Density::Standard);
+    Density density = Density::Standard, const HorizonMap* coarser = nullptr);
   static constexpr int maximumAzimuths = static_cast<int>(Density::Dense);
   int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
   /// Whether the map of `terrain` fits the 2 GiB it may take (2 bytes a post and
@@ -226,6 +229,14 @@ public:
 private:
   /// The map's azimuths from its mean map; the steps of the slots, in order.
   std::vector<std::array<int, 2>> placeAzimuths(Density density);
+  /// The slots whose step `coarser` holds (Copied), which the sweeps skip; then
+  /// copyFromCoarser fills them once the map is sized.
+  void findCopiedSlots(const HorizonMap* coarser);
+  void copyFromCoarser(const HorizonMap* coarser);
+  bool copied(std::size_t slot) const { return !this->Copied.empty() && this->Copied[slot]; }
+  std::vector<std::array<int, 2>> SlotSteps;
+  std::vector<std::size_t> CoarserSlot; // per copied slot, the coarser map's
+  std::vector<bool> Copied;
   /// Sizes the map to the posts of Held.
   void holdPosts();
   void fitMeanMap(const TerrainGrid& grid);

@@ -230,8 +230,8 @@ std::vector<float> maximumWithinBox(std::vector<float> values, int w, int h, int
 }
 } // namespace
 
-HorizonMap::HorizonMap(
-  const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance, Density density)
+HorizonMap::HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance, Density density,
+  const HorizonMap* coarser)
   : Terrain(window)
 {
   this->fitMeanMap(window);
@@ -252,10 +252,13 @@ HorizonMap::HorizonMap(
   const std::vector<std::array<int, 2>> slotSteps = this->placeAzimuths(density);
   this->Held = { 0, window.postsX() - 1, 0, window.postsY() - 1 };
   this->holdPosts();
+  this->findCopiedSlots(coarser);
   this->Elevations.resize(this->HeldCount * slotSteps.size());
   for (std::size_t slot = 0; slot < slotSteps.size(); ++slot)
-    this->sweepWindow(
-      slotSteps[slot][0], slotSteps[slot][1], far, detailDistance, &this->Elevations[slot * this->PostCount]);
+    if (!this->copied(slot))
+      this->sweepWindow(
+        slotSteps[slot][0], slotSteps[slot][1], far, detailDistance, &this->Elevations[slot * this->PostCount]);
+  this->copyFromCoarser(coarser);
 }
 
 void HorizonMap::findLocalRelief(const TerrainGrid& far, double detailDistance)

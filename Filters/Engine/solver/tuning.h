@@ -35,6 +35,9 @@ struct Tuning
   static constexpr double horizonSkyError = 0.1;
   /// The same from a coarse map (16 azimuths).
   static constexpr double coarseHorizonSkyError = 0.25;
+  /// Below coarseHorizonsTarget a coarse map serves where that share is within every
+  /// post's target; every this many posts each way judge first (a 16th of them).
+  static constexpr int coarseSkySampleStride = 4;
   /// The open sky's own relative error (OpenSky: patches split to level 5 where a
   /// plane's horizon crosses them), which every point's error estimate takes of its sky.
   static constexpr double openSkyError = 2e-3;

@@ -35,11 +35,17 @@ const HorizonMap& SceneGeometry::horizons(std::size_t index, HorizonMap::Density
   for (std::size_t k = densities.size(); k-- > asked;)
     if (maps[k])
       return *maps[k];
+  // A coarser map already built lends its sweeps (its azimuths are among these).
+  const HorizonMap* coarser = nullptr;
+  for (std::size_t k = 0; k < asked; ++k)
+    if (maps[k])
+      coarser = maps[k].get();
   // A window with its far terrain given sees that terrain beyond the detail distance.
-  if (this->GivenFar.grid && this->Far.detailDistance > 0.0)
-    maps[asked] = std::make_unique<HorizonMap>(*this->Terrains[index], this->GivenFar, this->Far.detailDistance, density);
+  if (this->seesGivenFarTerrain())
+    maps[asked] = std::make_unique<HorizonMap>(
+      *this->Terrains[index], this->GivenFar, this->Far.detailDistance, density, coarser);
   else
-    maps[asked] = std::make_unique<HorizonMap>(*this->Terrains[index], density, split);
+    maps[asked] = std::make_unique<HorizonMap>(*this->Terrains[index], density, split, coarser);
   return *maps[asked];
 }
 

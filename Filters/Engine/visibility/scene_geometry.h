@@ -47,6 +47,10 @@ public:
   const HorizonMap& horizons(
     std::size_t index, HorizonMap::Density density = HorizonMap::Density::Standard, const WorkSplit* split = nullptr);
 
+  /// Whether rays see a given far terrain beyond the detail distance (a window's):
+  /// its maps' horizons are each post's own, whatever window holds it.
+  bool seesGivenFarTerrain() const { return this->GivenFar.grid && this->Far.detailDistance > 0.0; }
+
   /// Whether `scene` has this one's shape: the same polygons over the same points and
   /// terrains with the same posts and valid cells (materials may differ), seen from
   /// afar alike.

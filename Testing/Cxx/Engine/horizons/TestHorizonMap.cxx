@@ -8,6 +8,8 @@
 #include "terrain_grids.h"
 #include "visibility/visibility.h"
 
+#include "base/error.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,6 +75,34 @@ TEST(HorizonMap, CoarseAndDenseAzimuthsKeepTheStandardOnesOrder)
     EXPECT_TRUE(contains(dense.azimuths(), azimuth));
   for (const double azimuth : coarse.azimuths())
     EXPECT_TRUE(contains(standard.azimuths(), azimuth));
+}
+
+TEST(HorizonMap, AFinerMapCopiesACoarserOnesSweepsBitForBit)
+{
+  // Rough hills, with a hole of missing cells (the sweep's checked crossings).
+  auto grid = makeGrid(61, 53, 10.0, [](double x, double y) {
+    return rollingHills(4.0 * x, 4.0 * y) + 20.0 * std::sin(0.09 * x) * std::cos(0.13 * y);
+  });
+  for (int j = 20; j < 26; ++j)
+    for (int i = 30; i < 41; ++i)
+      grid->setCellValid(i, j, false);
+  const HorizonMap coarse(*grid, HorizonMap::Density::Coarse), standard(*grid),
+    dense(*grid, HorizonMap::Density::Dense);
+  const HorizonMap standardFromCoarse(*grid, HorizonMap::Density::Standard, nullptr, &coarse),
+    denseFromStandard(*grid, HorizonMap::Density::Dense, nullptr, &standard);
+  int differences = 0;
+  for (std::size_t index = 0; index < static_cast<std::size_t>(grid->postsX()) * grid->postsY(); ++index)
+  {
+    const HorizonMap::Post post{ true, index };
+    for (int a = 0; a < standard.azimuthCount(); ++a)
+      differences += standardFromCoarse.elevation(post, a) != standard.elevation(post, a);
+    for (int a = 0; a < dense.azimuthCount(); ++a)
+      differences += denseFromStandard.elevation(post, a) != dense.elevation(post, a);
+  }
+  EXPECT_EQ(differences, 0);
+  // Only a map of the same posts lends its sweeps.
+  const auto other = makeGrid(61, 53, 10.0, [](double, double) { return 0.0; });
+  EXPECT_THROW(HorizonMap(*other, HorizonMap::Density::Standard, nullptr, &coarse), Error);
 }
 
 TEST(HorizonMap, BearingsWrapAround)

@@ -83,10 +83,24 @@ TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
 {
   const auto grid = ridgesAndMountain();
   const FarTerrain far(*grid, stride);
+  std::unique_ptr<HorizonMap> coarser;
   for (const HorizonMap::Density density : HorizonMap::densities)
   {
   SCOPED_TRACE(std::to_string(static_cast<int>(density)) + " azimuths");
-  const HorizonMap whole(*grid, GivenFarTerrain{ &far.grid(), stride, 0, 0 }, detail, density);
+  auto wholeMap = std::make_unique<HorizonMap>(*grid, GivenFarTerrain{ &far.grid(), stride, 0, 0 }, detail, density);
+  const HorizonMap& whole = *wholeMap;
+  // The same map from a coarser one's sweeps (every other azimuth), bit for bit.
+  if (coarser)
+  {
+    const HorizonMap copying(*grid, GivenFarTerrain{ &far.grid(), stride, 0, 0 }, detail, density, coarser.get());
+    for (int j = 0; j < grid->postsY(); j += 3)
+      for (int i = 0; i < grid->postsX(); i += 3)
+      {
+        const HorizonMap::Post post = whole.find(grid->post(i, j));
+        for (int a = 0; a < whole.azimuthCount(); ++a)
+          ASSERT_EQ(copying.elevation(post, a), whole.elevation(post, a)) << i << " " << j << " azimuth " << a;
+      }
+  }
   // Two windows of different extents, neither a multiple of the stride from the grid's
   // first post.
   for (const auto& [i0, j0, nx, ny] : { std::array<int, 4>{ 24, 8, 121, 121 }, std::array<int, 4>{ 61, 37, 90, 100 } })
@@ -111,6 +125,7 @@ TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
       }
     EXPECT_EQ(compared, (nx - 32) * (ny - 32));
   }
+  coarser = std::move(wholeMap);
   }
 }
 

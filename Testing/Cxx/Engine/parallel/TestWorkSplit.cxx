@@ -396,14 +396,26 @@ TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
     { { 0, 39, 0, 19 }, { 40, 64, 0, 39 }, { 25, 64, 40, 64 }, { 0, 24, 20, 64 }, { 25, 39, 20, 39 } },
     { { 0, 64, 0, 64 }, { 0, -1, 0, -1 } },
   };
-  for (const HorizonMap::Density density : HorizonMap::densities)
+  for (std::size_t k = 0; k < HorizonMap::densities.size(); ++k)
   {
+    const HorizonMap::Density density = HorizonMap::densities[k];
     const HorizonMap alone(grid, density);
     for (std::size_t cut = 0; cut < cuts.size(); ++cut)
     {
       ThreadRanks ranks(cuts[cut]);
       ranks.run([&](const ThreadRanks::Split& split) {
         const HorizonMap map(grid, density, &split);
+        const int sends = split.Sends;
+        // A finer map that copies a coarser one's sweeps (every other azimuth) sweeps
+        // and hands on only its own.
+        std::unique_ptr<HorizonMap> coarser, copying;
+        if (k > 0)
+        {
+          coarser = std::make_unique<HorizonMap>(grid, HorizonMap::densities[k - 1], &split);
+          const int coarserSends = split.Sends;
+          copying = std::make_unique<HorizonMap>(grid, density, &split, coarser.get());
+          EXPECT_EQ(split.Sends - coarserSends, sends - (coarserSends - sends));
+        }
         const Window own = split.window(split.part()).clampedTo(n, n);
         int differences = 0, held = 0;
         for (int j = 0; j < n; ++j)
@@ -415,7 +427,10 @@ TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
             ++held;
             const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * n + i };
             for (int a = 0; a < map.azimuthCount(); ++a)
+            {
               differences += map.elevation(post, a) != alone.elevation(post, a);
+              differences += copying && copying->elevation(post, a) != alone.elevation(post, a);
+            }
           }
         EXPECT_EQ(differences, 0) << "cut " << cut << ", part " << split.part() << ", " << static_cast<int>(density) << " azimuths";
         EXPECT_EQ(held, own.empty() ? 0 : (own.i1 - own.i0 + 1) * (own.j1 - own.j0 + 1));

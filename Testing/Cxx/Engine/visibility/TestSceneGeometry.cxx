@@ -30,6 +30,7 @@ struct Solved
 {
   std::unique_ptr<HierarchicalRadiosity> solver;
   std::vector<PointIrradiance> posts;
+  int horizonAzimuths = 0; // of the map the posts' skies came from
 };
 
 // Sun from `azimuth` and a CIE clear sky; every 5th post evaluated as the filter does.
@@ -55,6 +56,7 @@ Solved solve(const TerrainGrid& grid, double azimuth, std::shared_ptr<SceneGeome
       const TerrainPatch* leaf = root.mostLitLeafAt(i, j);
       result.posts.push_back(points.irradianceAt(*leaf, grid.post(i, j), grid.postNormal(i, j)));
     }
+  result.horizonAzimuths = points.statistics().horizonAzimuths;
   return result;
 }
 } // namespace
@@ -126,4 +128,32 @@ TEST(SceneGeometry, TheKnobsCoarseEndMapsHorizonsCoarselyAndAFinerMapOnceBuiltSe
   EXPECT_GT(largest, 0.0);
   EXPECT_LT(largest, 0.04); // 2.3 %; the report holds it against the reference
   EXPECT_GT(sum, 0.0);
+}
+
+TEST(SceneGeometry, AtTheDefaultsACoarseMapServesWhereItsSkyMeetsEveryPostsTarget)
+{
+  // Gentle hills: the sky from 16 azimuths errs within every post's target, and the
+  // standard map is never built. Steep ones (30 m of relief over 10 m posts): it does
+  // not, and the standard map serves.
+  auto gentle = makeGrid(41, 41, 10.0, Hills{ 3.0, 40.0, 55.0, 1.2, 23.0 });
+  gentle->setUniformMaterial(uniformSpectrum(0.2), uniformSpectrum(0.0));
+  const Solved coarse = solve(*gentle, 1.0, nullptr);
+  EXPECT_EQ(coarse.horizonAzimuths, 16);
+  const std::shared_ptr<SceneGeometry> geometry = coarse.solver->geometry();
+  EXPECT_EQ(geometry->horizons(0, HorizonMap::Density::Coarse).azimuthCount(), 16);
+  EXPECT_EQ(solve(*hills(0.2), 1.0, nullptr).horizonAzimuths, 32);
+  // Once the standard map is built (from the coarse one's sweeps), it serves; the
+  // posts' skies then differ from the coarse map's by less than their error estimates.
+  EXPECT_EQ(geometry->horizons(0, HorizonMap::Density::Standard).azimuthCount(), 32);
+  const Solved standard = solve(*gentle, 1.0, geometry);
+  EXPECT_EQ(standard.horizonAzimuths, 32);
+  ASSERT_EQ(coarse.posts.size(), standard.posts.size());
+  int differing = 0;
+  for (std::size_t k = 0; k < standard.posts.size(); ++k)
+  {
+    const double a = coarse.posts[k].irradiance[SkyLight][0], b = standard.posts[k].irradiance[SkyLight][0];
+    EXPECT_LE(std::abs(a - b), coarse.posts[k].irradianceError) << "post " << k;
+    differing += a != b;
+  }
+  EXPECT_GT(differing, 0);
 }
