@@ -45,6 +45,9 @@
  * data `Elements`, `Links`, `Rays`, `Iterations`, `DegeneratePolygons`, `SkippedCells`
  * (vertex and line cells, and polygons of fewer than 3 points: no area, no light), seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsHorizons` for the horizons of every post,
+ * toward `HorizonAzimuths` azimuths: 16 at the knob's coarse end and, below it, where
+ * the sky they give errs within every post's target (gentle terrain), else 32, or 64
+ * for a year's suns;
  * `SecondsRefine`, `SecondsGather`, `SecondsPushPull`, `SecondsPoints` for output 0's
  * point values, of which `SecondsLattice` for the lattice of posts gathered first) and
  * rays per phase (`RaysRefine`, `RaysPushPull` for gather and push-pull, `RaysPoints`,

@@ -93,13 +93,16 @@ bool PointEvaluator::coarseSkyServes(bool hornNormals, int stride) const
     {
       if (!grid.postUsed(i, j))
         continue;
-      HorizonMap::Post post;
-      post.found = true;
-      post.index = static_cast<std::size_t>(j) * grid.postsX() + i;
-      const Vec3 normal = grid.normalAt(i, j, hornNormals);
       PostSky::Value sky;
-      if (!this->PostSkies || !this->PostSkies->found(post, normal, sky))
+      Vec3 normal;
+      if (!this->PostSkies || !this->PostSkies->foundAt(i, j, sky, normal))
+      {
+        HorizonMap::Post post;
+        post.found = true;
+        post.index = static_cast<std::size_t>(j) * grid.postsX() + i;
+        normal = grid.normalAt(i, j, hornNormals);
         sky = PostSky::at(post, normal, *this->Horizons, *this->SkyAtPoints);
+      }
       // The terrain the post sees, 1 - its sky view factor, errs as the sky it hides
       // does, and light from surfaces read in proportion to it (the lattice's reads)
       // with it. What the post receives is at least its sky: a target no larger than

@@ -468,10 +468,20 @@ HorizonMap::Post HorizonMap::find(const Vec3& point) const
     return {}; // also for points that are not numbers
   const double tolerance = 0.01 * std::min(std::hypot(this->Ux, this->Uy), std::hypot(this->Vx, this->Vy));
   const int ic = static_cast<int>(std::lround(u)), jc = static_cast<int>(std::lround(v));
+  auto at = [&](int i, int j) {
+    return glm::dot(t.post(i, j) - point, t.post(i, j) - point) <= tolerance * tolerance && t.postUsed(i, j);
+  };
+  auto post = [&](int i, int j) {
+    return this->holds(i, j) ? Post{ true, static_cast<std::size_t>(j) * t.postsX() + i } : Post{};
+  };
+  // The nearest post by the mean map first (nearly always the one), then its neighbours
+  // (on a grid bent from the mean).
+  if (ic >= 0 && jc >= 0 && ic < t.postsX() && jc < t.postsY() && at(ic, jc))
+    return post(ic, jc);
   for (int j = std::max(0, jc - 1); j <= std::min(t.postsY() - 1, jc + 1); ++j)
     for (int i = std::max(0, ic - 1); i <= std::min(t.postsX() - 1, ic + 1); ++i)
-      if (glm::length(t.post(i, j) - point) <= tolerance && t.postUsed(i, j))
-        return this->holds(i, j) ? Post{ true, static_cast<std::size_t>(j) * t.postsX() + i } : Post{};
+      if (at(i, j))
+        return post(i, j);
   return {};
 }
 

@@ -103,7 +103,10 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const Horizon
 HorizonSky::ElevationTerms HorizonSky::termsAt(double u) const
 {
   // Linear between the table's entries: within 1e-7 of the exact terms (they are
-  // smooth, their second derivatives at most 1), for a lookup instead of a sine.
+  // smooth, their second derivatives at most 1), for a lookup instead of a sine. Half
+  // of a post's pieces start at the horizontal (its plane faces them): both terms 0.
+  if (!(u > 0.0))
+    return { 0.0, 0.0 };
   const double x = std::clamp(u / (0.5 * pi) * fineTerms, 0.0, static_cast<double>(fineTerms));
   const int k = std::min(static_cast<int>(x), fineTerms - 1);
   const double f = x - k;

@@ -22,7 +22,6 @@ constexpr int skyTag = 900; // apart from the horizons' hand-off (a tag per azim
 PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals,
   const WorkSplit* split, int halo)
   : Terrain(terrain)
-  , HornNormals(hornNormals)
   , Held(terrain.postsX(), terrain.postsY(), split, halo)
 {
   const int nx = terrain.postsX(), ny = terrain.postsY();
@@ -41,15 +40,19 @@ PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const O
           HorizonMap::Post post;
           post.found = true;
           post.index = static_cast<std::size_t>(j) * nx + i;
-          const std::size_t held = this->Held.index(i, j);
-          this->Values[held] = {};
+          const std::size_t index = this->Held.index(i, j);
+          this->Values[index] = {};
           if (!terrain.postUsed(i, j))
             continue;
-          const Value value = at(post, terrain.normalAt(i, j, hornNormals), horizons, sky);
+          const Vec3 normal = terrain.normalAt(i, j, hornNormals);
+          const Value value = at(post, normal, horizons, sky);
+          std::array<float, valueSize>& held = this->Values[index];
           for (int band = 0; band < maxBands; ++band)
-            this->Values[held][band] = static_cast<float>(value.irradiance[band]);
-          this->Values[held][maxBands] = static_cast<float>(value.skyViewFactor);
-          this->Used[held] = 1;
+            held[band] = static_cast<float>(value.irradiance[band]);
+          held[maxBands] = static_cast<float>(value.skyViewFactor);
+          for (int axis = 0; axis < 3; ++axis)
+            held[maxBands + 1 + axis] = static_cast<float>(normal[axis]);
+          this->Used[index] = 1;
         }
       });
     },
@@ -80,14 +83,37 @@ bool PostSky::found(const HorizonMap::Post& post, const Vec3& normal, Value& val
   const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
   if (!this->Held.holds(i, j) || !this->Used[this->Held.index(i, j)])
     return false;
-  // Stored as floats: the same normal to 1e-6 gives the same sky to about 1e-6.
-  if (glm::length(this->Terrain.normalAt(i, j, this->HornNormals) - normal) > 1e-6)
+  // Stored as floats: the same normal to 1e-6 gives the same sky to about 1e-6 (the
+  // normal the sky was found on, kept to 6e-8, need not be found again).
+  const std::array<float, valueSize>& held = this->Values[this->Held.index(i, j)];
+  if (glm::length(normalOf(held) - normal) > 1e-6)
     return false;
-  const std::array<float, maxBands + 1>& held = this->Values[this->Held.index(i, j)];
+  value = valueOf(held);
+  return true;
+}
+
+bool PostSky::foundAt(int i, int j, Value& value, Vec3& normal) const
+{
+  if (!this->Held.holds(i, j) || !this->Used[this->Held.index(i, j)])
+    return false;
+  const std::array<float, valueSize>& held = this->Values[this->Held.index(i, j)];
+  value = valueOf(held);
+  normal = normalOf(held);
+  return true;
+}
+
+PostSky::Value PostSky::valueOf(const std::array<float, valueSize>& held)
+{
+  Value value;
   for (int band = 0; band < maxBands; ++band)
     value.irradiance[band] = held[band];
   value.skyViewFactor = held[maxBands];
-  return true;
+  return value;
+}
+
+Vec3 PostSky::normalOf(const std::array<float, valueSize>& held)
+{
+  return Vec3(held[maxBands + 1], held[maxBands + 2], held[maxBands + 3]);
 }
 
 bool PostSky::interpolate(double u, double v, Spectrum& irradiance) const

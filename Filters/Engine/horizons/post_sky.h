@@ -45,6 +45,9 @@ public:
   /// The sky found for a post, when `normal` is the one it was found on; false
   /// otherwise.
   bool found(const HorizonMap::Post& post, const Vec3& normal, Value& value) const;
+  /// The sky found for post (i, j) and the normal it was found on (to 6e-8); false
+  /// where this process holds none.
+  bool foundAt(int i, int j, Value& value, Vec3& normal) const;
 
   /// The sky irradiance at grid parameters (u, v), between the used posts of its cell;
   /// false where the cell has none. Throws where this process does not hold them.
@@ -52,11 +55,14 @@ public:
 
 private:
   const TerrainGrid& Terrain;
-  bool HornNormals;
   HeldPosts Held;
-  // Per held post, row by row: irradiance, sky view factor, each written by a parallel loop
-  // or a share without a serial zeroing first (read only where Used).
-  UninitializedVector<std::array<float, maxBands + 1>> Values;
+  // Per held post, row by row: irradiance, sky view factor and the normal it was found
+  // on, each written by a parallel loop or a share without a serial zeroing first (read
+  // only where Used).
+  static constexpr int valueSize = maxBands + 4;
+  static Value valueOf(const std::array<float, valueSize>& held);
+  static Vec3 normalOf(const std::array<float, valueSize>& held);
+  UninitializedVector<std::array<float, valueSize>> Values;
   std::vector<std::uint8_t> Used;
 };
 } // namespace terralux
