@@ -135,6 +135,8 @@ private:
   /// (Tuning::horizonSkyError, or coarseHorizonSkyError from a coarse map): found at a
   /// few dozen azimuths.
   double skyError(const Vec3& normal, const Spectrum& sky, bool byRays) const;
+  /// The same from a post's horizons, its plane's open sky given.
+  double skyErrorUnder(const Spectrum& open, const Spectrum& sky) const;
   /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
   /// leaf) unless that sees the back of a surface, then the most open of four points two
   /// ray offsets from it diagonally in its plane, if clearly more open (the reference's

@@ -112,7 +112,7 @@ bool PointEvaluator::coarseSkyServes(bool hornNormals, int stride) const
       this->SkyAtPoints->irradiance(normal, open, openSolidAngle);
       const double terrainSeenError = Tuning::coarseHorizonSkyError *
         std::max(0.0, openSolidAngle / pi - sky.skyViewFactor) * terrainRadiosity;
-      if (this->skyError(normal, sky.irradiance, false) + terrainSeenError >
+      if (this->skyErrorUnder(open, sky.irradiance) + terrainSeenError >
         this->Options.errorTarget(largestBand(sky.irradiance)))
         serves = false;
     }
@@ -171,12 +171,17 @@ void PointEvaluator::findSunHorizons()
 
 double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, bool byRays) const
 {
-  const double own = Tuning::openSkyError * largestBand(sky);
   if (byRays || !this->SkyAtPoints)
-    return own;
+    return Tuning::openSkyError * largestBand(sky);
   Spectrum open{};
   double projectedSolidAngle = 0.0;
   this->SkyAtPoints->irradiance(normal, open, projectedSolidAngle);
+  return this->skyErrorUnder(open, sky);
+}
+
+double PointEvaluator::skyErrorUnder(const Spectrum& open, const Spectrum& sky) const
+{
+  const double own = Tuning::openSkyError * largestBand(sky);
   const bool coarse = this->PostHorizons &&
     this->PostHorizons->azimuthCount() <= static_cast<int>(HorizonMap::Density::Coarse);
   const double share = coarse ? Tuning::coarseHorizonSkyError : Tuning::horizonSkyError;
