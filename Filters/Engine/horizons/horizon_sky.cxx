@@ -288,17 +288,26 @@ void HorizonSky::hidePiece(const MapPiece& piece, double u0, double u1, const Ve
     normal.z * piece.width * (high.up - low.up);
   if (!(weight > 0.0))
     return;
-  auto sumAt = [&](double u, const ElevationTerms& terms, int band) {
-    const int row = std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1);
-    const PieceRow& r = piece.rows[row];
-    const ElevationTerms& boundary = this->Terms[row * (fineTerms / this->Side)];
-    const double along = terms.along - boundary.along, up = terms.up - boundary.up;
-    return normal.x * (r.s[band] + r.rowS[band] * along) - normal.y * (r.c[band] + r.rowC[band] * along) +
-      normal.z * (r.w[band] + r.rowW[band] * up);
+  // Each end's row and its terms from the row's lower boundary, found once for every band.
+  struct End
+  {
+    const PieceRow* row;
+    double along, up;
   };
+  auto endAt = [&](double u, const ElevationTerms& terms) {
+    const int row = std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1);
+    const ElevationTerms& boundary = this->Terms[row * (fineTerms / this->Side)];
+    return End{ &piece.rows[row], terms.along - boundary.along, terms.up - boundary.up };
+  };
+  auto sumAt = [&](const End& end, int band) {
+    const PieceRow& r = *end.row;
+    return normal.x * (r.s[band] + r.rowS[band] * end.along) - normal.y * (r.c[band] + r.rowC[band] * end.along) +
+      normal.z * (r.w[band] + r.rowW[band] * end.up);
+  };
+  const End top = endAt(u1, high), bottom = endAt(u0, low);
   result.projectedSolidAngle += weight;
   for (int band = 0; band < this->Bands; ++band)
-    result.irradiance[band] += std::max(0.0, sumAt(u1, high, band) - sumAt(u0, low, band));
+    result.irradiance[band] += std::max(0.0, sumAt(top, band) - sumAt(bottom, band));
 }
 
 int HorizonSky::columnsOf(
