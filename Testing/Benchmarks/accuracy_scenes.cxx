@@ -68,9 +68,9 @@ vtkSmartPointer<vtkDataObject> skyMap(int model, int type, double sunZenithDeg, 
 
 // One sun `altitude` deg up toward compass `azimuth` (800 W/m^2) and its CIE clear sky
 // (100 W/m^2 diffuse on the horizontal): the scene's lights, and what it records of them.
-void sunAndClearSky(AccuracyScene& scene, double altitude, double azimuth)
+void sunAndClearSky(
+  AccuracyScene& scene, double altitude, double azimuth, double normalIrradiance = 800.0, double diffuse = 100.0)
 {
-  constexpr double normalIrradiance = 800.0, diffuse = 100.0;
   scene.lights = { sunAt(altitude, azimuth, normalIrradiance),
     skyMap(vtkSkySource::CIE_GENERAL, 12, 90.0 - altitude, azimuth, diffuse) };
   scene.sunAltitude = altitude;
@@ -115,7 +115,7 @@ vtkSmartPointer<vtkPolyData> box(double x0, double x1, double y0, double y1, dou
 std::vector<std::string> accuracySceneNames()
 {
   return { "olinda", "fractal", "hills", "crater", "canyon", "box", "house-sky", "house-sun", "olinda-sky", "olinda-black",
-    "steep-morning", "steep-noon", "snowbowl", "ridges" };
+    "steep-morning", "steep-noon", "gentle-morning", "snowbowl", "ridges" };
 }
 
 namespace
@@ -134,16 +134,18 @@ void fractalTerrain(AccuracyScene& scene, int n, std::uint32_t seed, double reli
   scene.terrain = true;
 }
 
-// The centre 129 x 129 posts of the steep benchmark DEM (make_fractal_dem 1025 posts,
-// seed 1, 3000 m relief: mean slope 15 deg, p95 28 deg; the crop 17 and 30 deg) under a
-// sun `altitude` deg up toward compass `azimuth` and its CIE clear sky.
-void steepCrop(AccuracyScene& scene, double altitude, double azimuth, double reflectance)
+// The centre 129 x 129 posts of a benchmark DEM (make_fractal_dem 1025 posts, seed 1):
+// the steep one (3000 m relief: mean slope 15 deg, p95 28 deg; the crop 17 and 30 deg)
+// or the gentle one (1500 m), under a sun `altitude` deg up toward compass `azimuth` and
+// its CIE clear sky.
+void benchmarkCrop(AccuracyScene& scene, double reliefM, double altitude, double azimuth, double reflectance,
+  double normalIrradiance = 800.0, double diffuse = 100.0)
 {
   constexpr int full = 1025, n = 129, first = (full - n) / 2;
-  const std::vector<float> heights = fractalHeights(full, 1, 0.55, steepReliefM);
+  const std::vector<float> heights = fractalHeights(full, 1, 0.55, reliefM);
   scene.geometry = heightField(
     n, 30.0, [&](int i, int j) { return heights[static_cast<std::size_t>(first + j) * full + first + i]; });
-  sunAndClearSky(scene, altitude, azimuth);
+  sunAndClearSky(scene, altitude, azimuth, normalIrradiance, diffuse);
   scene.reflectance = reflectance;
   scene.terrain = true;
 }
@@ -277,9 +279,18 @@ AccuracyScene makeAccuracyScene(const std::string& name, const std::string& data
     // (b'') Steep mountains as real DEMs have them, a winter morning sun 8 deg up in the
     // south-east, or the winter noon sun 22 deg up in the south.
     const bool morning = name == "steep-morning";
-    steepCrop(scene, morning ? 8.0 : 22.0, morning ? 135.0 : 180.0, 0.5);
+    benchmarkCrop(scene, steepReliefM, morning ? 8.0 : 22.0, morning ? 135.0 : 180.0, 0.5);
     scene.description = std::string("steep fractal 129 x 129 at 30 m (crop of the 1025^2 steep DEM), sun ") +
       (morning ? "8 deg up in the SE" : "22 deg up in the S") + " (800 W/m^2) + CIE 12 sky (100 W/m^2), reflectance 0.5";
+  }
+  else if (name == "gentle-morning")
+  {
+    // (b''') The gentle benchmark DEM under its benchmarks' winter morning sun, 9 deg up
+    // in the SE, with the clear sky's irradiances there (ESRA, Linke 3; vtkSunSource's
+    // defaults): the defaults' horizons take 16 azimuths.
+    benchmarkCrop(scene, gentleReliefM, 9.0, 135.0, 0.2, 450.0, 44.0);
+    scene.description = "gentle fractal 129 x 129 at 30 m (crop of the 1025^2 gentle DEM), sun 9 deg up in the SE "
+                        "(450 W/m^2) + CIE 12 sky (44 W/m^2), reflectance 0.2";
   }
   else if (name == "snowbowl")
   {

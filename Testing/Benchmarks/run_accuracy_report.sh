@@ -26,7 +26,7 @@ out_dir="${2:-${build_dir}/accuracy}"
 shift $(( $# > 2 ? 2 : $# ))
 scenes=("$@")
 [ "${#scenes[@]}" -gt 0 ] || scenes=(olinda fractal hills crater canyon box house-sky house-sun olinda-sky olinda-black
-  steep-morning steep-noon snowbowl ridges)
+  steep-morning steep-noon gentle-morning snowbowl ridges)
 samples="${TERRALUX_REFERENCE_SAMPLES:-32768}"
 cmake --build "${build_dir}" --target accuracy_report >/dev/null
 export TERRALUX_DATA_DIR="${repo_dir}/Testing/Data/External"
