@@ -117,10 +117,11 @@ void HorizonMap::findCopiedSlots(const HorizonMap* coarser)
 
 void HorizonMap::copyFromCoarser(const HorizonMap* coarser)
 {
-  for (std::size_t slot = 0; slot < this->Copied.size(); ++slot)
+  // (A process of an empty window holds no posts: nothing to copy.)
+  for (std::size_t slot = 0; slot < this->Copied.size() && this->HeldCount > 0; ++slot)
     if (this->Copied[slot])
-      std::copy_n(&coarser->Elevations[this->CoarserSlot[slot] * coarser->HeldCount], this->HeldCount,
-        &this->Elevations[slot * this->HeldCount]);
+      std::copy_n(coarser->Elevations.data() + this->CoarserSlot[slot] * coarser->HeldCount, this->HeldCount,
+        this->Elevations.data() + slot * this->HeldCount);
 }
 
 std::vector<std::array<int, 2>> HorizonMap::placeAzimuths(Density density)
