@@ -53,12 +53,14 @@ void PointEvaluator::findPostHorizons(bool hornNormals)
   const bool judged =
     density == HorizonMap::Density::Standard && !this->Solver.geometry()->seesGivenFarTerrain();
   this->takeHorizons(judged ? HorizonMap::Density::Coarse : density);
-  const bool coarse = this->PostHorizons->azimuthCount() < static_cast<int>(HorizonMap::Density::Standard);
-  if (judged && coarse && !this->coarseSkyServes(hornNormals, Tuning::coarseSkySampleStride))
+  // (A finer map once built serves a coarse ask: nothing to judge then.)
+  auto judgingCoarse = [&]() {
+    return judged && this->PostHorizons->azimuthCount() < static_cast<int>(HorizonMap::Density::Standard);
+  };
+  if (judgingCoarse() && !this->coarseSkyServes(hornNormals, Tuning::coarseSkySampleStride))
     this->takeHorizons(HorizonMap::Density::Standard);
   findSkies();
-  if (judged && coarse && this->PostHorizons->azimuthCount() < static_cast<int>(HorizonMap::Density::Standard) &&
-    !this->coarseSkyServes(hornNormals, 1))
+  if (judgingCoarse() && !this->coarseSkyServes(hornNormals, 1))
   {
     this->takeHorizons(HorizonMap::Density::Standard);
     findSkies();
@@ -97,9 +99,7 @@ bool PointEvaluator::coarseSkyServes(bool hornNormals, int stride) const
       Vec3 normal;
       if (!this->PostSkies || !this->PostSkies->foundAt(i, j, sky, normal))
       {
-        HorizonMap::Post post;
-        post.found = true;
-        post.index = static_cast<std::size_t>(j) * grid.postsX() + i;
+        const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * grid.postsX() + i };
         normal = grid.normalAt(i, j, hornNormals);
         sky = PostSky::at(post, normal, *this->Horizons, *this->SkyAtPoints);
       }

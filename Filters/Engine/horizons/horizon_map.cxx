@@ -79,7 +79,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSp
   this->fitMeanMap(terrain);
   this->measureRelief();
   this->ExtentU1 = terrain.postsX() - 1, this->ExtentV1 = terrain.postsY() - 1;
-  const std::vector<std::array<int, 2>> slotSteps = this->placeAzimuths(density);
+  const std::vector<std::array<int, 2>>& slotSteps = this->placeAzimuths(density);
   this->Held = WorkSplit::ownWindow(split, terrain.postsX(), terrain.postsY());
   this->holdPosts();
   this->findCopiedSlots(coarser);
@@ -105,26 +105,26 @@ void HorizonMap::findCopiedSlots(const HorizonMap* coarser)
   if (&coarser->Terrain != &this->Terrain || coarser->Held.i0 != this->Held.i0 || coarser->Held.i1 != this->Held.i1 ||
     coarser->Held.j0 != this->Held.j0 || coarser->Held.j1 != this->Held.j1)
     throw Error("HorizonMap: a coarser map copied from must hold the same posts of the same terrain");
-  this->Copied.assign(this->SlotSteps.size(), false);
-  this->CoarserSlot.assign(this->SlotSteps.size(), 0);
+  this->CoarserSlot.assign(this->SlotSteps.size(), -1);
   for (std::size_t slot = 0; slot < this->SlotSteps.size(); ++slot)
   {
     const auto found = std::find(coarser->SlotSteps.begin(), coarser->SlotSteps.end(), this->SlotSteps[slot]);
     if (found != coarser->SlotSteps.end())
-      this->Copied[slot] = true, this->CoarserSlot[slot] = static_cast<std::size_t>(found - coarser->SlotSteps.begin());
+      this->CoarserSlot[slot] = static_cast<int>(found - coarser->SlotSteps.begin());
   }
 }
 
 void HorizonMap::copyFromCoarser(const HorizonMap* coarser)
 {
   // (A process of an empty window holds no posts: nothing to copy.)
-  for (std::size_t slot = 0; slot < this->Copied.size() && this->HeldCount > 0; ++slot)
-    if (this->Copied[slot])
-      std::copy_n(coarser->Elevations.data() + this->CoarserSlot[slot] * coarser->HeldCount, this->HeldCount,
+  for (std::size_t slot = 0; slot < this->CoarserSlot.size() && this->HeldCount > 0; ++slot)
+    if (this->copied(slot))
+      std::copy_n(coarser->Elevations.data() + static_cast<std::size_t>(this->CoarserSlot[slot]) * coarser->HeldCount,
+        this->HeldCount,
         this->Elevations.data() + slot * this->HeldCount);
 }
 
-std::vector<std::array<int, 2>> HorizonMap::placeAzimuths(Density density)
+const std::vector<std::array<int, 2>>& HorizonMap::placeAzimuths(Density density)
 {
   // Azimuths in increasing order, each step's slot its rank.
   const std::vector<std::array<int, 2>> steps = stepsOfAllAzimuths(density);
@@ -138,17 +138,16 @@ std::vector<std::array<int, 2>> HorizonMap::placeAzimuths(Density density)
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return azimuths[a] < azimuths[b]; });
   const double det = this->Ux * this->Vy - this->Vx * this->Uy;
-  std::vector<std::array<int, 2>> slotSteps;
+  this->SlotSteps.clear();
   for (const int step : order)
   {
     const double a = azimuths[static_cast<std::size_t>(step)], x = std::cos(a), y = std::sin(a);
     this->Azimuths.push_back(a);
     this->AzimuthSteps.push_back({ (this->Vy * x - this->Vx * y) / det, (this->Ux * y - this->Uy * x) / det });
     this->AzimuthDirections.push_back({ x, y });
-    slotSteps.push_back(steps[static_cast<std::size_t>(step)]);
+    this->SlotSteps.push_back(steps[static_cast<std::size_t>(step)]);
   }
-  this->SlotSteps = slotSteps;
-  return slotSteps;
+  return this->SlotSteps;
 }
 
 void HorizonMap::holdPosts()

@@ -227,16 +227,15 @@ public:
   }
 
 private:
-  /// The map's azimuths from its mean map; the steps of the slots, in order.
-  std::vector<std::array<int, 2>> placeAzimuths(Density density);
-  /// The slots whose step `coarser` holds (Copied), which the sweeps skip; then
+  /// The map's azimuths from its mean map; the steps of the slots, in order (SlotSteps).
+  const std::vector<std::array<int, 2>>& placeAzimuths(Density density);
+  /// The slots whose step `coarser` holds (CoarserSlot), which the sweeps skip; then
   /// copyFromCoarser fills them once the map is sized.
   void findCopiedSlots(const HorizonMap* coarser);
   void copyFromCoarser(const HorizonMap* coarser);
-  bool copied(std::size_t slot) const { return !this->Copied.empty() && this->Copied[slot]; }
+  bool copied(std::size_t slot) const { return !this->CoarserSlot.empty() && this->CoarserSlot[slot] >= 0; }
   std::vector<std::array<int, 2>> SlotSteps;
-  std::vector<std::size_t> CoarserSlot; // per copied slot, the coarser map's
-  std::vector<bool> Copied;
+  std::vector<int> CoarserSlot; // per slot, the coarser map's slot it copies, or -1: swept
   /// Sizes the map to the posts of Held.
   void holdPosts();
   void fitMeanMap(const TerrainGrid& grid);

@@ -249,7 +249,7 @@ HorizonMap::HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, do
   this->findLocalRelief(*far.grid, detailDistance);
   this->ExtentU0 = -far.i0, this->ExtentV0 = -far.j0;
   this->ExtentU1 = (far.grid->postsX() - 1) * s - far.i0, this->ExtentV1 = (far.grid->postsY() - 1) * s - far.j0;
-  const std::vector<std::array<int, 2>> slotSteps = this->placeAzimuths(density);
+  const std::vector<std::array<int, 2>>& slotSteps = this->placeAzimuths(density);
   this->Held = { 0, window.postsX() - 1, 0, window.postsY() - 1 };
   this->holdPosts();
   this->findCopiedSlots(coarser);
