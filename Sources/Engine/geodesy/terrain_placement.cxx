@@ -6,6 +6,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -80,29 +81,120 @@ GeodeticPoint geodeticOfPixel(
   return { y, x, heightM };
 }
 
+namespace
+{
+// Cubic Lagrange weights at t in [0, 1) of the nodes at -1, 0, 1 and 2.
+std::array<double, 4> cubicWeights(double t)
+{
+  return { -t * (t - 1.0) * (t - 2.0) / 6.0, (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0,
+    -(t + 1.0) * t * (t - 2.0) / 2.0, (t + 1.0) * t * (t - 1.0) / 6.0 };
+}
+
+// A node's place on the ellipsoid and the local direction of its height: a geodetic
+// point's local position is the first plus its height times the second (ECEF is linear
+// in the height along the ellipsoid's normal, ENU a rotation of it).
+using NodePlace = std::array<double, 6>;
+
+int floorDivide(int a, int b)
+{
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+} // namespace
+
+bool TerrainPlacement::placeNodes(std::vector<NodePlace>& nodes, int& firstColumn, int& firstRow, int& columns) const
+{
+  // Nodes every nodeSpacing pixels of the transform, counted from its origin (a piece
+  // of the grid finds the same nodes as the whole), two beyond each end of the grid.
+  const int i0 = floorDivide(this->Grid.col0, nodeSpacing) - 1;
+  const int i1 = floorDivide(this->Grid.col0 + this->Grid.nx - 1, nodeSpacing) + 2;
+  const int j0 = floorDivide(this->Grid.row0, nodeSpacing) - 1;
+  const int j1 = floorDivide(this->Grid.row0 + this->Grid.ny - 1, nodeSpacing) + 2;
+  firstColumn = i0, firstRow = j0, columns = i1 - i0 + 1;
+  nodes.assign(static_cast<std::size_t>(columns) * (j1 - j0 + 1), NodePlace{});
+  std::atomic<bool> placed{ true };
+  tbb::enumerable_thread_specific<std::unique_ptr<MapProjection>> projections(
+    [this]() { return this->Projection->clone(); });
+  tbb::parallel_for(j0, j1 + 1, [&](int j) {
+    std::vector<double> x(columns), y(columns);
+    for (int i = i0; i <= i1; ++i)
+      this->Grid.geoTransform.pixelToMap(nodeSpacing * i + 0.5, nodeSpacing * j + 0.5, x[i - i0], y[i - i0]);
+    try
+    {
+      projections.local()->toGeographic(static_cast<std::size_t>(columns), x.data(), y.data());
+    }
+    catch (const Error&)
+    {
+      placed = false; // a node outside the CRS's domain: the posts are placed one by one
+      return;
+    }
+    for (int i = 0; i < columns; ++i)
+    {
+      if (!(std::abs(y[i]) <= 90.0))
+      {
+        placed = false;
+        return;
+      }
+      // The height's direction over 10 km: the local frame rounds to about 1e-9 m, which
+      // a 1 m difference would take times every post's height.
+      constexpr double rise = 1e4;
+      const LocalPoint ground = this->Frame->toLocal({ y[i], x[i], 0.0 });
+      const LocalPoint above = this->Frame->toLocal({ y[i], x[i], rise });
+      NodePlace& node = nodes[static_cast<std::size_t>(j - j0) * columns + i];
+      for (int c = 0; c < 3; ++c)
+        node[c] = ground[c], node[3 + c] = (above[c] - ground[c]) / rise;
+      for (const double value : node)
+        if (!std::isfinite(value))
+          placed = false;
+    }
+  });
+  return placed;
+}
+
 template <typename HeightT, typename PointT>
 void TerrainPlacement::place(const HeightT* heights, double holeHeightM, PointT* xyz) const
 {
   const int nx = this->Grid.nx;
   const int ny = this->Grid.ny;
-  // Transforms keep state, so each thread converts with its own copy.
-  tbb::enumerable_thread_specific<std::unique_ptr<MapProjection>> projections([this]() {
-    return this->Projection ? this->Projection->clone() : std::unique_ptr<MapProjection>();
+  std::vector<NodePlace> nodes;
+  int firstColumn = 0, firstRow = 0, columns = 0;
+  const bool byNodes = this->Projection && this->placeNodes(nodes, firstColumn, firstRow, columns);
+  // Without nodes each post is transformed itself; transforms keep state, so each
+  // thread converts with its own copy.
+  tbb::enumerable_thread_specific<std::unique_ptr<MapProjection>> projections([this, byNodes]() {
+    return this->Projection && !byNodes ? this->Projection->clone() : std::unique_ptr<MapProjection>();
   });
 
   std::atomic<bool> pastPole{ false }, nonFinite{ false };
   tbb::parallel_for(tbb::blocked_range<int>(0, ny, 16), [&](const tbb::blocked_range<int>& rows) {
     std::vector<double> x(nx), y(nx);
+    std::vector<NodePlace> nodeRow(columns);
     MapProjection* projection = projections.local().get();
     for (int row = rows.begin(); row != rows.end(); ++row)
     {
-      for (int i = 0; i < nx; ++i)
+      if (byNodes)
       {
-        this->Grid.geoTransform.pixelToMap(this->Grid.col0 + i + 0.5, this->Grid.row0 + row + 0.5, x[i], y[i]);
+        // Between the node rows around this one, then between the columns at each post
+        // (cubic both ways: within 1e-9 m of the posts' own transforms at 30 m posts).
+        const int r = this->Grid.row0 + row, below = floorDivide(r, nodeSpacing);
+        const std::array<double, 4> w = cubicWeights(static_cast<double>(r - below * nodeSpacing) / nodeSpacing);
+        for (int i = 0; i < columns; ++i)
+        {
+          NodePlace& value = nodeRow[i];
+          value.fill(0.0);
+          for (int k = 0; k < 4; ++k)
+          {
+            const NodePlace& node = nodes[static_cast<std::size_t>(below - 1 + k - firstRow) * columns + i];
+            for (int c = 0; c < 6; ++c)
+              value[c] += w[k] * node[c];
+          }
+        }
       }
-      if (projection)
+      else
       {
-        projection->toGeographic(static_cast<std::size_t>(nx), x.data(), y.data());
+        for (int i = 0; i < nx; ++i)
+          this->Grid.geoTransform.pixelToMap(this->Grid.col0 + i + 0.5, this->Grid.row0 + row + 0.5, x[i], y[i]);
+        if (projection)
+          projection->toGeographic(static_cast<std::size_t>(nx), x.data(), y.data());
       }
       const HeightT* rowHeights = heights + static_cast<std::size_t>(row) * nx;
       PointT* out = xyz + 3 * static_cast<std::size_t>(this->Grid.geoTransform.gridRow(row, ny)) * nx;
@@ -110,7 +202,17 @@ void TerrainPlacement::place(const HeightT* heights, double holeHeightM, PointT*
       {
         const double h = std::isfinite(rowHeights[i]) ? static_cast<double>(rowHeights[i]) : holeHeightM;
         LocalPoint local;
-        if (projection)
+        if (byNodes)
+        {
+          const int column = this->Grid.col0 + i, left = floorDivide(column, nodeSpacing);
+          const std::array<double, 4> w =
+            cubicWeights(static_cast<double>(column - left * nodeSpacing) / nodeSpacing);
+          const NodePlace* node = &nodeRow[static_cast<std::size_t>(left - 1 - firstColumn)];
+          for (int c = 0; c < 3; ++c)
+            local[c] = w[0] * (node[0][c] + h * node[0][3 + c]) + w[1] * (node[1][c] + h * node[1][3 + c]) +
+              w[2] * (node[2][c] + h * node[2][3 + c]) + w[3] * (node[3][c] + h * node[3][3 + c]);
+        }
+        else if (projection)
         {
           if (!(std::abs(y[i]) <= 90.0))
           {

@@ -14,9 +14,11 @@
 #include "geodesy/local_frame.h"
 #include "geodesy/map_projection.h"
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace terralux
 {
@@ -77,7 +79,15 @@ public:
   template <typename HeightT, typename PointT>
   void place(const HeightT* heights, double holeHeightM, PointT* xyz) const;
 
+  /// Posts are placed between nodes transformed every this many pixels (each post
+  /// transformed itself where a node falls outside the CRS's domain or past a pole).
+  static constexpr int nodeSpacing = 8;
+
 private:
+  /// Each node's local place on the ellipsoid and the local direction of its height;
+  /// false where a node cannot be placed.
+  bool placeNodes(std::vector<std::array<double, 6>>& nodes, int& firstColumn, int& firstRow, int& columns) const;
+
   GridGeoreference Grid;
   std::unique_ptr<MapProjection> Projection; // null for local metres
   std::unique_ptr<LocalFrame> Frame;
