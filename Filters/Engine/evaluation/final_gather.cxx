@@ -149,15 +149,15 @@ namespace
 // How many stratified rays bring the standard error of their mean below the budget's
 // (budget.relativeError x `received`, at least budget.absoluteError), from the variance
 // of one ray's estimate (as for independent rays), between budget.minimum and
-// budget.maximum: a whole square of strata, since a partly filled last row would leave a
-// band of directions unsampled.
+// budget.maximum: whole rows of strata, since a partly filled last row would leave a
+// band of directions unsampled (a square, or one row fewer where that is enough).
 int raysFor(const GatherBudget& budget, double variance, double received)
 {
   const double target = std::max({ budget.relativeError * received, budget.absoluteError, 1e-12 });
   const double allowed = std::max(0.5 * target * target, target * target - budget.spentVariance);
   const double needed = std::clamp<double>(std::ceil(variance / allowed), budget.minimum, budget.maximum);
   const int side = static_cast<int>(std::ceil(std::sqrt(needed)));
-  return side * side;
+  return side * (side - 1) >= needed ? side * (side - 1) : side * side;
 }
 
 // The same from a pilot's sum and sum of squares.
