@@ -165,8 +165,8 @@ PointIrradiance PointEvaluator::irradianceAt(
   return this->irradianceAt(leaf, point, normal, leaf.centre());
 }
 
-PointIrradiance PointEvaluator::irradianceAt(const PolygonElement& leaf, const Vec3& point, const Vec3& normal,
-  const Vec3& toward, const PostLattice::Around* lattice) const
+PointIrradiance PointEvaluator::irradianceAt(
+  const PolygonElement& leaf, const Vec3& point, const Vec3& normal, const Vec3& toward) const
 {
   PointIrradiance result;
   auto& irradiance = result.irradiance;
@@ -243,9 +243,6 @@ PointIrradiance PointEvaluator::irradianceAt(const PolygonElement& leaf, const V
         budget.knownVariance = around.variance, budget.pilot = 0, budget.minimum = std::min(budget.maximum, Tuning::latticeKnownRays),
         budget.knownSurfaces = largestBand(expected);
     }
-    else if (post && lattice && lattice->variance >= 0.0)
-      budget.knownVariance = lattice->variance, budget.pilot = 0,
-      budget.minimum = std::min(budget.maximum, Tuning::latticeKnownRays);
     // Elsewhere the hierarchy's links tell how the point's view is lit: their spread
     // is the least the rays' can be.
     if (!post)
@@ -443,10 +440,7 @@ void PointEvaluator::gatherLatticePosts(
       if (!leaf)
         continue;
       const Vec3 normal = grid.normalAt(i, j, hornNormals);
-      // The second pass's posts take their rays' count from the first's around them.
-      const PostLattice::Around coarse = firstPass ? PostLattice::Around{} : lattice.aroundCoarse(i, j);
-      const PointIrradiance result =
-        this->irradianceAt(*leaf, grid.post(i, j), normal, leaf->centre(), firstPass ? nullptr : &coarse);
+      const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), normal);
       PostSky::Value sky;
       if (!this->PostSkies || !this->PostSkies->found({ true, static_cast<std::size_t>(j) * grid.postsX() + i }, normal, sky))
         continue;

@@ -77,10 +77,8 @@ public:
   /// that share its orientation (the limit of the value from inside that surface,
   /// whatever leaf holds the point; the accuracy report's reference takes the same).
   /// The others move toward their leaf's centre.
-  /// `lattice`: at a post of the lattice's second pass, what the first pass's posts
-  /// around it found, whose spread sets its rays' count instead of a pilot.
-  PointIrradiance irradianceAt(const PolygonElement& leaf, const Vec3& point, const Vec3& normal, const Vec3& toward,
-    const PostLattice::Around* lattice = nullptr) const;
+  PointIrradiance irradianceAt(
+    const PolygonElement& leaf, const Vec3& point, const Vec3& normal, const Vec3& toward) const;
   /// Many points at once, in parallel, each moved toward its own centre (see above).
   void irradianceAt(const std::vector<const PolygonElement*>& leaves, const std::vector<Vec3>& points,
     const std::vector<Vec3>& normals, const std::vector<Vec3>& towards, std::vector<PointIrradiance>& results) const;

@@ -193,13 +193,6 @@ PostLattice::Around PostLattice::around(int i, int j) const
   return this->aroundCell(this->cellAt(i, j));
 }
 
-PostLattice::Around PostLattice::aroundCoarse(int i, int j) const
-{
-  const int li = std::clamp(i / this->Step, 0, std::max(0, this->Nx - 2));
-  const int lj = std::clamp(j / this->Step, 0, std::max(0, this->Ny - 2));
-  return this->aroundCell({ li - li % 2, lj - lj % 2, 2 });
-}
-
 bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
 {
   return this->interpolate(

@@ -87,9 +87,6 @@ public:
     double leastPerTerrainSeen = 0.0;
   };
   Around around(int i, int j) const;
-  /// The same over the corners of the coarse cell (the first pass's) holding post (i, j)
-  /// only: what the second pass may read while it gathers.
-  Around aroundCoarse(int i, int j) const;
   /// Light from surfaces at grid parameters (u, v), bilinear between the lattice's
   /// posts; false where none around holds a value.
   bool reflectedAt(double u, double v, Spectrum& reflected) const;
