@@ -231,8 +231,10 @@ TEST(TerrainSource, WindowStrideAndGeoBoundsSubsetTheSamePosts)
       double p[3], q[3];
       part.output()->GetPoint(i + j * dims[0], p);
       full.output()->GetPoint(col + (30 - row) * 41, q);
+      // (A subsampled grid places its posts between nodes of its own, 8 of its pixels
+      // apart: within the placement's interpolation, a few nm, of the full grid's.)
       for (int k = 0; k < 3; ++k)
-        EXPECT_NEAR(p[k], q[k], 1e-9);
+        EXPECT_NEAR(p[k], q[k], 1e-8);
     }
   }
   // The window's geotransform puts its pixel centres on the kept posts.
