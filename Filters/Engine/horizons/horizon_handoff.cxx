@@ -67,8 +67,8 @@ void limitSteps(int start, int step, int lo, int hi, int& first, int& last)
   int a = lo - start, b = hi - start;
   if (step < 0)
     a = -a, b = -b, std::swap(a, b), step = -step;
-  first = std::max(first, -horizon_lines::floorDivide(-a, step)); // ceil(a / step)
-  last = std::min(last, horizon_lines::floorDivide(b, step));
+  first = std::max(first, -floorDivide(-a, step)); // ceil(a / step)
+  last = std::min(last, floorDivide(b, step));
 }
 
 /// Hulls as bytes: whether the sender failed, then per hull its post, size and points.
@@ -148,8 +148,7 @@ void HorizonMap::sweepWindows(const std::vector<std::array<int, 2>>& slotSteps, 
   std::iota(schedule.begin(), schedule.end(), std::size_t{ 0 });
   std::stable_sort(schedule.begin(), schedule.end(),
     [&](std::size_t a, std::size_t b) { return depth[a][me] < depth[b][me]; });
-  schedule.erase(std::remove_if(schedule.begin(), schedule.end(), [&](std::size_t slot) { return this->copied(slot); }),
-    schedule.end());
+  this->dropCopiedSlots(schedule);
 
   const Window& own = windows[me];
   // The windows that hold posts of this one before it: a post they hold is theirs to
@@ -309,8 +308,7 @@ void HorizonMap::sweepSharedAzimuths(const std::vector<std::array<int, 2>>& slot
   }
   std::stable_sort(
     schedule.begin(), schedule.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
-  schedule.erase(std::remove_if(schedule.begin(), schedule.end(), [&](std::size_t slot) { return this->copied(slot); }),
-    schedule.end());
+  this->dropCopiedSlots(schedule);
   const std::size_t rounds = schedule.size();
   const int parts = split.parts(), part = split.part();
   for (std::size_t first = 0; first < rounds; first += static_cast<std::size_t>(parts))

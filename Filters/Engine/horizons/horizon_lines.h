@@ -5,6 +5,7 @@
 // for the planes' elevations HorizonSky compares them with).
 
 #include "base/angles.h"
+#include "base/floor_divide.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -14,13 +15,6 @@ namespace terralux
 {
 namespace horizon_lines
 {
-// Floor division and remainder for a positive divisor.
-template <typename Integer>
-inline Integer floorDivide(Integer a, Integer b)
-{
-  return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
 /// Where a line of step g crosses a cell edge or diagonal between two of its posts, as
 /// offsets from the step's first post: at fraction t of the step, on the edge from post
 /// (a0, b0) to (a1, b1) at fraction f, between cells c and d (the same for a diagonal).

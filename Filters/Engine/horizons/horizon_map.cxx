@@ -124,6 +124,12 @@ void HorizonMap::copyFromCoarser(const HorizonMap* coarser)
         this->Elevations.data() + slot * this->HeldCount);
 }
 
+void HorizonMap::dropCopiedSlots(std::vector<std::size_t>& schedule) const
+{
+  schedule.erase(std::remove_if(schedule.begin(), schedule.end(), [&](std::size_t slot) { return this->copied(slot); }),
+    schedule.end());
+}
+
 const std::vector<std::array<int, 2>>& HorizonMap::placeAzimuths(Density density)
 {
   // Azimuths in increasing order, each step's slot its rank.
@@ -469,7 +475,8 @@ HorizonMap::Post HorizonMap::find(const Vec3& point) const
   const double tolerance = 0.01 * std::min(std::hypot(this->Ux, this->Uy), std::hypot(this->Vx, this->Vy));
   const int ic = static_cast<int>(std::lround(u)), jc = static_cast<int>(std::lround(v));
   auto at = [&](int i, int j) {
-    return glm::dot(t.post(i, j) - point, t.post(i, j) - point) <= tolerance * tolerance && t.postUsed(i, j);
+    const Vec3 offset = t.post(i, j) - point;
+    return glm::dot(offset, offset) <= tolerance * tolerance && t.postUsed(i, j);
   };
   auto post = [&](int i, int j) {
     return this->holds(i, j) ? Post{ true, static_cast<std::size_t>(j) * t.postsX() + i } : Post{};

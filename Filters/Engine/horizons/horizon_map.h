@@ -234,6 +234,8 @@ private:
   void findCopiedSlots(const HorizonMap* coarser);
   void copyFromCoarser(const HorizonMap* coarser);
   bool copied(std::size_t slot) const { return !this->CoarserSlot.empty() && this->CoarserSlot[slot] >= 0; }
+  /// Takes the copied slots out of a sweep's schedule of slots.
+  void dropCopiedSlots(std::vector<std::size_t>& schedule) const;
   std::vector<std::array<int, 2>> SlotSteps;
   std::vector<int> CoarserSlot; // per slot, the coarser map's slot it copies, or -1: swept
   /// Sizes the map to the posts of Held.

@@ -31,7 +31,6 @@ namespace terralux
 using horizon_lines::atanOfPositive;
 using horizon_lines::Crossing;
 using horizon_lines::crossingsOf;
-using horizon_lines::floorDivide;
 
 namespace
 {

@@ -80,26 +80,30 @@ bool PostSky::found(const HorizonMap::Post& post, const Vec3& normal, Value& val
   const int nx = this->Terrain.postsX();
   if (!post || nx < 1)
     return false;
-  const int i = static_cast<int>(post.index % nx), j = static_cast<int>(post.index / nx);
-  if (!this->Held.holds(i, j) || !this->Used[this->Held.index(i, j)])
-    return false;
+  const auto* held = this->heldAt(static_cast<int>(post.index % nx), static_cast<int>(post.index / nx));
   // Stored as floats: the same normal to 1e-6 gives the same sky to about 1e-6 (the
   // normal the sky was found on, kept to 6e-8, need not be found again).
-  const std::array<float, valueSize>& held = this->Values[this->Held.index(i, j)];
-  if (glm::length(normalOf(held) - normal) > 1e-6)
+  if (!held || glm::length(normalOf(*held) - normal) > 1e-6)
     return false;
-  value = valueOf(held);
+  value = valueOf(*held);
   return true;
 }
 
 bool PostSky::foundAt(int i, int j, Value& value, Vec3& normal) const
 {
-  if (!this->Held.holds(i, j) || !this->Used[this->Held.index(i, j)])
+  const auto* held = this->heldAt(i, j);
+  if (!held)
     return false;
-  const std::array<float, valueSize>& held = this->Values[this->Held.index(i, j)];
-  value = valueOf(held);
-  normal = normalOf(held);
+  value = valueOf(*held);
+  normal = normalOf(*held);
   return true;
+}
+
+const std::array<float, PostSky::valueSize>* PostSky::heldAt(int i, int j) const
+{
+  if (!this->Held.holds(i, j) || !this->Used[this->Held.index(i, j)])
+    return nullptr;
+  return &this->Values[this->Held.index(i, j)];
 }
 
 PostSky::Value PostSky::valueOf(const std::array<float, valueSize>& held)

@@ -62,6 +62,8 @@ private:
   static constexpr int valueSize = maxBands + 4;
   static Value valueOf(const std::array<float, valueSize>& held);
   static Vec3 normalOf(const std::array<float, valueSize>& held);
+  /// Post (i, j)'s held values; null where this process does not hold it or it is unused.
+  const std::array<float, valueSize>* heldAt(int i, int j) const;
   UninitializedVector<std::array<float, valueSize>> Values;
   std::vector<std::uint8_t> Used;
 };

@@ -1,6 +1,7 @@
 #include "geodesy/terrain_placement.h"
 
 #include "base/error.h"
+#include "base/floor_divide.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -94,11 +95,6 @@ std::array<double, 4> cubicWeights(double t)
 // point's local position is the first plus its height times the second (ECEF is linear
 // in the height along the ellipsoid's normal, ENU a rotation of it).
 using NodePlace = std::array<double, 6>;
-
-int floorDivide(int a, int b)
-{
-  return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
 } // namespace
 
 bool TerrainPlacement::placeNodes(std::vector<NodePlace>& nodes, int& firstColumn, int& firstRow, int& columns) const
