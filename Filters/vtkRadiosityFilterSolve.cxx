@@ -146,6 +146,7 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
   addValue("SecondsPushPull", stats.secondsPushPull);
   addValue("SecondsHorizons", evaluation.horizonsSeconds);
   addValue("HorizonAzimuths", evaluation.horizonAzimuths);
+  addValue("HorizonRefinedPosts", static_cast<double>(evaluation.horizonRefinedPosts));
   addValue("SecondsPoints", pointsSeconds); // the lattice's gathers included
   addValue("SecondsLattice", evaluation.latticeSeconds);
   addValue("RaysRefine", static_cast<double>(stats.raysRefine));

@@ -148,7 +148,7 @@ int main(int argc, char* argv[])
   for (int a = 0; a < fields->GetNumberOfArrays(); ++a)
     if (const char* name = fields->GetArrayName(a);
         name && (std::strncmp(name, "Seconds", 7) == 0 || std::strncmp(name, "Rays", 4) == 0 ||
-                  std::strcmp(name, "HorizonAzimuths") == 0))
+                  std::strncmp(name, "Horizon", 7) == 0))
       std::cerr << " " << name << " " << fields->GetArray(a)->GetComponent(0, 0);
   std::cerr << "\n";
   return 0;

@@ -265,7 +265,7 @@ PointIrradiance PointEvaluator::irradianceAt(
     // and the error of the light from surfaces their hits read, which the hierarchy's
     // measured deficit estimates (as well as its sample tells: the same margin).
     result.irradianceError =
-      std::hypot(errorCoverage * light.standardError, this->skyError(normal, light.sky, !post)) +
+      std::hypot(errorCoverage * light.standardError, this->skyError(normal, light.sky, post)) +
       errorCoverage * this->ReadRelativeError * light.interreflected;
     // Rays that met no lit surface say nothing of a rare one they missed: the terrain and
     // objects the point sees (all but its sky) send at most the scene's largest radiosity.
@@ -308,7 +308,7 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // The lattice's posts cast no ray below their horizons where nothing sends light.
   const double readRelativeError = errorCoverage * this->ReadRelativeError + Tuning::latticeReadBias;
   result.irradianceError = spread + readRelativeError * largestBand(result.irradiance[ReflectedLight]) +
-    this->skyError(normal, sky.irradiance, false);
+    this->skyError(normal, sky.irradiance, post);
   return true;
 }
 

@@ -41,6 +41,9 @@ struct EvaluationStatistics
 {
   double horizonsSeconds = 0.0; ///< the posts' horizons (HorizonMap), skies and sun proofs
   int horizonAzimuths = 0;      ///< the azimuths of the map the posts' skies came from (0: none)
+  /// Posts whose horizons a coarse map missing their target found toward 32 azimuths
+  /// (every process's), the others' toward 16.
+  std::size_t horizonRefinedPosts = 0;
   double latticeSeconds = 0.0;  ///< the lattice of posts gathered first
   std::uint64_t latticeRays = 0;
 };
@@ -121,22 +124,26 @@ private:
   bool gathersAtPoints() const;
   /// The horizon map's azimuths: dense for many suns, coarse at the speed knob's coarse
   /// end (Tuning::coarseHorizonsTarget), else standard (which findPostHorizons narrows
-  /// to coarse where that serves every post: coarseSkyServes).
+  /// to coarse where that serves every post, or refines at the few it misses:
+  /// coarseSkyMisses).
   HorizonMap::Density horizonDensity() const;
-  /// PostHorizons toward `density` (the geometry's map) and Horizons over it.
-  void takeHorizons(HorizonMap::Density density);
-  /// Whether the sky from a coarse PostHorizons errs, by skyError, within the target of
-  /// every post of the grid's lattice of `stride` posts (1: every post), its sky at
-  /// least what it receives; with a split, at every process's.
-  bool coarseSkyServes(bool hornNormals, int stride) const;
+  /// PostHorizons toward `density` (the geometry's map; `exactly` that density, not a
+  /// finer one built before) and Horizons over it.
+  void takeHorizons(HorizonMap::Density density, bool exactly = false);
+  /// The share of the posts of the grid's lattice of `stride` posts (1: every post)
+  /// whose sky from a coarse PostHorizons errs beyond their target (their sky at least
+  /// what they receive), by a share of the sky it hides or, where that misses, by its
+  /// band between azimuths; with a split, of every process's. `missed`, where given: a
+  /// flag per post of this process's window, set where it misses; and the bands found
+  /// kept (BetweenAzimuths).
+  double coarseSkyMisses(bool hornNormals, int stride, std::vector<std::uint8_t>* missed = nullptr);
   /// The error estimate's part for the sky a point receives: the open sky's own error
-  /// (Tuning::openSkyError) and, where the sky comes from a post's horizons rather than
-  /// from rays (`byRays`), a share of the sky they hide from the plane at `normal`
-  /// (Tuning::horizonSkyError, or coarseHorizonSkyError from a coarse map): found at a
-  /// few dozen azimuths.
-  double skyError(const Vec3& normal, const Spectrum& sky, bool byRays) const;
-  /// The same from a post's horizons, its plane's open sky given.
-  double skyErrorUnder(const Spectrum& open, const Spectrum& sky) const;
+  /// (Tuning::openSkyError) and, at a post whose sky comes from its horizons rather
+  /// than from rays (no post), a share of the sky they hide from the plane at `normal`
+  /// (Tuning::horizonSkyError), or where they are interpolated between a coarse map's
+  /// 16 azimuths, coarseHorizonSkyError of it or betweenAzimuthsError times the band
+  /// found between them.
+  double skyError(const Vec3& normal, const Spectrum& sky, const HorizonMap::Post& post) const;
   /// Where a point's gather starts ("just above" it): `inside` (the point moved into its
   /// leaf) unless that sees the back of a surface, then the most open of four points two
   /// ray offsets from it diagonally in its plane, if clearly more open (the reference's
@@ -167,8 +174,10 @@ private:
   EvaluationStatistics Stats;
   std::unique_ptr<OpenSky> SkyAtPoints;     // the sky, for points' planes
   std::unique_ptr<HorizonSky> Horizons;     // the sky a height field's horizons hide
-  const HorizonMap* PostHorizons = nullptr; // its posts' horizons, the geometry's
-  const HorizonMap* SunHorizons = nullptr;  // the same map, for direct sun
+  const HorizonMap* PostHorizons = nullptr; // its posts' horizons: the geometry's, or RefinedHorizons
+  std::unique_ptr<HorizonMap> RefinedHorizons; // a coarse map refined at the posts it missed
+  const HorizonMap* ProofHorizons = nullptr; // the geometry's map: every post's horizons prove sights
+  const HorizonMap* SunHorizons = nullptr;  // that map, for direct sun
   struct MappedSun // each of the solver's suns on that map
   {
     HorizonMap::Sight sight;
@@ -178,6 +187,9 @@ private:
   };
   std::vector<MappedSun> MappedSuns;
   std::unique_ptr<PostSky> PostSkies;     // the sky each post receives
+  /// Per post of this process's window, the band between a coarse map's azimuths
+  /// (W/m^2, largest band) where coarseSkyMisses found it; -1 elsewhere.
+  std::vector<float> BetweenAzimuths;
   std::unique_ptr<PostSunlight> PostSuns; // the suns they prove seen or hidden
   std::unique_ptr<LeafLight> Leaves;      // what leaves receive, gathered
   std::unique_ptr<PostLattice> Lattice;   // posts gathered first

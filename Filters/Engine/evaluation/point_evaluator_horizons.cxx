@@ -46,78 +46,122 @@ void PointEvaluator::findPostHorizons(bool hornNormals)
       *this->HeightFieldGrid, *this->Horizons, *this->SkyAtPoints, hornNormals, this->Split, this->PostsHalo);
   };
   // Below the knob's coarse end the coarse map serves where the sky it gives is within
-  // every post's target (gentle terrain), judged on a sample of posts first so that
-  // rough terrain skips the coarse skies; elsewhere the standard map takes over and
-  // copies the coarse one's sweeps. A window alone judges only its own posts, whose
-  // horizons must not depend on the others': it keeps the standard map.
+  // every post's target (gentle terrain). Where it misses a few posts' (rough terrain),
+  // it is refined there alone (HorizonMap's refining constructor); where it misses
+  // many, the standard map takes over and copies the coarse one's sweeps. A sample of
+  // posts judges first, so that terrain rough throughout skips the coarse skies. A
+  // window alone judges only its own posts, whose horizons must not depend on the
+  // others': it keeps the standard map.
   const bool judged =
     density == HorizonMap::Density::Standard && !this->Solver.geometry()->seesGivenFarTerrain();
-  this->takeHorizons(judged ? HorizonMap::Density::Coarse : density);
-  // (A finer map once built serves a coarse ask: nothing to judge then.)
-  auto judgingCoarse = [&]() {
-    return judged && this->PostHorizons->azimuthCount() < static_cast<int>(HorizonMap::Density::Standard);
-  };
-  if (judgingCoarse() && !this->coarseSkyServes(hornNormals, Tuning::coarseSkySampleStride))
-    this->takeHorizons(HorizonMap::Density::Standard);
+  // The coarse map itself is judged, even where a finer one was built before (by
+  // another solve over this geometry): the values do not depend on what was.
+  this->takeHorizons(judged ? HorizonMap::Density::Coarse : density, judged);
+  bool judging = judged;
+  if (judging && this->coarseSkyMisses(hornNormals, Tuning::coarseSkySampleStride) > Tuning::refinedPostsShare)
+    this->takeHorizons(HorizonMap::Density::Standard), judging = false;
   findSkies();
-  if (judgingCoarse() && !this->coarseSkyServes(hornNormals, 1))
+  if (judging)
   {
-    this->takeHorizons(HorizonMap::Density::Standard);
-    findSkies();
+    const HorizonMap& coarse = *this->PostHorizons;
+    std::vector<std::uint8_t> missed;
+    const double share = this->coarseSkyMisses(hornNormals, 1, &missed);
+    if (share > Tuning::refinedPostsShare)
+    {
+      this->takeHorizons(HorizonMap::Density::Standard);
+      findSkies();
+    }
+    else if (share > 0.0)
+    {
+      this->RefinedHorizons = std::make_unique<HorizonMap>(coarse, missed);
+      this->PostHorizons = this->RefinedHorizons.get();
+      this->Horizons = std::make_unique<HorizonSky>(this->PointRays, *this->SkyAtPoints, this->PostHorizons);
+      this->PostSkies->findAgain(missed, *this->Horizons, *this->SkyAtPoints, hornNormals, this->Split);
+      this->Stats.horizonRefinedPosts = WorkSplit::total(this->Split, this->RefinedHorizons->refinedPosts());
+    }
   }
-  this->Stats.horizonAzimuths = this->PostHorizons->azimuthCount();
+  this->Stats.horizonAzimuths = this->ProofHorizons->azimuthCount();
   this->Stats.horizonsSeconds += secondsSince(start);
 }
 
-void PointEvaluator::takeHorizons(HorizonMap::Density density)
+void PointEvaluator::takeHorizons(HorizonMap::Density density, bool exactly)
 {
   // The one terrain's horizons: built by the first solve over this geometry, reused by
   // the next ones.
-  this->PostHorizons = &this->Solver.geometry()->horizons(0, density, this->Split);
+  this->PostHorizons = this->ProofHorizons = &this->Solver.geometry()->horizons(0, density, this->Split, exactly);
+  this->RefinedHorizons.reset();
   this->Horizons = std::make_unique<HorizonSky>(this->PointRays, *this->SkyAtPoints, this->PostHorizons);
 }
 
-bool PointEvaluator::coarseSkyServes(bool hornNormals, int stride) const
+double PointEvaluator::coarseSkyMisses(bool hornNormals, int stride, std::vector<std::uint8_t>* missed)
 {
   // The posts of this process's window every `stride` posts of the grid (the same
-  // lattice whoever judges), their skies found (PostSkies) or found here; every
-  // process's posts must pass, as one process's would.
+  // lattice whoever judges), their skies found (PostSkies) or found here; counted over
+  // every process's posts, as one process's would be.
   const TerrainGrid& grid = *this->HeightFieldGrid;
   const WorkSplit::Window own = WorkSplit::ownWindow(this->Split, grid.postsX(), grid.postsY());
+  const std::size_t ownX = own.empty() ? 0 : static_cast<std::size_t>(own.i1 - own.i0 + 1);
+  const std::size_t ownCount = own.empty() ? 0 : ownX * static_cast<std::size_t>(own.j1 - own.j0 + 1);
+  if (missed)
+  {
+    missed->assign(ownCount, 0);
+    this->BetweenAzimuths.assign(ownCount, -1.0f);
+  }
   auto firstOnLattice = [stride](int from) { return (from + stride - 1) / stride * stride; };
   // The terrain's mean radiosity (its root's), what a post's view of it sends on balance.
   const std::vector<TerrainPatch*>& roots = this->Solver.terrainRoots();
   const double terrainRadiosity = roots.empty() ? 0.0 : largestBand(roots[0]->emittance());
-  std::atomic<bool> serves{ true };
-  tbb::parallel_for(0, own.empty() ? 0 : (own.j1 - firstOnLattice(own.j0)) / stride + 1, [&](int row) {
+  const int rows = own.empty() ? 0 : (own.j1 - firstOnLattice(own.j0)) / stride + 1;
+  std::vector<std::array<std::size_t, 2>> counts(static_cast<std::size_t>(std::max(0, rows))); // judged, missed
+  tbb::parallel_for(0, rows, [&](int row) {
     const int j = firstOnLattice(own.j0) + row * stride;
-    for (int i = firstOnLattice(own.i0); i <= own.i1 && serves; i += stride)
+    for (int i = firstOnLattice(own.i0); i <= own.i1; i += stride)
     {
       if (!grid.postUsed(i, j))
         continue;
+      const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * grid.postsX() + i };
       PostSky::Value sky;
       Vec3 normal;
       if (!this->PostSkies || !this->PostSkies->foundAt(i, j, sky, normal))
       {
-        const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * grid.postsX() + i };
         normal = grid.normalAt(i, j, hornNormals);
         sky = PostSky::at(post, normal, *this->Horizons, *this->SkyAtPoints);
       }
       // The terrain the post sees, 1 - its sky view factor, errs as the sky it hides
       // does, and light from surfaces read in proportion to it (the lattice's reads)
       // with it. What the post receives is at least its sky: a target no larger than
-      // its own.
+      // its own. A share of the sky hidden first (most posts of gentle terrain end
+      // there); where that misses, the band between azimuths, closer.
       Spectrum open{};
       double openSolidAngle = 0.0;
       this->SkyAtPoints->irradiance(normal, open, openSolidAngle);
-      const double terrainSeenError = Tuning::coarseHorizonSkyError *
-        std::max(0.0, openSolidAngle / pi - sky.skyViewFactor) * terrainRadiosity;
-      if (this->skyErrorUnder(open, sky.irradiance) + terrainSeenError >
-        this->Options.errorTarget(largestBand(sky.irradiance)))
-        serves = false;
+      const double target = this->Options.errorTarget(largestBand(sky.irradiance));
+      const double openError = Tuning::openSkyError * largestBand(sky.irradiance);
+      const double hidden = std::max(0.0, largestBand(open) - largestBand(sky.irradiance));
+      bool misses = openError + Tuning::coarseHorizonSkyError *
+          (hidden + std::max(0.0, openSolidAngle / pi - sky.skyViewFactor) * terrainRadiosity) >
+        target;
+      if (misses)
+      {
+        const HiddenSky band = this->Horizons->hiddenAt(post, normal, true);
+        const double between = largestBand(band.betweenAzimuths);
+        misses = openError + Tuning::betweenAzimuthsError * (between + band.betweenAzimuthsSolidAngle / pi * terrainRadiosity) >
+          target;
+        if (missed)
+          this->BetweenAzimuths[static_cast<std::size_t>(j - own.j0) * ownX + (i - own.i0)] = static_cast<float>(between);
+      }
+      ++counts[static_cast<std::size_t>(row)][0];
+      counts[static_cast<std::size_t>(row)][1] += misses;
+      if (missed && misses)
+        (*missed)[static_cast<std::size_t>(j - own.j0) * ownX + (i - own.i0)] = 1;
     }
   });
-  return this->Split ? this->Split->allSucceeded(serves) : serves.load();
+  std::size_t judged = 0, misses = 0;
+  for (const auto& count : counts)
+    judged += count[0], misses += count[1];
+  judged = WorkSplit::total(this->Split, judged);
+  misses = WorkSplit::total(this->Split, misses);
+  return judged > 0 ? static_cast<double>(misses) / judged : 0.0;
 }
 
 HorizonMap::Density PointEvaluator::horizonDensity() const
@@ -135,7 +179,7 @@ void PointEvaluator::findSunHorizons()
   const std::vector<HElement*>& suns = this->Solver.suns();
   if (!grid || suns.empty())
     return;
-  const HorizonMap* map = this->PostHorizons;
+  const HorizonMap* map = this->ProofHorizons;
   const HorizonMap::Density density = this->horizonDensity();
   if (!map && suns.size() >= Tuning::sunsForHorizonMap && HorizonMap::fits(*grid, density))
   {
@@ -157,7 +201,7 @@ void PointEvaluator::findSunHorizons()
   // every sun, the hierarchy's suns being the points' own, all parallel).
   const bool everySunParallel =
     std::all_of(suns.begin(), suns.end(), [](const HElement* sun) { return sun->asExternal()->parallel(); });
-  if (this->PostSkies && map == this->PostHorizons && this->Solver.hierarchySuns() == suns && everySunParallel &&
+  if (this->PostSkies && map == this->ProofHorizons && this->Solver.hierarchySuns() == suns && everySunParallel &&
     suns.size() <= std::min(PostSunlight::maximumSuns, FinalGather::maximumSunsPerHit))
   {
     const auto start = std::chrono::steady_clock::now();
@@ -169,22 +213,27 @@ void PointEvaluator::findSunHorizons()
   }
 }
 
-double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, bool byRays) const
+double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, const HorizonMap::Post& post) const
 {
-  if (byRays || !this->SkyAtPoints)
-    return Tuning::openSkyError * largestBand(sky);
+  const double own = Tuning::openSkyError * largestBand(sky);
+  if (!post || !this->SkyAtPoints)
+    return own;
   Spectrum open{};
   double projectedSolidAngle = 0.0;
   this->SkyAtPoints->irradiance(normal, open, projectedSolidAngle);
-  return this->skyErrorUnder(open, sky);
-}
-
-double PointEvaluator::skyErrorUnder(const Spectrum& open, const Spectrum& sky) const
-{
-  const double own = Tuning::openSkyError * largestBand(sky);
-  const bool coarse = this->PostHorizons &&
-    this->PostHorizons->azimuthCount() <= static_cast<int>(HorizonMap::Density::Coarse);
-  const double share = coarse ? Tuning::coarseHorizonSkyError : Tuning::horizonSkyError;
-  return own + share * std::max(0.0, largestBand(open) - largestBand(sky));
+  const double hidden = std::max(0.0, largestBand(open) - largestBand(sky));
+  // Horizons interpolated between a coarse map's azimuths (every post of one, a
+  // refined map's but those it found) err by a share of the sky they hide, or where
+  // that missed the post's target, as its band between azimuths tells (on the post's
+  // own plane).
+  const HorizonMap& map = *this->PostHorizons;
+  const std::size_t cell = map.cellOf(post);
+  if (map.azimuthCount() > static_cast<int>(HorizonMap::Density::Coarse) && map.exactAt(cell))
+    return own + Tuning::horizonSkyError * hidden;
+  PostSky::Value found;
+  if (cell < this->BetweenAzimuths.size() && this->BetweenAzimuths[cell] >= 0.0f && this->PostSkies &&
+    this->PostSkies->found(post, normal, found))
+    return own + Tuning::betweenAzimuthsError * this->BetweenAzimuths[cell];
+  return own + Tuning::coarseHorizonSkyError * hidden;
 }
 } // namespace terralux

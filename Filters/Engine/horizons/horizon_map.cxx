@@ -73,7 +73,7 @@ struct HorizonMap::HullStack
   void copyTo(Hull& hull) const { hull.assign(this->storage.begin(), this->storage.begin() + this->size); }
 };
 
-HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSplit* split, const HorizonMap* coarser)
+HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSplit* split, const HorizonMap* lender)
   : Terrain(terrain)
 {
   this->fitMeanMap(terrain);
@@ -82,7 +82,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSp
   const std::vector<std::array<int, 2>>& slotSteps = this->placeAzimuths(density);
   this->Held = WorkSplit::ownWindow(split, terrain.postsX(), terrain.postsY());
   this->holdPosts();
-  this->findCopiedSlots(coarser);
+  this->findCopiedSlots(lender);
   if (!split)
   {
     this->Elevations.resize(this->HeldCount * slotSteps.size());
@@ -94,32 +94,32 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSp
     this->sweepWindows(slotSteps, *split);
   else
     this->sweepSharedAzimuths(slotSteps, *split);
-  this->copyFromCoarser(coarser);
+  this->copyFromLender(lender);
 }
 
-void HorizonMap::findCopiedSlots(const HorizonMap* coarser)
+void HorizonMap::findCopiedSlots(const HorizonMap* lender)
 {
-  if (!coarser)
+  if (!lender)
     return;
   // Only from a map of the same posts: the same terrain, mean map and held window.
-  if (&coarser->Terrain != &this->Terrain || coarser->Held.i0 != this->Held.i0 || coarser->Held.i1 != this->Held.i1 ||
-    coarser->Held.j0 != this->Held.j0 || coarser->Held.j1 != this->Held.j1)
-    throw Error("HorizonMap: a coarser map copied from must hold the same posts of the same terrain");
-  this->CoarserSlot.assign(this->SlotSteps.size(), -1);
+  if (&lender->Terrain != &this->Terrain || lender->Held.i0 != this->Held.i0 || lender->Held.i1 != this->Held.i1 ||
+    lender->Held.j0 != this->Held.j0 || lender->Held.j1 != this->Held.j1)
+    throw Error("HorizonMap: a map lending its sweeps must hold the same posts of the same terrain");
+  this->LentSlot.assign(this->SlotSteps.size(), -1);
   for (std::size_t slot = 0; slot < this->SlotSteps.size(); ++slot)
   {
-    const auto found = std::find(coarser->SlotSteps.begin(), coarser->SlotSteps.end(), this->SlotSteps[slot]);
-    if (found != coarser->SlotSteps.end())
-      this->CoarserSlot[slot] = static_cast<int>(found - coarser->SlotSteps.begin());
+    const auto found = std::find(lender->SlotSteps.begin(), lender->SlotSteps.end(), this->SlotSteps[slot]);
+    if (found != lender->SlotSteps.end())
+      this->LentSlot[slot] = static_cast<int>(found - lender->SlotSteps.begin());
   }
 }
 
-void HorizonMap::copyFromCoarser(const HorizonMap* coarser)
+void HorizonMap::copyFromLender(const HorizonMap* lender)
 {
   // (A process of an empty window holds no posts: nothing to copy.)
-  for (std::size_t slot = 0; slot < this->CoarserSlot.size() && this->HeldCount > 0; ++slot)
+  for (std::size_t slot = 0; slot < this->LentSlot.size() && this->HeldCount > 0; ++slot)
     if (this->copied(slot))
-      std::copy_n(coarser->Elevations.data() + static_cast<std::size_t>(this->CoarserSlot[slot]) * coarser->HeldCount,
+      std::copy_n(lender->Elevations.data() + static_cast<std::size_t>(this->LentSlot[slot]) * lender->HeldCount,
         this->HeldCount,
         this->Elevations.data() + slot * this->HeldCount);
 }

@@ -57,11 +57,11 @@ public:
   /// the hull it reaches to the window the line enters next (horizon_handoff.cxx);
   /// else each sweeps a share of the azimuths over the whole grid and broadcasts it.
   /// Either way every held horizon is one process's, bit for bit.
-  /// `coarser`: a map of the same terrain and split with fewer azimuths (or null),
-  /// whose sweeps this one copies instead of sweeping them again (the coarse azimuths
-  /// are every other standard one); the map is the same, bit for bit.
+  /// `lender`: another map of the same terrain and split (or null), whose sweeps
+  /// toward the azimuths both hold this one copies instead of sweeping them again (the
+  /// coarse azimuths are every other standard one); the map is the same, bit for bit.
   explicit HorizonMap(const TerrainGrid& terrain, Density density = Density::Standard,
-    const WorkSplit* split = nullptr, const HorizonMap* coarser = nullptr);
+    const WorkSplit* split = nullptr, const HorizonMap* lender = nullptr);
   /// The horizons of a window of a terrain whose far terrain is given (a process's
   /// piece and halo; RadiosityScene::farTerrain), as its rays see them (Visibility):
   /// the window's own triangles within `detailDistance` of the post (horizontally),
@@ -72,7 +72,16 @@ public:
   /// them (posts nearer its edge see it cut short). The azimuths are those of the far
   /// terrain's mean map, the same on every window; proofs bound both surfaces.
   HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance,
-    Density density = Density::Standard, const HorizonMap* coarser = nullptr);
+    Density density = Density::Standard, const HorizonMap* lender = nullptr);
+  /// The standard map of `coarse`'s posts, refined at chosen posts only: its coarse
+  /// azimuths copied, the others found at the posts `exact` flags (one flag per held
+  /// post, in the map's order) by walking each line from the post out as far as the
+  /// terrain can still rise above the horizon found (horizon_refinement.cxx), and
+  /// interpolated between the coarse azimuths elsewhere. Where the coarse sky misses
+  /// the target of a few posts (rough terrain), those take the standard sky for a walk
+  /// each instead of 16 more sweeps of the whole grid. Only exact posts' horizons prove
+  /// sights (View); the others' prove nothing.
+  HorizonMap(const HorizonMap& coarse, const std::vector<std::uint8_t>& exact);
   static constexpr int maximumAzimuths = static_cast<int>(Density::Dense);
   int azimuthCount() const { return static_cast<int>(this->Azimuths.size()); }
   /// Whether the map of `terrain` fits the 2 GiB it may take (2 bytes a post and
@@ -93,6 +102,11 @@ public:
   /// Whether the map holds the horizons of post (i, j): every post, or with a split
   /// this process's window.
   bool holds(int i, int j) const { return this->Held.holds(i, j); }
+  /// Whether a held post's horizons are all found (none interpolated: every post but
+  /// in a map refined at chosen posts).
+  bool exactAt(std::size_t cell) const { return this->Exact.empty() || this->Exact[cell] != 0; }
+  /// The posts a refined map found exact (of those this process holds); 0 otherwise.
+  std::size_t refinedPosts() const { return this->RefinedPosts; }
 
   /// The azimuths: radians counter-clockwise from +x, increasing, in [0, 2 pi).
   const std::vector<double>& azimuths() const { return this->Azimuths; }
@@ -229,15 +243,15 @@ public:
 private:
   /// The map's azimuths from its mean map; the steps of the slots, in order (SlotSteps).
   const std::vector<std::array<int, 2>>& placeAzimuths(Density density);
-  /// The slots whose step `coarser` holds (CoarserSlot), which the sweeps skip; then
-  /// copyFromCoarser fills them once the map is sized.
-  void findCopiedSlots(const HorizonMap* coarser);
-  void copyFromCoarser(const HorizonMap* coarser);
-  bool copied(std::size_t slot) const { return !this->CoarserSlot.empty() && this->CoarserSlot[slot] >= 0; }
+  /// The slots whose step `lender` holds (LentSlot), which the sweeps skip; then
+  /// copyFromLender fills them once the map is sized.
+  void findCopiedSlots(const HorizonMap* lender);
+  void copyFromLender(const HorizonMap* lender);
+  bool copied(std::size_t slot) const { return !this->LentSlot.empty() && this->LentSlot[slot] >= 0; }
   /// Takes the copied slots out of a sweep's schedule of slots.
   void dropCopiedSlots(std::vector<std::size_t>& schedule) const;
   std::vector<std::array<int, 2>> SlotSteps;
-  std::vector<int> CoarserSlot; // per slot, the coarser map's slot it copies, or -1: swept
+  std::vector<int> LentSlot; // per slot, the lender map's slot it copies, or -1: swept
   /// Sizes the map to the posts of Held.
   void holdPosts();
   void fitMeanMap(const TerrainGrid& grid);
@@ -273,6 +287,10 @@ private:
     const std::vector<Capture>& captures = {}, std::vector<Hull>* captured = nullptr) const;
   /// The same at every post of the grid.
   void sweepWholeGrid(int q, int p, std::uint16_t* out) const;
+  /// One post's horizon toward step (q, p) found alone, along its line from the post
+  /// out (the sweep's profile, the same value): a refined map's exact posts.
+  struct LineWalk;
+  std::uint16_t walkedHorizon(int i, int j, const LineWalk& line) const;
   /// A window's horizons toward step (q, p), at every post of its grid
   /// (horizon_window.cxx).
   void sweepWindow(int q, int p, const GivenFarTerrain& far, double detailDistance, std::uint16_t* out) const;
@@ -325,6 +343,9 @@ private:
   /// Azimuth by azimuth, the held posts in order; elevation / (pi / 2) x 65535.
   UninitializedVector<std::uint16_t> Elevations; // every value written by a sweep or a share
   std::size_t PostCount = 0;
+  /// A refined map's held posts whose horizons are all found (empty: every post).
+  std::vector<std::uint8_t> Exact;
+  std::size_t RefinedPosts = 0;
   WorkSplit::Window Held; // the posts whose horizons are kept
   std::size_t HeldX = 0, HeldCount = 0;
   bool HoldsAll = true;

@@ -106,7 +106,7 @@ HorizonMap::View::View(const HorizonMap& map, const Post& post)
   , I(static_cast<int>(post.index % static_cast<std::size_t>(map.Terrain.postsX())))
   , J(static_cast<int>(post.index / static_cast<std::size_t>(map.Terrain.postsX())))
   , Count(map.azimuthCount())
-  , Margin(map.complete() ? map.proofMargin() : std::numeric_limits<double>::infinity())
+  , Margin(map.complete() && map.exactAt(this->Cell) ? map.proofMargin() : std::numeric_limits<double>::infinity())
   , Slope(map.slopeAt(this->I, this->J))
 {
 }

@@ -310,6 +310,25 @@ void HorizonSky::hidePiece(const MapPiece& piece, double u0, double u1, const Ve
     result.irradiance[band] += std::max(0.0, sumAt(top, band) - sumAt(bottom, band));
 }
 
+void HorizonSky::hideThinBand(const MapPiece& piece, double u, double height, const Vec3& normal, HiddenSky& result) const
+{
+  // The band's height times the piece's rate at u: its terms' slopes (cos^2 u and
+  // sin u cos u, from the table's differences) times its row's radiance.
+  const double x = std::clamp(u / (0.5 * pi) * fineTerms, 0.0, static_cast<double>(fineTerms));
+  const int k = std::min(static_cast<int>(x), fineTerms - 1);
+  const double perStep = fineTerms / (0.5 * pi) * height;
+  const double along = (this->Terms[k + 1].along - this->Terms[k].along) * perStep;
+  const double up = (this->Terms[k + 1].up - this->Terms[k].up) * perStep;
+  const double weight = (normal.x * piece.dSin - normal.y * piece.dCos) * along + normal.z * piece.width * up;
+  if (!(weight > 0.0))
+    return;
+  const PieceRow& row = piece.rows[std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1)];
+  result.projectedSolidAngle += weight;
+  for (int band = 0; band < this->Bands; ++band)
+    result.irradiance[band] += std::max(0.0,
+      normal.x * row.rowS[band] * along - normal.y * row.rowC[band] * along + normal.z * row.rowW[band] * up);
+}
+
 int HorizonSky::columnsOf(
   double phi0, double phi1, const SinCos& start, const SinCos& end, std::array<Column, 16>& columns) const
 {
@@ -393,16 +412,33 @@ void HorizonSky::mapHorizons(const HorizonMap::Post& post, const Vec3& normal, M
   }
 }
 
-HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const
+HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal, bool betweenAzimuths) const
 {
   // The map's azimuths, each with its horizon, interpolated between them over pieces
   // as the sampled azimuths are.
-  HiddenSky result;
+  HiddenSky result, between;
   const MapAzimuths& table = this->MapTable;
   const int count = static_cast<int>(table.directions.size());
+  const bool coarse = betweenAzimuths && count <= static_cast<int>(HorizonMap::Density::Coarse);
   MapElevations elevations;
   std::array<bool, HorizonMap::maximumAzimuths> rises;
   this->mapHorizons(post, normal, elevations, rises);
+  // A coarse map's piece also takes the band between its linear horizon and the
+  // cubic's (Catmull-Rom through the sector's ends and their neighbours) at its middle.
+  auto hide = [&](const MapPiece& piece, int a, int b, double t) {
+    const double low = lowerBound(normal, piece.middle);
+    const double linear = (1.0 - t) * elevations[a] + t * elevations[b];
+    this->hidePiece(piece, low, linear, normal, result);
+    if (!coarse)
+      return;
+    const double before = elevations[(a + count - 1) % count], after = elevations[(b + 1) % count];
+    const double p0 = before, p1 = elevations[a], p2 = elevations[b], p3 = after;
+    const double cubic = 0.5 *
+      (2.0 * p1 + (p2 - p0) * t + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * t * t + (3.0 * (p1 - p2) + p3 - p0) * t * t * t);
+    const double from = std::max(low, std::min(linear, cubic)), to = std::max(low, std::max(linear, cubic));
+    if (to > from)
+      this->hideThinBand(piece, 0.5 * (from + to), to - from, normal, between);
+  };
   for (int a = 0; a < count; ++a)
   {
     const int b = (a + 1) % count;
@@ -410,19 +446,19 @@ HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal)
       continue;
     if (std::max(elevations[a], elevations[b]) <= lowSector)
     {
-      const MapPiece& sector = table.sectors[a];
-      this->hidePiece(sector, lowerBound(normal, sector.middle), 0.5 * (elevations[a] + elevations[b]), normal, result);
+      hide(table.sectors[a], a, b, 0.5);
       continue;
     }
     for (int j = 0; j < piecesPerSector; ++j)
-    {
-      const MapPiece& piece = table.pieces[a * piecesPerSector + j];
-      const double t = (j + 0.5) / piecesPerSector;
-      this->hidePiece(piece, lowerBound(normal, piece.middle), (1.0 - t) * elevations[a] + t * elevations[b], normal,
-        result);
-    }
+      hide(table.pieces[a * piecesPerSector + j], a, b, (j + 0.5) / piecesPerSector);
   }
   this->repeatLastBand(result);
+  if (coarse)
+  {
+    this->repeatLastBand(between);
+    result.betweenAzimuths = between.irradiance;
+    result.betweenAzimuthsSolidAngle = between.projectedSolidAngle;
+  }
   return result;
 }
 } // namespace terralux

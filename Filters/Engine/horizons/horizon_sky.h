@@ -31,6 +31,12 @@ struct HiddenSky
   Spectrum irradiance{};           ///< W/m^2 the horizon hides from the point's plane
   double projectedSolidAngle = 0.0; ///< sr, of the hidden sky (the view factor's pi x its loss)
   int rays = 0;
+  /// From a coarse map's horizons (16 azimuths), where asked: the sky between the
+  /// horizon interpolated linearly between them and by a cubic through their
+  /// neighbours, how far the interpolation may be off where the horizon bends between
+  /// azimuths (W/m^2, and its projected solid angle, sr). Zero otherwise.
+  Spectrum betweenAzimuths{};
+  double betweenAzimuthsSolidAngle = 0.0;
 };
 
 class HorizonSky
@@ -57,8 +63,9 @@ public:
   /// the visibility's offset) on a plane of unit normal n; `seed` turns the azimuths.
   HiddenSky hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed) const;
   /// The sky hidden from a post of the map's terrain on a plane of unit normal n, from
-  /// the map's horizons (no rays).
-  HiddenSky hiddenAt(const HorizonMap::Post& post, const Vec3& normal) const;
+  /// the map's horizons (no rays); with `betweenAzimuths`, from a coarse map, also the
+  /// band between them (HiddenSky::betweenAzimuths).
+  HiddenSky hiddenAt(const HorizonMap::Post& post, const Vec3& normal, bool betweenAzimuths = false) const;
   const HorizonMap* map() const { return this->Map; }
 
   struct SinCos
@@ -139,6 +146,8 @@ private:
   std::vector<SinCos> PieceBoundaries, PieceMiddles; // of the pieces, before a point's turn
   void sumPiece(MapPiece& piece) const;
   void hidePiece(const MapPiece& piece, double u0, double u1, const Vec3& normal, HiddenSky& result) const;
+  /// The same for a band `height` high about elevation u, from the piece's rate there.
+  void hideThinBand(const MapPiece& piece, double u, double height, const Vec3& normal, HiddenSky& result) const;
   struct MapAzimuths
   {
     std::vector<SinCos> directions;

@@ -230,7 +230,7 @@ std::vector<float> maximumWithinBox(std::vector<float> values, int w, int h, int
 } // namespace
 
 HorizonMap::HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, double detailDistance, Density density,
-  const HorizonMap* coarser)
+  const HorizonMap* lender)
   : Terrain(window)
 {
   this->fitMeanMap(window);
@@ -251,13 +251,13 @@ HorizonMap::HorizonMap(const TerrainGrid& window, const GivenFarTerrain& far, do
   const std::vector<std::array<int, 2>>& slotSteps = this->placeAzimuths(density);
   this->Held = { 0, window.postsX() - 1, 0, window.postsY() - 1 };
   this->holdPosts();
-  this->findCopiedSlots(coarser);
+  this->findCopiedSlots(lender);
   this->Elevations.resize(this->HeldCount * slotSteps.size());
   for (std::size_t slot = 0; slot < slotSteps.size(); ++slot)
     if (!this->copied(slot))
       this->sweepWindow(
         slotSteps[slot][0], slotSteps[slot][1], far, detailDistance, &this->Elevations[slot * this->PostCount]);
-  this->copyFromCoarser(coarser);
+  this->copyFromLender(lender);
 }
 
 void HorizonMap::findLocalRelief(const TerrainGrid& far, double detailDistance)

@@ -24,19 +24,37 @@ PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const O
   : Terrain(terrain)
   , Held(terrain.postsX(), terrain.postsY(), split, halo)
 {
+  this->findOwn(horizons, sky, hornNormals, split, nullptr);
+}
+
+void PostSky::findAgain(
+  const std::vector<std::uint8_t>& again, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals, const WorkSplit* split)
+{
+  this->findOwn(horizons, sky, hornNormals, split, &again);
+}
+
+void PostSky::findOwn(const HorizonSky& horizons, const OpenSky& sky, bool hornNormals, const WorkSplit* split,
+  const std::vector<std::uint8_t>* again)
+{
+  const TerrainGrid& terrain = this->Terrain;
   const int nx = terrain.postsX(), ny = terrain.postsY();
-  const std::size_t posts = this->Held.count();
   // With a split, each process finds the skies of its window's posts (whose horizons
   // it holds), and gets the others' (gather rays read them wherever they land).
   const WorkSplit::Window own = WorkSplit::ownWindow(split, nx, ny);
+  const std::size_t ownX = own.empty() ? 0 : static_cast<std::size_t>(own.i1 - own.i0 + 1);
   WorkSplit::partThenShare(
     split,
     [&]() {
-      this->Values.resize(posts);
-      this->Used.assign(posts, 0);
+      if (!again)
+      {
+        this->Values.resize(this->Held.count());
+        this->Used.assign(this->Held.count(), 0);
+      }
       tbb::parallel_for(own.j0, own.j1 + 1, [&](int j) {
         for (int i = own.i0; i <= own.i1; ++i)
         {
+          if (again && !(*again)[static_cast<std::size_t>(j - own.j0) * ownX + (i - own.i0)])
+            continue;
           HorizonMap::Post post;
           post.found = true;
           post.index = static_cast<std::size_t>(j) * nx + i;

@@ -33,6 +33,12 @@ public:
   PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals = false,
     const WorkSplit* split = nullptr, int halo = -1);
 
+  /// Finds again the skies of the posts of this process's window that `again` flags
+  /// (one flag per post of the window, row by row: a refined map's exact posts), from
+  /// `horizons`, and shares them as the constructor does (every process calls it).
+  void findAgain(const std::vector<std::uint8_t>& again, const HorizonSky& horizons, const OpenSky& sky,
+    bool hornNormals = false, const WorkSplit* split = nullptr);
+
   struct Value
   {
     Spectrum irradiance{};
@@ -54,6 +60,10 @@ public:
   bool interpolate(double u, double v, Spectrum& irradiance) const;
 
 private:
+  /// The skies of this process's window's posts (those `again` flags, where given),
+  /// then the others' it holds from their processes.
+  void findOwn(const HorizonSky& horizons, const OpenSky& sky, bool hornNormals, const WorkSplit* split,
+    const std::vector<std::uint8_t>* again);
   const TerrainGrid& Terrain;
   HeldPosts Held;
   // Per held post, row by row: irradiance, sky view factor and the normal it was found

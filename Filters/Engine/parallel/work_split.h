@@ -49,6 +49,21 @@ public:
   }
   /// Every process calls it alike: whether every process says `succeeded`.
   virtual bool allSucceeded(bool succeeded) const = 0;
+  /// Every process calls it alike: the sum of every process's `count` (this one's
+  /// alone without a split), the same on each.
+  static std::size_t total(const WorkSplit* split, std::size_t count)
+  {
+    if (!split)
+      return count;
+    std::size_t sum = 0;
+    for (int part = 0; part < split->parts(); ++part)
+    {
+      std::size_t value = part == split->part() ? count : 0;
+      split->share(&value, sizeof value, part);
+      sum += value;
+    }
+    return sum;
+  }
 
   /// Point to point, for work handed from window to window (the horizons' sweeps hand
   /// their lines' hulls on): whether this split has it (else such work uses shares).

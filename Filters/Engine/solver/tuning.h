@@ -33,11 +33,20 @@ struct Tuning
   /// The share of the sky a post's horizons hide that its error estimate takes: the
   /// horizons are interpolated between the map's azimuths, and no ray corrects them.
   static constexpr double horizonSkyError = 0.1;
-  /// The same from a coarse map (16 azimuths).
+  /// The same from a coarse map (16 azimuths), where a post's band between azimuths is
+  /// not known (a plane other than its own).
   static constexpr double coarseHorizonSkyError = 0.25;
+  /// A coarse map's post errs by up to this many times its band between azimuths
+  /// (HiddenSky::betweenAzimuths: the sky between its horizon interpolated linearly and
+  /// by a cubic).
+  static constexpr double betweenAzimuthsError = 4.0;
   /// Below coarseHorizonsTarget a coarse map serves where that share is within every
   /// post's target; every this many posts each way judge first (a 16th of them).
   static constexpr int coarseSkySampleStride = 4;
+  /// Where the coarse sky misses at most this share of the posts' targets, the coarse
+  /// map is refined at those posts alone (walked toward the other 16 azimuths); beyond
+  /// it, the standard map's 16 sweeps cost less.
+  static constexpr double refinedPostsShare = 0.2;
   /// The open sky's own relative error (OpenSky: patches split to level 5 where a
   /// plane's horizon crosses them), which every point's error estimate takes of its sky.
   static constexpr double openSkyError = 2e-3;

@@ -26,26 +26,28 @@ const Visibility& SceneGeometry::hierarchyRays() const
   return this->Rays->farRays();
 }
 
-const HorizonMap& SceneGeometry::horizons(std::size_t index, HorizonMap::Density density, const WorkSplit* split)
+const HorizonMap& SceneGeometry::horizons(
+  std::size_t index, HorizonMap::Density density, const WorkSplit* split, bool exactly)
 {
   const std::lock_guard<std::mutex> lock(this->HorizonsMutex);
   const auto& densities = HorizonMap::densities;
   MapsOfEachDensity& maps = this->Horizons[index];
   const std::size_t asked = std::find(densities.begin(), densities.end(), density) - densities.begin();
-  for (std::size_t k = densities.size(); k-- > asked;)
+  for (std::size_t k = exactly ? asked + 1 : densities.size(); k-- > asked;)
     if (maps[k])
       return *maps[k];
-  // A coarser map already built lends its sweeps (its azimuths are among these).
-  const HorizonMap* coarser = nullptr;
-  for (std::size_t k = 0; k < asked; ++k)
+  // A map already built lends its sweeps toward the azimuths both hold: the finest,
+  // which holds every coarser one's.
+  const HorizonMap* lender = nullptr;
+  for (std::size_t k = 0; k < densities.size(); ++k)
     if (maps[k])
-      coarser = maps[k].get();
+      lender = maps[k].get();
   // A window with its far terrain given sees that terrain beyond the detail distance.
   if (this->seesGivenFarTerrain())
     maps[asked] = std::make_unique<HorizonMap>(
-      *this->Terrains[index], this->GivenFar, this->Far.detailDistance, density, coarser);
+      *this->Terrains[index], this->GivenFar, this->Far.detailDistance, density, lender);
   else
-    maps[asked] = std::make_unique<HorizonMap>(*this->Terrains[index], density, split, coarser);
+    maps[asked] = std::make_unique<HorizonMap>(*this->Terrains[index], density, split, lender);
   return *maps[asked];
 }
 

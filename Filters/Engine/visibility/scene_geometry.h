@@ -42,10 +42,11 @@ public:
   /// The horizons of the posts of terrain `index` (a height field alone in its scene),
   /// built on the first call toward `density`'s azimuths (2 bytes a post and azimuth)
   /// and kept. A map of more azimuths, once built, also serves where fewer are asked
-  /// for (it is more exact and proves more).
+  /// for (it is more exact and proves more), unless `exactly` that density is asked
+  /// (a map judged against its posts' targets, whatever was built before).
   /// `split`: the processes that build it together (HorizonMap), all calling this alike.
-  const HorizonMap& horizons(
-    std::size_t index, HorizonMap::Density density = HorizonMap::Density::Standard, const WorkSplit* split = nullptr);
+  const HorizonMap& horizons(std::size_t index, HorizonMap::Density density = HorizonMap::Density::Standard,
+    const WorkSplit* split = nullptr, bool exactly = false);
 
   /// Whether rays see a given far terrain beyond the detail distance (a window's):
   /// its maps' horizons are each post's own, whatever window holds it.

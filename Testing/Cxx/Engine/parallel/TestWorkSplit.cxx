@@ -237,6 +237,64 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
   }
 }
 
+TEST(WorkSplit, RanksRefineACoarseMapAndFindItsSkiesAgainAsOneProcessDoes)
+{
+  // A coarse map refined at every third post (horizon_refinement.cxx), and the posts'
+  // skies found again there (PostSky::findAgain): each rank refines its window's posts
+  // from the whole grid and shares their skies, as one process would.
+  const auto grid = makeGrid(97, 81, 10.0, hills);
+  const Visibility rays(sceneOf({ grid.get() }));
+  const SkyHierarchy sky(CieGeneralSky(12, directionFromZenithAzimuth(50.0 * degree, 2.0)), 100.0, 5);
+  const OpenSky open(sky);
+  const int nx = grid->postsX(), ny = grid->postsY();
+  auto flagged = [](int i, int j) { return (i + 2 * j) % 3 == 0; };
+  auto flagsOf = [&](const WorkSplit::Window& w) {
+    std::vector<std::uint8_t> flags;
+    for (int j = w.j0; j <= w.j1; ++j)
+      for (int i = w.i0; i <= w.i1; ++i)
+        flags.push_back(flagged(i, j));
+    return flags;
+  };
+  const WorkSplit::Window whole{ 0, nx - 1, 0, ny - 1 };
+  const HorizonMap coarse(*grid, HorizonMap::Density::Coarse);
+  const HorizonMap alone(coarse, flagsOf(whole));
+  const HorizonSky coarseSky(rays, open, &coarse), aloneSky(rays, open, &alone);
+  PostSky aloneSkies(*grid, coarseSky, open, true);
+  aloneSkies.findAgain(flagsOf(whole), aloneSky, open, true);
+  for (const int parts : { 2, 3 })
+    for (const bool pointToPoint : { false, true })
+    {
+      ThreadRanks ranks(parts, ny, pointToPoint);
+      ranks.run([&](const ThreadRanks::Split& split) {
+        EXPECT_EQ(WorkSplit::total(&split, static_cast<std::size_t>(split.part() + 1)),
+          static_cast<std::size_t>(parts * (parts + 1) / 2));
+        const WorkSplit::Window own = WorkSplit::ownWindow(&split, nx, ny);
+        const HorizonMap coarseOwn(*grid, HorizonMap::Density::Coarse, &split);
+        const HorizonMap refined(coarseOwn, flagsOf(own));
+        const HorizonSky coarseOwnSky(rays, open, &coarseOwn), refinedSky(rays, open, &refined);
+        PostSky skies(*grid, coarseOwnSky, open, true, &split);
+        skies.findAgain(flagsOf(own), refinedSky, open, true, &split);
+        int differences = 0, flaggedHeld = 0;
+        for (int j = 0; j < ny; ++j)
+          for (int i = 0; i < nx; ++i)
+          {
+            const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * nx + i };
+            for (int a = 0; own.holds(i, j) && a < refined.azimuthCount(); ++a)
+              differences += refined.elevation(post, a) != alone.elevation(post, a);
+            flaggedHeld += own.holds(i, j) && flagged(i, j);
+            PostSky::Value value, expected;
+            const Vec3 normal = grid->normalAt(i, j, true);
+            ASSERT_TRUE(skies.found(post, normal, value));
+            ASSERT_TRUE(aloneSkies.found(post, normal, expected));
+            differences += value.irradiance[0] != expected.irradiance[0];
+            differences += value.skyViewFactor != expected.skyViewFactor;
+          }
+        EXPECT_EQ(refined.refinedPosts(), static_cast<std::size_t>(flaggedHeld));
+        EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts;
+      });
+    }
+}
+
 TEST(WorkSplit, ProcessesHoldThePostsWithinTheDetailDistanceOfTheirWindowsOnly)
 {
   // A turned grid of oblong cells (10 x 14 m): the halo counts the narrowest cell
