@@ -46,8 +46,9 @@
  * (vertex and line cells, and polygons of fewer than 3 points: no area, no light), seconds per
  * phase (`SecondsVisibilityBuild`, `SecondsHorizons` for the horizons of every post,
  * toward `HorizonAzimuths` azimuths: 16 at the knob's coarse end and, below it, where
- * the sky they give errs within every post's target (gentle terrain), else 32, or 64
- * for a year's suns;
+ * the sky they give errs within every post's target (gentle terrain) or misses it at
+ * a few posts, whose horizons toward the other 16 of 32 are then found alone
+ * (`HorizonRefinedPosts` of them: rough terrain), else 32, or 64 for a year's suns;
  * `SecondsRefine`, `SecondsGather`, `SecondsPushPull`, `SecondsPoints` for output 0's
  * point values, of which `SecondsLattice` for the lattice of posts gathered first) and
  * rays per phase (`RaysRefine`, `RaysPushPull` for gather and push-pull, `RaysPoints`,
