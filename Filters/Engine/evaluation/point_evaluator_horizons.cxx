@@ -120,6 +120,7 @@ double PointEvaluator::coarseSkyMisses(bool hornNormals, int stride, std::vector
       if (!grid.postUsed(i, j))
         continue;
       const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * grid.postsX() + i };
+      const std::size_t cell = static_cast<std::size_t>(j - own.j0) * ownX + (i - own.i0); // in `missed`
       PostSky::Value sky;
       Vec3 normal;
       if (!this->PostSkies || !this->PostSkies->foundAt(i, j, sky, normal))
@@ -145,15 +146,15 @@ double PointEvaluator::coarseSkyMisses(bool hornNormals, int stride, std::vector
       {
         const HiddenSky band = this->Horizons->hiddenAt(post, normal, true);
         const double between = largestBand(band.betweenAzimuths);
-        misses = openError + Tuning::betweenAzimuthsError * (between + band.betweenAzimuthsSolidAngle / pi * terrainRadiosity) >
-          target;
+        const double terrainBetween = band.betweenAzimuthsSolidAngle / pi * terrainRadiosity;
+        misses = openError + Tuning::betweenAzimuthsError * (between + terrainBetween) > target;
         if (missed)
-          this->BetweenAzimuths[static_cast<std::size_t>(j - own.j0) * ownX + (i - own.i0)] = static_cast<float>(between);
+          this->BetweenAzimuths[cell] = static_cast<float>(between);
       }
       ++counts[static_cast<std::size_t>(row)][0];
       counts[static_cast<std::size_t>(row)][1] += misses;
       if (missed && misses)
-        (*missed)[static_cast<std::size_t>(j - own.j0) * ownX + (i - own.i0)] = 1;
+        (*missed)[cell] = 1;
     }
   });
   std::size_t judged = 0, misses = 0;

@@ -169,7 +169,8 @@ std::uint16_t HorizonMap::walkedHorizon(int i, int j, const LineWalk& line) cons
       const float* e0 = position(a + c.a0, b + c.b0);
       const float* e1 = position(a + c.a1, b + c.b1);
       const double f = c.f;
-      see((e0[0] + f * (e1[0] - e0[0])) * line.dx + (e0[1] + f * (e1[1] - e0[1])) * line.dy, e0[2] + f * (e1[2] - e0[2]));
+      const double x = (e0[0] + f * (e1[0] - e0[0])) * line.dx + (e0[1] + f * (e1[1] - e0[1])) * line.dy;
+      see(x, e0[2] + f * (e1[2] - e0[2]));
     }
     if (!nextInGrid)
       break;

@@ -431,10 +431,11 @@ HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal,
     this->hidePiece(piece, low, linear, normal, result);
     if (!coarse)
       return;
-    const double before = elevations[(a + count - 1) % count], after = elevations[(b + 1) % count];
-    const double p0 = before, p1 = elevations[a], p2 = elevations[b], p3 = after;
-    const double cubic = 0.5 *
-      (2.0 * p1 + (p2 - p0) * t + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * t * t + (3.0 * (p1 - p2) + p3 - p0) * t * t * t);
+    const double p0 = elevations[(a + count - 1) % count], p1 = elevations[a], p2 = elevations[b],
+                 p3 = elevations[(b + 1) % count];
+    const double t2 = t * t, t3 = t2 * t;
+    const double cubic =
+      0.5 * (2.0 * p1 + (p2 - p0) * t + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * t2 + (3.0 * (p1 - p2) + p3 - p0) * t3);
     const double from = std::max(low, std::min(linear, cubic)), to = std::max(low, std::max(linear, cubic));
     if (to > from)
       this->hideThinBand(piece, 0.5 * (from + to), to - from, normal, between);

@@ -27,8 +27,8 @@ PostSky::PostSky(const TerrainGrid& terrain, const HorizonSky& horizons, const O
   this->findOwn(horizons, sky, hornNormals, split, nullptr);
 }
 
-void PostSky::findAgain(
-  const std::vector<std::uint8_t>& again, const HorizonSky& horizons, const OpenSky& sky, bool hornNormals, const WorkSplit* split)
+void PostSky::findAgain(const std::vector<std::uint8_t>& again, const HorizonSky& horizons, const OpenSky& sky,
+  bool hornNormals, const WorkSplit* split)
 {
   this->findOwn(horizons, sky, hornNormals, split, &again);
 }
