@@ -19,11 +19,18 @@ using namespace terralux_test;
 
 namespace
 {
-std::unique_ptr<TerrainGrid> hills(double reflectance)
+// Hills `height` m high (and a ridge 0.4 of that) over 10 m posts: gentle at 3 m, steep
+// enough at 10 m that the coarse map's sky misses a few posts, at 30 m many.
+std::unique_ptr<TerrainGrid> hillsOf(double height, double reflectance = 0.2)
 {
-  auto grid = makeGrid(41, 41, 10.0, Hills{ 30.0, 40.0, 55.0, 12.0, 23.0 });
+  auto grid = makeGrid(41, 41, 10.0, Hills{ height, 40.0, 55.0, 0.4 * height, 23.0 });
   grid->setUniformMaterial(uniformSpectrum(reflectance), uniformSpectrum(0.0));
   return grid;
+}
+
+std::unique_ptr<TerrainGrid> hills(double reflectance)
+{
+  return hillsOf(30.0, reflectance);
 }
 
 struct Solved
@@ -137,8 +144,7 @@ TEST(SceneGeometry, AtTheDefaultsACoarseMapServesWhereItsSkyMeetsEveryPostsTarge
   // Gentle hills: the sky from 16 azimuths errs within every post's target, and the
   // standard map is never built. Steep ones (30 m of relief over 10 m posts): it
   // misses too many, and the standard map serves.
-  auto gentle = makeGrid(41, 41, 10.0, Hills{ 3.0, 40.0, 55.0, 1.2, 23.0 });
-  gentle->setUniformMaterial(uniformSpectrum(0.2), uniformSpectrum(0.0));
+  const auto gentle = hillsOf(3.0);
   const Solved coarse = solve(*gentle, 1.0, nullptr);
   EXPECT_EQ(coarse.horizonAzimuths, 16);
   EXPECT_EQ(coarse.horizonRefinedPosts, 0u);
@@ -163,8 +169,7 @@ TEST(SceneGeometry, ACoarseMapMissingAFewPostsTargetsIsRefinedAtThoseAlone)
   // hollows), whose horizons toward the other 16 of 32 are then walked. Elsewhere the
   // sky is the coarse map's, as at the knob's coarse end (no judgement there); where
   // it differs, by less than that end's error estimate.
-  auto grid = makeGrid(41, 41, 10.0, Hills{ 10.0, 40.0, 55.0, 4.0, 23.0 });
-  grid->setUniformMaterial(uniformSpectrum(0.2), uniformSpectrum(0.0));
+  const auto grid = hillsOf(10.0);
   const Solved refined = solve(*grid, 1.0, nullptr);
   EXPECT_EQ(refined.horizonAzimuths, 16);
   EXPECT_GT(refined.horizonRefinedPosts, 0u);
