@@ -29,7 +29,7 @@ struct HorizonMap::LineWalk
   int q = 0, p = 0;
   std::vector<Crossing> crossings;
   double dx = 0.0, dy = 0.0; // the step's mean direction (0, 0: a grid without extent)
-  static constexpr int blockSize = 16; // highestOfBlocks's
+  static constexpr int blockSize = 16;
   /// A step's posts lie within a post of the box between its ends (|q|, |p| <= 5): a
   /// block's highest is taken over it grown by this many posts.
   static constexpr int blockMargin = 6;
@@ -39,29 +39,27 @@ struct HorizonMap::LineWalk
   {
     return (*this->highest)[static_cast<std::size_t>(j / blockSize) * this->blocksX + i / blockSize];
   }
+  /// The highest used post of each block, grown by the margin, blocksX a row.
+  static std::vector<float> highestOfBlocks(const TerrainGrid& t, int blocksX, int blocksY)
+  {
+    const int nx = t.postsX(), ny = t.postsY();
+    std::vector<float> highest(static_cast<std::size_t>(blocksX) * blocksY);
+    auto first = [](int block) { return std::max(0, block * blockSize - blockMargin); };
+    auto end = [](int block, int posts) { return std::min(posts, (block + 1) * blockSize + blockMargin); };
+    tbb::parallel_for(0, blocksY, [&](int bj) {
+      for (int bi = 0; bi < blocksX; ++bi)
+      {
+        float top = -std::numeric_limits<float>::infinity();
+        for (int j = first(bj); j < end(bj, ny); ++j)
+          for (int i = first(bi); i < end(bi, nx); ++i)
+            if (t.postUsed(i, j))
+              top = std::max(top, t.vertices()[3 * (static_cast<std::size_t>(j) * nx + i) + 2]);
+        highest[static_cast<std::size_t>(bj) * blocksX + bi] = top;
+      }
+    });
+    return highest;
+  }
 };
-
-namespace
-{
-/// The highest used post of each block of 16 posts, grown by 6 (LineWalk's).
-std::vector<float> highestOfBlocks(const TerrainGrid& t, int blocksX, int blocksY)
-{
-  const int nx = t.postsX(), ny = t.postsY(), size = 16, margin = 6; // LineWalk's
-  std::vector<float> highest(static_cast<std::size_t>(blocksX) * blocksY);
-  tbb::parallel_for(0, blocksY, [&](int bj) {
-    for (int bi = 0; bi < blocksX; ++bi)
-    {
-      float top = -std::numeric_limits<float>::infinity();
-      for (int j = std::max(0, bj * size - margin); j < std::min(ny, (bj + 1) * size + margin); ++j)
-        for (int i = std::max(0, bi * size - margin); i < std::min(nx, (bi + 1) * size + margin); ++i)
-          if (t.postUsed(i, j))
-            top = std::max(top, t.vertices()[3 * (static_cast<std::size_t>(j) * nx + i) + 2]);
-      highest[static_cast<std::size_t>(bj) * blocksX + bi] = top;
-    }
-  });
-  return highest;
-}
-} // namespace
 
 HorizonMap::HorizonMap(const HorizonMap& coarse, const std::vector<std::uint8_t>& exact)
   : HorizonMap(coarse)
@@ -73,15 +71,17 @@ HorizonMap::HorizonMap(const HorizonMap& coarse, const std::vector<std::uint8_t>
   this->Azimuths.clear(), this->AzimuthSteps.clear(), this->AzimuthDirections.clear();
   const std::vector<std::array<int, 2>>& slotSteps = this->placeAzimuths(Density::Standard);
   this->findCopiedSlots(&coarse);
+  this->Elevations = {}; // the coarse map's copy: copyFromLender takes them from it
   this->Elevations.resize(this->HeldCount * slotSteps.size());
   this->copyFromLender(&coarse);
   this->Exact = exact;
-  this->RefinedPosts = static_cast<std::size_t>(std::count(exact.begin(), exact.end(), std::uint8_t{ 1 }));
+  this->RefinedPosts =
+    static_cast<std::size_t>(std::count_if(exact.begin(), exact.end(), [](std::uint8_t flag) { return flag != 0; }));
   const int count = this->azimuthCount();
   const TerrainGrid& t = this->Terrain;
   const int blocksX = (t.postsX() + LineWalk::blockSize - 1) / LineWalk::blockSize;
   const std::vector<float> highest =
-    highestOfBlocks(t, blocksX, (t.postsY() + LineWalk::blockSize - 1) / LineWalk::blockSize);
+    LineWalk::highestOfBlocks(t, blocksX, (t.postsY() + LineWalk::blockSize - 1) / LineWalk::blockSize);
   for (int slot = 0; slot < count; ++slot)
   {
     if (this->copied(static_cast<std::size_t>(slot)))
@@ -136,9 +136,9 @@ std::uint16_t HorizonMap::walkedHorizon(int i, int j, const LineWalk& line) cons
       steepest = std::max(steepest, (z - z0) / (x - x0));
   };
   const double rise = this->HighestZ - z0;
-  const int size = LineWalk::blockSize;
   // Steps from (a, b) on that stay in its block, of this many posts each way.
-  auto stepsInBlock = [size](int from, int step) {
+  auto stepsInBlock = [](int from, int step) {
+    constexpr int size = LineWalk::blockSize;
     if (step == 0)
       return std::numeric_limits<int>::max();
     const int edge = step > 0 ? (from / size + 1) * size : from / size * size - 1; // the first post past the block
