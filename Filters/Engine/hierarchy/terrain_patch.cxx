@@ -42,14 +42,14 @@ TerrainRangeSummary subCellSummary(const TerrainGrid& grid, const ParameterRange
   return s;
 }
 
-TerrainRangeSummary summaryOf(const TerrainGrid& grid, const ParameterRange& r)
+TerrainRangeSummary summaryOf(const TerrainBlockSums& sums, const ParameterRange& r)
 {
   if (wholeCells(r))
   {
-    return grid.summarize(static_cast<int>(r.u0), static_cast<int>(r.v0), static_cast<int>(r.u1),
+    return sums.summarize(static_cast<int>(r.u0), static_cast<int>(r.v0), static_cast<int>(r.u1),
       static_cast<int>(r.v1));
   }
-  return subCellSummary(grid, r);
+  return subCellSummary(sums.grid(), r);
 }
 } // namespace
 
@@ -80,10 +80,12 @@ std::vector<ParameterRange> TerrainPatch::splitRange(const ParameterRange& r)
   return ranges;
 }
 
-TerrainPatch::TerrainPatch(std::uint64_t id, int level, ElementStore* store, const TerrainGrid* grid,
-  const ParameterRange& range, const TerrainRangeSummary& summary, TerrainPatch* up, int terrainIndex)
-  : PolygonElement(id, level, store, cornersOf(*grid, range).data(), 4, summary.reflectance, summary.emission, -1)
-  , Grid(grid)
+TerrainPatch::TerrainPatch(std::uint64_t id, int level, ElementStore* store,
+  std::shared_ptr<const TerrainBlockSums> sums, const ParameterRange& range, const TerrainRangeSummary& summary,
+  TerrainPatch* up, int terrainIndex)
+  : PolygonElement(id, level, store, cornersOf(sums->grid(), range).data(), 4, summary.reflectance, summary.emission, -1)
+  , Sums(std::move(sums))
+  , Grid(&Sums->grid())
   , Range(range)
   , Up(up)
   , TerrainIndex(terrainIndex)
@@ -99,18 +101,18 @@ TerrainPatch::TerrainPatch(std::uint64_t id, int level, ElementStore* store, con
     this->Normal = summary.areaVector / aligned;
     this->UnalignedArea = std::max(0.0, summary.area - aligned);
   }
-  this->Centre = grid->surfacePoint(0.5 * (range.u0 + range.u1), 0.5 * (range.v0 + range.v1)).position;
+  this->Centre = this->Grid->surfacePoint(0.5 * (range.u0 + range.u1), 0.5 * (range.v0 + range.v1)).position;
 }
 
-TerrainPatch* TerrainPatch::buildNode(ElementStore& store, const TerrainGrid& grid, int terrainIndex,
-  const ParameterRange& range, TerrainPatch* up, int level, std::vector<TerrainPatch*>& complete)
+TerrainPatch* TerrainPatch::buildNode(ElementStore& store, const std::shared_ptr<const TerrainBlockSums>& sums,
+  int terrainIndex, const ParameterRange& range, TerrainPatch* up, int level, std::vector<TerrainPatch*>& complete)
 {
-  const TerrainRangeSummary summary = summaryOf(grid, range);
+  const TerrainRangeSummary summary = summaryOf(*sums, range);
   if (summary.validCells == 0 || !(summary.area > 0.0))
   {
     return nullptr; // a hole, or cells of zero area: nothing to light
   }
-  TerrainPatch* patch = store.make<TerrainPatch>(level, &store, &grid, range, summary, up, terrainIndex);
+  TerrainPatch* patch = store.make<TerrainPatch>(level, &store, sums, range, summary, up, terrainIndex);
   if (patch->Complete)
   {
     complete.push_back(patch);
@@ -118,7 +120,7 @@ TerrainPatch* TerrainPatch::buildNode(ElementStore& store, const TerrainGrid& gr
   }
   for (const ParameterRange& part : splitRange(range))
   {
-    if (TerrainPatch* child = buildNode(store, grid, terrainIndex, part, patch, level + 1, complete))
+    if (TerrainPatch* child = buildNode(store, sums, terrainIndex, part, patch, level + 1, complete))
     {
       patch->Children.push_back(child);
     }
@@ -130,7 +132,7 @@ TerrainPatch* TerrainPatch::buildTree(
   ElementStore& store, const TerrainGrid& grid, int terrainIndex, std::vector<TerrainPatch*>& complete)
 {
   const ParameterRange whole{ 0.0, 0.0, static_cast<double>(grid.cellsX()), static_cast<double>(grid.cellsY()) };
-  return buildNode(store, grid, terrainIndex, whole, nullptr, 0, complete);
+  return buildNode(store, std::make_shared<const TerrainBlockSums>(grid), terrainIndex, whole, nullptr, 0, complete);
 }
 
 const TerrainPatch* TerrainPatch::leafHolding(double u, double v) const
@@ -184,11 +186,11 @@ const std::vector<HElement*>& TerrainPatch::children()
   }
   for (const ParameterRange& part : splitRange(this->Range))
   {
-    const TerrainRangeSummary summary = summaryOf(*this->Grid, part);
+    const TerrainRangeSummary summary = summaryOf(*this->Sums, part);
     if (!(summary.area > 0.0))
       continue; // degenerate cells (zero area) carry no light
     auto* child = this->Store->make<TerrainPatch>(
-      this->level() + 1, this->Store, this->Grid, part, summary, this, this->TerrainIndex);
+      this->level() + 1, this->Store, this->Sums, part, summary, this, this->TerrainIndex);
     child->Radiosity = this->Radiosity;
     child->Parent = this;
     this->Children.push_back(child);

@@ -10,7 +10,10 @@
 // each part is complete or empty, and never take part in the solution.
 
 #include "hierarchy/polygon_element.h"
+#include "terrain/terrain_block_sums.h"
 #include "terrain/terrain_grid.h"
+
+#include <memory>
 
 namespace terralux
 {
@@ -31,7 +34,8 @@ public:
   static TerrainPatch* buildTree(ElementStore& store, const TerrainGrid& grid, int terrainIndex,
     std::vector<TerrainPatch*>& complete);
 
-  TerrainPatch(std::uint64_t id, int level, ElementStore* store, const TerrainGrid* grid,
+  /// A patch of the grid whose block sums `sums` holds (shared by the tree's patches).
+  TerrainPatch(std::uint64_t id, int level, ElementStore* store, std::shared_ptr<const TerrainBlockSums> sums,
     const ParameterRange& range, const TerrainRangeSummary& summary, TerrainPatch* up, int terrainIndex);
 
   const ParameterRange& range() const { return this->Range; }
@@ -75,10 +79,11 @@ public:
   static std::vector<ParameterRange> splitRange(const ParameterRange& range);
 
 private:
-  static TerrainPatch* buildNode(ElementStore& store, const TerrainGrid& grid, int terrainIndex,
-    const ParameterRange& range, TerrainPatch* up, int level, std::vector<TerrainPatch*>& complete);
+  static TerrainPatch* buildNode(ElementStore& store, const std::shared_ptr<const TerrainBlockSums>& sums,
+    int terrainIndex, const ParameterRange& range, TerrainPatch* up, int level, std::vector<TerrainPatch*>& complete);
 
-  const TerrainGrid* Grid;
+  std::shared_ptr<const TerrainBlockSums> Sums;
+  const TerrainGrid* Grid; // Sums' grid
   ParameterRange Range;
   TerrainPatch* Up;
   int TerrainIndex;

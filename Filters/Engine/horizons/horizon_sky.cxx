@@ -33,7 +33,7 @@ HorizonSky::HorizonSky(const Visibility& rays, const OpenSky& sky, const Horizon
   , Map(map)
   , Side(sky.cellsPerSide())
 {
-  this->CellHeight = 0.5 * pi / this->Side;
+  this->RowsPerRadian = this->Side / (0.5 * pi);
   this->CellWidth = 2.0 * pi / this->Side;
   // Azimuth cell boundaries sit at CellStart + m CellWidth (the sky's azimuth v runs
   // west from south: v = 3 pi / 2 - phi); the cell between boundaries m and m + 1 has
@@ -107,7 +107,8 @@ HorizonSky::ElevationTerms HorizonSky::termsAt(double u) const
   // of a post's pieces start at the horizontal (its plane faces them): both terms 0.
   if (!(u > 0.0))
     return { 0.0, 0.0 };
-  const double x = std::clamp(u / (0.5 * pi) * fineTerms, 0.0, static_cast<double>(fineTerms));
+  constexpr double termsPerRadian = fineTerms / (0.5 * pi);
+  const double x = std::clamp(u * termsPerRadian, 0.0, static_cast<double>(fineTerms));
   const int k = std::min(static_cast<int>(x), fineTerms - 1);
   const double f = x - k;
   const ElevationTerms& a = this->Terms[k];
@@ -295,7 +296,7 @@ void HorizonSky::hidePiece(const MapPiece& piece, double u0, double u1, const Ve
     double along, up;
   };
   auto endAt = [&](double u, const ElevationTerms& terms) {
-    const int row = std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1);
+    const int row = std::clamp(static_cast<int>(u * this->RowsPerRadian), 0, this->Side - 1);
     const ElevationTerms& boundary = this->Terms[row * (fineTerms / this->Side)];
     return End{ &piece.rows[row], terms.along - boundary.along, terms.up - boundary.up };
   };
@@ -322,7 +323,7 @@ void HorizonSky::hideThinBand(const MapPiece& piece, double u, double height, co
   const double weight = (normal.x * piece.dSin - normal.y * piece.dCos) * along + normal.z * piece.width * up;
   if (!(weight > 0.0))
     return;
-  const PieceRow& row = piece.rows[std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1)];
+  const PieceRow& row = piece.rows[std::clamp(static_cast<int>(u * this->RowsPerRadian), 0, this->Side - 1)];
   result.projectedSolidAngle += weight;
   for (int band = 0; band < this->Bands; ++band)
     result.irradiance[band] += std::max(0.0,
@@ -386,7 +387,7 @@ void HorizonSky::hideBand(double phi0, double phi1, const SinCos& start, const S
 HorizonSky::RadianceTerms HorizonSky::columnSumAt(int iv, double u, const ElevationTerms& terms) const
 {
   // The sums up to the row boundary below u, and the part of u's row up to u.
-  const int row = std::clamp(static_cast<int>(u / this->CellHeight), 0, this->Side - 1);
+  const int row = std::clamp(static_cast<int>(u * this->RowsPerRadian), 0, this->Side - 1);
   RadianceTerms sum = this->ColumnSums[static_cast<std::size_t>(iv) * (this->Side + 1) + row];
   const ElevationTerms& boundary = this->Terms[row * (fineTerms / this->Side)];
   const Spectrum& l = this->Sky.cellRadiance(row, iv);

@@ -128,7 +128,7 @@ private:
   int Bands; // the sky's
   const HorizonMap* Map;
   int Side;                 // the sky's finest cells per parameter
-  double CellHeight = 0.0;  // radians of elevation per cell
+  double RowsPerRadian = 0.0; // the sky's rows per radian of elevation
   double CellWidth = 0.0;   // radians of azimuth per cell
   double CellStart = 0.0;   // the first azimuth cell boundary
   int FirstColumn = 0;      // the sky's azimuth index of the cell before CellStart, + 1

@@ -110,11 +110,13 @@ bool TerrainGrid::facesUp() const
   return up;
 }
 
-TerrainRangeSummary TerrainGrid::summarize(int i0, int j0, int i1, int j1) const
+TerrainRangeSummary TerrainGrid::sumCells(int i0, int j0, int i1, int j1) const
 {
   TerrainRangeSummary empty;
   empty.low = Vec3(std::numeric_limits<double>::max());
   empty.high = Vec3(-std::numeric_limits<double>::max());
+  if (!(i0 < i1 && j0 < j1))
+    return empty;
   auto add = [this](const tbb::blocked_range2d<int>& r, TerrainRangeSummary sum) {
     for (int j = r.rows().begin(); j < r.rows().end(); ++j)
       for (int i = r.cols().begin(); i < r.cols().end(); ++i)
@@ -142,24 +144,29 @@ TerrainRangeSummary TerrainGrid::summarize(int i0, int j0, int i1, int j1) const
       }
     return sum;
   };
-  auto join = [](TerrainRangeSummary a, const TerrainRangeSummary& b) {
-    a.area += b.area;
-    a.areaVector += b.areaVector;
-    a.low = glm::min(a.low, b.low);
-    a.high = glm::max(a.high, b.high);
-    a.validCells += b.validCells;
-    a.cells += b.cells;
-    for (int band = 0; band < maxBands; ++band)
-    {
-      a.reflectance[band] += b.reflectance[band];
-      a.emission[band] += b.emission[band];
-    }
-    return a;
-  };
   const tbb::blocked_range2d<int> range(j0, j1, 64, i0, i1, 64);
-  TerrainRangeSummary sum = static_cast<std::size_t>(i1 - i0) * (j1 - j0) > 16384
-    ? tbb::parallel_reduce(range, empty, add, join)
-    : add(range, empty);
+  return static_cast<std::size_t>(i1 - i0) * (j1 - j0) > 16384 ? tbb::parallel_reduce(range, empty, add, joined)
+                                                               : add(range, empty);
+}
+
+TerrainRangeSummary TerrainGrid::joined(TerrainRangeSummary a, const TerrainRangeSummary& b)
+{
+  a.area += b.area;
+  a.areaVector += b.areaVector;
+  a.low = glm::min(a.low, b.low);
+  a.high = glm::max(a.high, b.high);
+  a.validCells += b.validCells;
+  a.cells += b.cells;
+  for (int band = 0; band < maxBands; ++band)
+  {
+    a.reflectance[band] += b.reflectance[band];
+    a.emission[band] += b.emission[band];
+  }
+  return a;
+}
+
+TerrainRangeSummary TerrainGrid::finished(TerrainRangeSummary sum)
+{
   if (sum.area > 0.0)
   {
     for (int band = 0; band < maxBands; ++band)
@@ -169,6 +176,30 @@ TerrainRangeSummary TerrainGrid::summarize(int i0, int j0, int i1, int j1) const
     }
   }
   return sum;
+}
+
+bool TerrainGrid::validBounds(Vec3& low, Vec3& high) const
+{
+  using Box = std::array<Vec3, 2>;
+  const Box none{ Vec3(std::numeric_limits<double>::max()), Vec3(-std::numeric_limits<double>::max()) };
+  const Box box = tbb::parallel_reduce(
+    tbb::blocked_range<int>(0, this->cellsY()), none,
+    [this](const tbb::blocked_range<int>& rows, Box b) {
+      for (int j = rows.begin(); j < rows.end(); ++j)
+        for (int i = 0; i < this->cellsX(); ++i)
+          if (this->cellValid(i, j))
+            for (const Vec3& p : { this->post(i, j), this->post(i + 1, j), this->post(i, j + 1), this->post(i + 1, j + 1) })
+            {
+              b[0] = glm::min(b[0], p);
+              b[1] = glm::max(b[1], p);
+            }
+      return b;
+    },
+    [](const Box& a, const Box& b) { return Box{ glm::min(a[0], b[0]), glm::max(a[1], b[1]) }; });
+  if (!(box[0].x <= box[1].x))
+    return false;
+  low = box[0], high = box[1];
+  return true;
 }
 
 double TerrainGrid::meanCosine(int i0, int j0, int i1, int j1, const Vec3& d) const

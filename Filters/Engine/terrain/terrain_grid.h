@@ -81,7 +81,15 @@ public:
   /// Area vector (area x unit normal) of cell (i, j): both triangles.
   Vec3 cellAreaVector(int i, int j) const;
   /// Sum over the whole cells of [i0, i1) x [j0, j1) (parallel for large ranges).
-  TerrainRangeSummary summarize(int i0, int j0, int i1, int j1) const;
+  TerrainRangeSummary summarize(int i0, int j0, int i1, int j1) const { return finished(this->sumCells(i0, j0, i1, j1)); }
+  /// The same before its materials are divided by the area (area-weighted sums), so
+  /// that sums of ranges join (TerrainBlockSums); `finished` divides them.
+  TerrainRangeSummary sumCells(int i0, int j0, int i1, int j1) const;
+  static TerrainRangeSummary joined(TerrainRangeSummary a, const TerrainRangeSummary& b);
+  static TerrainRangeSummary finished(TerrainRangeSummary sum);
+  /// The bounding box of the valid cells' posts (as summarize's low and high, without
+  /// its areas); false where no cell is valid.
+  bool validBounds(Vec3& low, Vec3& high) const;
   /// Area-weighted mean of max(0, n . d) over the triangles of the whole cells of
   /// [i0, i1) x [j0, j1): the cosine factor of a rough surface toward direction d. Large
   /// ranges are estimated from at most about 64 x 64 evenly strided cells.

@@ -68,8 +68,8 @@ std::array<double, 2> cellParameters(
 
 double offsetFor(const TerrainGrid& terrain)
 {
-  const TerrainRangeSummary all = terrain.summarize(0, 0, terrain.cellsX(), terrain.cellsY());
-  return all.validCells > 0 ? offsetOf(all.low, all.high) : 1e-9;
+  Vec3 low, high;
+  return terrain.validBounds(low, high) ? offsetOf(low, high) : 1e-9;
 }
 
 // One Embree device for the process, created on first use and never released. A
@@ -132,11 +132,11 @@ void Visibility::build(const RadiosityScene& scene)
   }
   for (const TerrainGrid* terrain : scene.terrains)
   {
-    const TerrainRangeSummary all = terrain->summarize(0, 0, terrain->cellsX(), terrain->cellsY());
-    if (all.validCells > 0)
+    Vec3 terrainLow, terrainHigh;
+    if (terrain->validBounds(terrainLow, terrainHigh))
     {
-      low = glm::min(low, all.low);
-      high = glm::max(high, all.high);
+      low = glm::min(low, terrainLow);
+      high = glm::max(high, terrainHigh);
     }
   }
   this->Offset = offsetOf(low, high);
