@@ -264,8 +264,8 @@ PointIrradiance PointEvaluator::irradianceAt(
     // The rays' noise and the sky's error, independent of each other (in quadrature),
     // and the error of the light from surfaces their hits read, which the hierarchy's
     // measured deficit estimates (as well as its sample tells: the same margin).
-    result.irradianceError =
-      std::hypot(errorCoverage * light.standardError, this->skyError(normal, light.sky, post)) +
+    const double noise = errorCoverage * light.standardError, skyError = this->skyError(normal, light.sky, post);
+    result.irradianceError = std::sqrt(noise * noise + skyError * skyError) +
       errorCoverage * this->ReadRelativeError * light.interreflected;
     // Rays that met no lit surface say nothing of a rare one they missed: the terrain and
     // objects the point sees (all but its sky) send at most the scene's largest radiosity.

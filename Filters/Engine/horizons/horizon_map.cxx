@@ -437,7 +437,7 @@ std::array<double, 2> HorizonMap::reliefOf(const TerrainGrid& t)
 double HorizonMap::triangleSlope(const TerrainGrid::Triangle& triangle)
 {
   const Vec3 n = TerrainGrid::areaVector(triangle);
-  return n.z > 0.0 ? std::hypot(n.x, n.y) / n.z : 0.0;
+  return n.z > 0.0 ? std::sqrt(n.x * n.x + n.y * n.y) / n.z : 0.0; // not hypot: 2 M calls a grid, 5 times slower
 }
 
 void HorizonMap::measureRelief()
