@@ -17,6 +17,7 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStructuredGrid.h"
+#include "vtkTerraLuxLargeArrays.h"
 
 #include "evaluation/point_values.h"
 #include "hierarchy/polygon_element.h"
@@ -69,7 +70,7 @@ vtkSmartPointer<vtkDoubleArray> unsetArray(const char* name, int components, vtk
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
   array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(count);
+  vtkTerraLuxLargeArrays::Allocate(array, count);
   // On every core (one core's zeroing of the pages took 3 s of a 4097^2 grid's solve).
   vtkRadiosityOutputs::FillWithNaN(array);
   return array;

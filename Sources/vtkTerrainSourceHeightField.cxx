@@ -110,7 +110,7 @@ bool vtkTerrainSource::ConvertHeightField(vtkImageData* input, vtkStructuredGrid
 
   vtkNew<vtkPoints> points;
   points->SetDataType(this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
-  points->SetNumberOfPoints(count);
+  vtkTerraLuxLargeArrays::Allocate(points->GetData(), count);
   vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
     double xyz[3];
     for (vtkIdType k = begin; k < end; ++k)

@@ -14,6 +14,7 @@
 #include "vtkFloatArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkSmartPointer.h"
+#include "vtkTerraLuxLargeArrays.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -39,7 +40,7 @@ inline vtkSmartPointer<vtkDataArray> newValues(const char* name, int components,
   auto array = vtkSmartPointer<ArrayT>::New();
   array->SetName(name);
   array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
+  vtkTerraLuxLargeArrays::Allocate(array, tuples);
   return array;
 }
 

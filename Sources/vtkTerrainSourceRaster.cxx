@@ -245,7 +245,7 @@ bool vtkTerrainSource::ReadRaster(
   // Raster order -> grid order (GeoTransform::gridRow): reversed for north-up rasters.
   vtkNew<vtkPoints> points;
   points->SetDataType(this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
-  points->SetNumberOfPoints(count);
+  vtkTerraLuxLargeArrays::Allocate(points->GetData(), count);
   void* xyz = points->GetData()->GetVoidPointer(0);
   withHeights(elevation, [&](auto* heights) {
     if (points->GetDataType() == VTK_DOUBLE)

@@ -5,6 +5,7 @@
 // geometry splits its quads, so points sampled here lie exactly on what rays hit.
 // Parameters (u, v) are continuous post coordinates: u in [0, nx-1], v in [0, ny-1].
 
+#include "base/large_arrays.h"
 #include "hierarchy/radiosity_types.h"
 
 #include <array>
@@ -138,7 +139,7 @@ private:
 
   int Nx, Ny;
   Vec3 Origin;
-  std::vector<float> Xyz;
+  LargeVector<float> Xyz; // huge pages: 12 MB a 1025^2 grid
   std::vector<std::uint8_t> Valid;
   Spectrum UniformReflectance{};
   Spectrum UniformEmission{};

@@ -2,7 +2,10 @@
 // A std::vector whose resize leaves new elements of trivial types uninitialised, for
 // large arrays that parallel loops then fill. The system zeroes a page where it is
 // first touched; a std::vector's own zeroing touches every page on one core first (a
-// 4097^2 grid's horizon map: 1 GB, 2 s of one core while the other waited).
+// 4097^2 grid's horizon map: 1 GB, 2 s of one core while the other waited). Large ones
+// take huge pages (large_arrays.h).
+
+#include "base/large_arrays.h"
 
 #include <memory>
 #include <new>
@@ -13,7 +16,7 @@
 namespace terralux
 {
 template <typename T>
-struct DefaultInitAllocator : std::allocator<T>
+struct DefaultInitAllocator : LargeArrayAllocator<T>
 {
   template <typename U>
   struct rebind
