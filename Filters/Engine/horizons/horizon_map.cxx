@@ -472,11 +472,13 @@ HorizonMap::Post HorizonMap::find(const Vec3& point) const
   const double u = (this->Vy * x - this->Vx * y) / det, v = (this->Ux * y - this->Uy * x) / det;
   if (!(u > -1.0 && v > -1.0 && u < t.postsX() && v < t.postsY()))
     return {}; // also for points that are not numbers
-  const double tolerance = 0.01 * std::min(std::hypot(this->Ux, this->Uy), std::hypot(this->Vx, this->Vy));
+  // A hundredth of the shorter cell side, squared (a post is found once each, 1 M a grid).
+  const double tolerance2 =
+    1e-4 * std::min(this->Ux * this->Ux + this->Uy * this->Uy, this->Vx * this->Vx + this->Vy * this->Vy);
   const int ic = static_cast<int>(std::lround(u)), jc = static_cast<int>(std::lround(v));
   auto at = [&](int i, int j) {
     const Vec3 offset = t.post(i, j) - point;
-    return glm::dot(offset, offset) <= tolerance * tolerance && t.postUsed(i, j);
+    return glm::dot(offset, offset) <= tolerance2 && t.postUsed(i, j);
   };
   auto post = [&](int i, int j) {
     return this->holds(i, j) ? Post{ true, static_cast<std::size_t>(j) * t.postsX() + i } : Post{};

@@ -30,17 +30,20 @@ HorizonMap::Bearing HorizonMap::bearing(double azimuth) const
 
 double HorizonMap::edgeDistance(int i, int j, int edge) const
 {
+  // The cell's area over the side along the edge: the distance across a column or row.
   const double area = std::abs(this->Ux * this->Vy - this->Vx * this->Uy);
+  const double acrossU = area / std::sqrt(this->Vx * this->Vx + this->Vy * this->Vy);
+  const double acrossV = area / std::sqrt(this->Ux * this->Ux + this->Uy * this->Uy);
   switch (edge)
   {
     case 0:
-      return (i - this->ExtentU0) * area / std::hypot(this->Vx, this->Vy);
+      return (i - this->ExtentU0) * acrossU;
     case 1:
-      return (this->ExtentU1 - i) * area / std::hypot(this->Vx, this->Vy);
+      return (this->ExtentU1 - i) * acrossU;
     case 2:
-      return (j - this->ExtentV0) * area / std::hypot(this->Ux, this->Uy);
+      return (j - this->ExtentV0) * acrossV;
     default:
-      return (this->ExtentV1 - j) * area / std::hypot(this->Ux, this->Uy);
+      return (this->ExtentV1 - j) * acrossV;
   }
 }
 
