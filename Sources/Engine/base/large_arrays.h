@@ -37,16 +37,13 @@ inline void* allocate(std::size_t bytes)
 }
 } // namespace large_arrays
 
-/// std::allocator, but arrays of large_arrays::threshold bytes or more on huge pages.
+/// The heap's memory for small arrays, large_arrays::allocate's from its threshold on.
+/// No rebind member: std::allocator_traits rebinds it (and allocators built on it) by
+/// their template argument.
 template <typename T>
-struct LargeArrayAllocator : std::allocator<T>
+struct LargeArrayAllocator
 {
   using value_type = T;
-  template <typename U>
-  struct rebind
-  {
-    using other = LargeArrayAllocator<U>;
-  };
   LargeArrayAllocator() = default;
   template <typename U>
   LargeArrayAllocator(const LargeArrayAllocator<U>&) noexcept
@@ -55,13 +52,13 @@ struct LargeArrayAllocator : std::allocator<T>
   T* allocate(std::size_t n)
   {
     if (n * sizeof(T) < large_arrays::threshold)
-      return std::allocator<T>::allocate(n);
+      return static_cast<T*>(::operator new(n * sizeof(T)));
     return static_cast<T*>(large_arrays::allocate(n * sizeof(T)));
   }
   void deallocate(T* memory, std::size_t n) noexcept
   {
     if (n * sizeof(T) < large_arrays::threshold)
-      std::allocator<T>::deallocate(memory, n);
+      ::operator delete(memory);
     else
       std::free(memory);
   }

@@ -18,11 +18,6 @@ namespace terralux
 template <typename T>
 struct DefaultInitAllocator : LargeArrayAllocator<T>
 {
-  template <typename U>
-  struct rebind
-  {
-    using other = DefaultInitAllocator<U>;
-  };
   DefaultInitAllocator() = default;
   template <typename U>
   DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept
