@@ -85,7 +85,6 @@ TerrainPatch::TerrainPatch(std::uint64_t id, int level, ElementStore* store,
   TerrainPatch* up, int terrainIndex)
   : PolygonElement(id, level, store, cornersOf(sums->grid(), range).data(), 4, summary.reflectance, summary.emission, -1)
   , Sums(std::move(sums))
-  , Grid(&Sums->grid())
   , Range(range)
   , Up(up)
   , TerrainIndex(terrainIndex)
@@ -101,7 +100,7 @@ TerrainPatch::TerrainPatch(std::uint64_t id, int level, ElementStore* store,
     this->Normal = summary.areaVector / aligned;
     this->UnalignedArea = std::max(0.0, summary.area - aligned);
   }
-  this->Centre = this->Grid->surfacePoint(0.5 * (range.u0 + range.u1), 0.5 * (range.v0 + range.v1)).position;
+  this->Centre = this->Sums->grid().surfacePoint(0.5 * (range.u0 + range.u1), 0.5 * (range.v0 + range.v1)).position;
 }
 
 TerrainPatch* TerrainPatch::buildNode(ElementStore& store, const std::shared_ptr<const TerrainBlockSums>& sums,
@@ -202,7 +201,7 @@ SurfaceSample TerrainPatch::sample(int k, int n, SampleGenerator& random) const
 {
   double s, t;
   stratifiedPoint(k, n, random, s, t);
-  const TerrainPoint p = this->Grid->surfacePoint(
+  const TerrainPoint p = this->Sums->grid().surfacePoint(
     this->Range.u0 + s * this->Range.width(), this->Range.v0 + t * this->Range.height());
   return { p.position, p.normal };
 }
@@ -213,7 +212,7 @@ double TerrainPatch::receiverFactor(const Vec3& towardSender) const
   {
     return PolygonElement::receiverFactor(towardSender); // within a cell: nearly planar
   }
-  return this->Grid->meanCosine(static_cast<int>(this->Range.u0), static_cast<int>(this->Range.v0),
+  return this->Sums->grid().meanCosine(static_cast<int>(this->Range.u0), static_cast<int>(this->Range.v0),
     static_cast<int>(this->Range.u1), static_cast<int>(this->Range.v1), towardSender);
 }
 
@@ -249,7 +248,7 @@ double TerrainPatch::formFactorFrom(const Vec3& x, const Vec3& n) const
   for (int j = static_cast<int>(this->Range.v0); j < this->Range.v1; ++j)
     for (int i = static_cast<int>(this->Range.u0); i < this->Range.u1; ++i)
     {
-      for (const TerrainGrid::Triangle& triangle : this->Grid->cellTriangles(i, j))
+      for (const TerrainGrid::Triangle& triangle : this->Sums->grid().cellTriangles(i, j))
       {
         const Vec3 a = TerrainGrid::areaVector(triangle);
         const double length = glm::length(a);

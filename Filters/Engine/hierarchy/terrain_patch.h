@@ -54,7 +54,7 @@ public:
   /// False for structural patches that hold missing cells.
   bool complete() const { return this->Complete; }
   int terrain() const { return this->TerrainIndex; }
-  const TerrainGrid& grid() const { return *this->Grid; }
+  const TerrainGrid& grid() const { return this->Sums->grid(); }
 
   const std::vector<HElement*>& children() override;
   bool canSplit() const override;
@@ -82,8 +82,7 @@ private:
   static TerrainPatch* buildNode(ElementStore& store, const std::shared_ptr<const TerrainBlockSums>& sums,
     int terrainIndex, const ParameterRange& range, TerrainPatch* up, int level, std::vector<TerrainPatch*>& complete);
 
-  std::shared_ptr<const TerrainBlockSums> Sums;
-  const TerrainGrid* Grid; // Sums' grid
+  std::shared_ptr<const TerrainBlockSums> Sums; // and through it the grid
   ParameterRange Range;
   TerrainPatch* Up;
   int TerrainIndex;

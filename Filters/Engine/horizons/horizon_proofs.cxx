@@ -30,20 +30,21 @@ HorizonMap::Bearing HorizonMap::bearing(double azimuth) const
 
 double HorizonMap::edgeDistance(int i, int j, int edge) const
 {
-  // The cell's area over the side along the edge: the distance across a column or row.
+  // Across a column (edges u = const) or a row: the cell's area over its side along
+  // the edge.
   const double area = std::abs(this->Ux * this->Vy - this->Vx * this->Uy);
-  const double acrossU = area / std::sqrt(this->Vx * this->Vx + this->Vy * this->Vy);
-  const double acrossV = area / std::sqrt(this->Ux * this->Ux + this->Uy * this->Uy);
+  const double across = edge < 2 ? area / std::sqrt(this->Vx * this->Vx + this->Vy * this->Vy)
+                                 : area / std::sqrt(this->Ux * this->Ux + this->Uy * this->Uy);
   switch (edge)
   {
     case 0:
-      return (i - this->ExtentU0) * acrossU;
+      return (i - this->ExtentU0) * across;
     case 1:
-      return (this->ExtentU1 - i) * acrossU;
+      return (this->ExtentU1 - i) * across;
     case 2:
-      return (j - this->ExtentV0) * acrossV;
+      return (j - this->ExtentV0) * across;
     default:
-      return (this->ExtentV1 - j) * acrossV;
+      return (this->ExtentV1 - j) * across;
   }
 }
 

@@ -107,13 +107,17 @@ HorizonSky::ElevationTerms HorizonSky::termsAt(double u) const
   // of a post's pieces start at the horizontal (its plane faces them): both terms 0.
   if (!(u > 0.0))
     return { 0.0, 0.0 };
-  constexpr double termsPerRadian = fineTerms / (0.5 * pi);
-  const double x = std::clamp(u * termsPerRadian, 0.0, static_cast<double>(fineTerms));
-  const int k = std::min(static_cast<int>(x), fineTerms - 1);
-  const double f = x - k;
+  const auto [k, f] = termsEntry(u);
   const ElevationTerms& a = this->Terms[k];
   const ElevationTerms& b = this->Terms[k + 1];
   return { a.along + f * (b.along - a.along), a.up + f * (b.up - a.up) };
+}
+
+HorizonSky::TermsEntry HorizonSky::termsEntry(double u)
+{
+  const double x = std::clamp(u * termsPerRadian, 0.0, static_cast<double>(fineTerms));
+  const int k = std::min(static_cast<int>(x), fineTerms - 1);
+  return { k, x - k };
 }
 
 HiddenSky HorizonSky::hiddenAt(const Vec3& point, const Vec3& normal, std::uint64_t seed) const
@@ -315,9 +319,8 @@ void HorizonSky::hideThinBand(const MapPiece& piece, double u, double height, co
 {
   // The band's height times the piece's rate at u: its terms' slopes (cos^2 u and
   // sin u cos u, from the table's differences) times its row's radiance.
-  const double x = std::clamp(u / (0.5 * pi) * fineTerms, 0.0, static_cast<double>(fineTerms));
-  const int k = std::min(static_cast<int>(x), fineTerms - 1);
-  const double perStep = fineTerms / (0.5 * pi) * height;
+  const int k = termsEntry(u).k;
+  const double perStep = termsPerRadian * height;
   const double along = (this->Terms[k + 1].along - this->Terms[k].along) * perStep;
   const double up = (this->Terms[k + 1].up - this->Terms[k].up) * perStep;
   const double weight = (normal.x * piece.dSin - normal.y * piece.dCos) * along + normal.z * piece.width * up;

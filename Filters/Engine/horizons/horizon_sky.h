@@ -14,6 +14,7 @@
 // polygons): under a roof or a tree crown the lower directions of an azimuth can be
 // open again, and rays must sample them.
 
+#include "base/angles.h"
 #include "horizons/horizon_map.h"
 #include "hierarchy/radiosity_types.h"
 
@@ -120,6 +121,15 @@ private:
   ElevationTerms termsAt(double u) const; // from the table Terms
   /// Entries of Terms; a multiple of every sky's cells per side (at most 2^10).
   static constexpr int fineTerms = 4096;
+  static constexpr double termsPerRadian = fineTerms / (0.5 * pi);
+  /// Where elevation u lies in Terms: the entry at or below it and the fraction of a
+  /// step past it.
+  struct TermsEntry
+  {
+    int k;
+    double fraction;
+  };
+  static TermsEntry termsEntry(double u);
 
   /// Bands past the sky's own repeat its last: found once, at the end.
   void repeatLastBand(HiddenSky& result) const;

@@ -24,7 +24,7 @@ TerrainRangeSummary TerrainBlockSums::summarize(int i0, int j0, int i1, int j1) 
   const int bi1 = std::min(i1 / blockSide, this->BlocksX), bj1 = std::min(j1 / blockSide, this->BlocksY);
   if (i0 < 0 || j0 < 0 || !(bi0 < bi1 && bj0 < bj1))
     return this->Grid.summarize(i0, j0, i1, j1);
-  TerrainRangeSummary sum = this->Grid.sumCells(0, 0, 0, 0); // empty
+  TerrainRangeSummary sum = TerrainGrid::emptySum();
   for (int bj = bj0; bj < bj1; ++bj)
     for (int bi = bi0; bi < bi1; ++bi)
       sum = TerrainGrid::joined(sum, this->Blocks[static_cast<std::size_t>(bj) * this->BlocksX + bi]);

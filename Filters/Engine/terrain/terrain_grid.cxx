@@ -110,11 +110,17 @@ bool TerrainGrid::facesUp() const
   return up;
 }
 
-TerrainRangeSummary TerrainGrid::sumCells(int i0, int j0, int i1, int j1) const
+TerrainRangeSummary TerrainGrid::emptySum()
 {
   TerrainRangeSummary empty;
   empty.low = Vec3(std::numeric_limits<double>::max());
   empty.high = Vec3(-std::numeric_limits<double>::max());
+  return empty;
+}
+
+TerrainRangeSummary TerrainGrid::sumCells(int i0, int j0, int i1, int j1) const
+{
+  const TerrainRangeSummary empty = emptySum();
   if (!(i0 < i1 && j0 < j1))
     return empty;
   auto add = [this](const tbb::blocked_range2d<int>& r, TerrainRangeSummary sum) {

@@ -86,6 +86,8 @@ public:
   /// The same before its materials are divided by the area (area-weighted sums), so
   /// that sums of ranges join (TerrainBlockSums); `finished` divides them.
   TerrainRangeSummary sumCells(int i0, int j0, int i1, int j1) const;
+  /// The sums of no cell (bounds inverted, so that any post widens them).
+  static TerrainRangeSummary emptySum();
   static TerrainRangeSummary joined(TerrainRangeSummary a, const TerrainRangeSummary& b);
   static TerrainRangeSummary finished(TerrainRangeSummary sum);
   /// The bounding box of the valid cells' posts (as summarize's low and high, without
