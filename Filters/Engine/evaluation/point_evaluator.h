@@ -161,6 +161,7 @@ private:
   /// Post (i, j), between gathered lattice posts that agree on the radiosity of the
   /// terrain they see, takes its light from surfaces from them and its sky from its
   /// horizons, without a gather: true, with `result` (its sun already in it) filled.
+  /// A post inside the terrain never reads from a corner on its edge (Around::edgeCorner).
   bool readFromLattice(const HorizonMap::Post& post, const Vec3& normal, int i, int j,
     const PostLattice::Around& around, PointIrradiance& result) const;
 

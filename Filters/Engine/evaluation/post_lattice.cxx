@@ -36,6 +36,7 @@ PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* spli
   this->Variance.assign(posts, -1.0);
   this->Found.resize(posts);
   this->Received.assign(posts, 0.0);
+  this->Edge.assign(posts, 0);
   const std::size_t cells = this->HeldCells.empty() ? 0
     : static_cast<std::size_t>(this->HeldCells.i1 - this->HeldCells.i0 + 1) * (this->HeldCells.j1 - this->HeldCells.j0 + 1);
   this->Refined.assign(cells, CellRefined); // every cell fine until refine decides
@@ -151,6 +152,7 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
     found[band] = gathered.reflected[band];
   found[terrainSeenSlot] = std::max(0.0, gathered.terrainSeen);
   this->Received[k] = gathered.received;
+  this->Edge[k] = gathered.edge ? 1 : 0;
 }
 
 void PostLattice::share()
@@ -159,6 +161,7 @@ void PostLattice::share()
   this->Held.share(this->Variance, latticeTag);
   this->Held.share(this->Found, latticeTag + 1);
   this->Held.share(this->Received, latticeTag + 2);
+  this->Held.share(this->Edge, latticeTag + 3);
 }
 
 template <class Corner>
@@ -177,6 +180,7 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
     if (this->Variance[k] < 0.0)
       return;
     result.variance = std::max(result.variance, this->Variance[k]);
+    result.edgeCorner = result.edgeCorner || this->Edge[k] != 0;
     if (!this->seesTerrain(k))
       return; // tells nothing per terrain seen
     const double largest = this->largestPerTerrainSeen(k);

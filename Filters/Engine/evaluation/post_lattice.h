@@ -61,6 +61,7 @@ public:
     double variance = 0.0;         ///< of one ray's estimate
     double terrainSeen = 0.0;      ///< 1 - its horizons' sky view factor
     double received = 0.0;         ///< from the sun and its horizons' sky (largest bands)
+    bool edge = false;             ///< on the terrain's edge (see Around::edgeCorner)
   };
   /// Records a lattice post's gather (from any thread, each post once).
   void set(int i, int j, const Gathered& gathered);
@@ -79,12 +80,15 @@ public:
   /// What the gathered corners of the lattice cell holding post (i, j) found: the
   /// largest variance (-1 where none was gathered), and the largest and least light
   /// from surfaces per terrain seen (largest band; see perTerrainSeenAt), over the
-  /// corners that see terrain (both 0 where none does).
+  /// corners that see terrain (both 0 where none does); and whether a gathered corner
+  /// lies on the terrain's edge (the grid's border, or beside missing data): it sees
+  /// terrain on one side only, so per terrain seen it tells little of the posts inside.
   struct Around
   {
     double variance = -1.0;
     double largestPerTerrainSeen = 0.0;
     double leastPerTerrainSeen = 0.0;
+    bool edgeCorner = false;
   };
   Around around(int i, int j) const;
   /// Light from surfaces at grid parameters (u, v), bilinear between the lattice's
@@ -145,6 +149,7 @@ private:
   std::vector<double> Variance;
   std::vector<Beyond> Found;
   std::vector<double> Received;
+  std::vector<std::uint8_t> Edge; // Gathered::edge
   std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells
 };
 } // namespace terralux

@@ -17,6 +17,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 
 using namespace terralux;
 using namespace terralux_test;
@@ -59,6 +61,48 @@ std::vector<PointValues> pointValues(
   EvaluationPlan plan;
   plan.atPoints = atPoints;
   return polygonPointValues(PointEvaluator(solver, plan), scene, 0, 0, scene.points.size(), oneNormal, how, reached);
+}
+// Rolling hills with ripples (20 m high, 60-80 m long), 97 x 97 posts at 30 m, under a
+// sun 55 deg from the zenith and a clear sky, reflectance 0.2: light from surfaces is a
+// small, smooth share of what most posts receive. Solved fine enough that the error of
+// what the lattice reads from the hierarchy is small, then evaluated at the posts with
+// a lattice gathered first (`lattice`), or with every post gathering.
+struct LitHills
+{
+  std::unique_ptr<TerrainGrid> grid;
+  RadiosityOptions options;
+  std::unique_ptr<HierarchicalRadiosity> solver;
+  std::unique_ptr<PointEvaluator> points;
+  /// Post (i, j)'s values and the rays they cost.
+  PointIrradiance at(int i, int j, std::uint64_t& rays) const
+  {
+    const TerrainPatch* leaf = this->solver->terrainRoots()[0]->mostLitLeafAt(i, j);
+    EXPECT_NE(leaf, nullptr);
+    const std::uint64_t before = this->solver->raysCast();
+    const PointIrradiance result = this->points->irradianceAt(*leaf, this->grid->post(i, j), this->grid->postNormal(i, j));
+    rays = this->solver->raysCast() - before;
+    return result;
+  }
+};
+
+std::unique_ptr<LitHills> litHills(bool lattice)
+{
+  static const Direction sun = directionFromZenithAzimuth(55.0 * degree, 2.0);
+  static const SkyHierarchy sky(CieGeneralSky(12, sun), 120.0, 6);
+  auto hills = std::make_unique<LitHills>();
+  hills->grid = makeGrid(97, 97, 30.0, [](double x, double y) {
+    return rollingHills(x, y) + 20.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
+  });
+  hills->grid->setUniformMaterial(uniformSpectrum(0.2), Spectrum{});
+  hills->options.errorTolerance = 1e-3;
+  hills->solver = std::make_unique<HierarchicalRadiosity>(sceneOf(*hills->grid), hills->options);
+  hills->solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
+  hills->solver->setSky(&sky);
+  EXPECT_TRUE(hills->solver->solve());
+  EvaluationPlan plan;
+  plan.postLattice = lattice;
+  hills->points = std::make_unique<PointEvaluator>(*hills->solver, plan);
+  return hills;
 }
 } // namespace
 
@@ -218,49 +262,21 @@ TEST(PointValues, DirectSunAtPostsCastsRaysOnlyWhereHorizonsCannotTell)
 
 TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
 {
-  // Rolling hills under a sun and a clear sky, reflectance 0.2: on most posts light from
-  // surfaces is a small, smooth share of what they receive. Read between the lattice's
-  // gathered posts it agrees with each post's own gather within their error estimates,
-  // for a fraction of the rays; a post reads only where its estimate meets its target,
-  // and where ripples (20 m high, 60-80 m long) make the lattice's posts disagree, posts
-  // still gather.
-  const auto grid = makeGrid(97, 97, 30.0, [](double x, double y) {
-    return rollingHills(x, y) + 20.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
-  });
-  grid->setUniformMaterial(uniformSpectrum(0.2), Spectrum{});
-  const Direction sun = directionFromZenithAzimuth(55.0 * degree, 2.0);
-  const SkyHierarchy sky(CieGeneralSky(12, sun), 120.0, 6);
-  // A hierarchy fine enough that the error of what the lattice reads from it is small.
-  RadiosityOptions options;
-  options.errorTolerance = 1e-3;
-  auto lit = [&](bool lattice) {
-    auto solver = std::make_unique<HierarchicalRadiosity>(sceneOf(*grid), options);
-    solver->addSun(Vec3(sun[0], sun[1], sun[2]), uniformSpectrum(800.0));
-    solver->setSky(&sky);
-    EXPECT_TRUE(solver->solve());
-    EvaluationPlan plan;
-    plan.postLattice = lattice;
-    auto points = std::make_unique<PointEvaluator>(*solver, plan);
-    return std::make_pair(std::move(solver), std::move(points));
-  };
-  const auto readingLit = lit(true), gatheringLit = lit(false);
-  const HierarchicalRadiosity *reading = readingLit.first.get(), *gathering = gatheringLit.first.get();
-  const TerrainPatch& root = *reading->terrainRoots()[0];
+  // Read between the lattice's gathered posts, light from surfaces agrees with each
+  // post's own gather within their error estimates, for a fraction of the rays; a post
+  // reads only where its estimate meets its target, and where the ripples make the
+  // lattice's posts disagree, posts still gather.
+  const auto reading = litHills(true), gathering = litHills(false);
   int read = 0, gathered = 0;
   double readSum = 0.0, gatheredSum = 0.0;
   std::uint64_t rays[2] = { 0, 0 };
-  for (int j = 1; j < 97; j += 2)
-    for (int i = 1; i < 97; i += 2)
+  for (int j = 9; j < 88; j += 2) // away from the border's cells (see the next test)
+    for (int i = 9; i < 88; i += 2)
     {
-      const TerrainPatch* leaf = root.mostLitLeafAt(i, j);
-      ASSERT_NE(leaf, nullptr);
-      const std::uint64_t before[2] = { reading->raysCast(), gathering->raysCast() };
-      const PointIrradiance a = readingLit.second->irradianceAt(*leaf, grid->post(i, j), grid->postNormal(i, j));
-      const PointIrradiance b =
-        gatheringLit.second->irradianceAt(*gathering->terrainRoots()[0]->mostLitLeafAt(i, j), grid->post(i, j), grid->postNormal(i, j));
-      const std::uint64_t spent = reading->raysCast() - before[0];
+      std::uint64_t spent = 0, gatherRays = 0;
+      const PointIrradiance a = reading->at(i, j, spent), b = gathering->at(i, j, gatherRays);
       rays[0] += spent;
-      rays[1] += gathering->raysCast() - before[1];
+      rays[1] += gatherRays;
       EXPECT_EQ(a.irradiance[SunLight], b.irradiance[SunLight]);
       const double received = a.irradiance[SunLight][0] + b.irradiance[SkyLight][0] + b.irradiance[ReflectedLight][0];
       if (spent > 1) // more than the sun's one ray: gathered
@@ -276,13 +292,48 @@ TEST(PointValues, OpenPostsReadLightFromSurfacesBetweenLatticePosts)
       EXPECT_NEAR(a.irradiance[ReflectedLight][0] + a.irradiance[SkyLight][0],
         b.irradiance[ReflectedLight][0] + b.irradiance[SkyLight][0], a.irradianceError + b.irradianceError)
         << i << ", " << j;
-      EXPECT_LE(a.irradianceError, options.errorTarget(received) + b.irradianceError) << i << ", " << j;
+      EXPECT_LE(a.irradianceError, reading->options.errorTarget(received) + b.irradianceError) << i << ", " << j;
       EXPECT_NEAR(a.skyViewFactor, b.skyViewFactor, 0.01) << i << ", " << j;
     }
   EXPECT_GT(read, 3 * gathered) << read << " posts read, " << gathered << " gathered";
   EXPECT_GT(gathered, 0);
   EXPECT_NEAR(readSum, gatheredSum, 0.05 * gatheredSum);
   EXPECT_LT(rays[0], rays[1] / 3) << rays[0] << " rays against " << rays[1];
+}
+
+TEST(PointValues, PostsBesideTheBorderGatherRatherThanReadFromIt)
+{
+  // A lattice post on the DEM's border sees terrain on one side only and counts the void
+  // beyond as terrain seen: per terrain seen it finds less than the posts inside. Posts
+  // inside a lattice cell with a corner on the border gather; posts on the border read
+  // between their own kind. What the band inside receives from surfaces agrees with every post's own
+  // gather.
+  const auto reading = litHills(true), gathering = litHills(false);
+  int bandRead = 0, bandPosts = 0, borderRead = 0;
+  double bandSum = 0.0, gatheredSum = 0.0, errorSum = 0.0;
+  for (int j = 0; j < 97; ++j)
+    for (int i = 0; i < 97; i += (j == 0 || j == 96) ? 1 : 96)
+    {
+      std::uint64_t spent = 0, gatherRays = 0;
+      reading->at(i, j, spent);
+      borderRead += spent <= 1;
+    }
+  for (int j = 9; j < 88; j += 3)
+    for (int i : { 1, 2, 3, 93, 94, 95 }) // in a cell with a corner on the border, refined or not
+      for (const bool transposed : { false, true })
+      {
+        const int pi = transposed ? j : i, pj = transposed ? i : j;
+        std::uint64_t spent = 0, gatherRays = 0;
+        const PointIrradiance a = reading->at(pi, pj, spent), b = gathering->at(pi, pj, gatherRays);
+        ++bandPosts;
+        bandRead += spent <= 1;
+        bandSum += a.irradiance[ReflectedLight][0];
+        gatheredSum += b.irradiance[ReflectedLight][0];
+        errorSum += a.irradianceError + b.irradianceError;
+      }
+  EXPECT_EQ(bandRead, 0) << "of " << bandPosts << " posts beside the border";
+  EXPECT_GT(borderRead, 2 * 96) << "of 388 posts on the border read between their own kind";
+  EXPECT_NEAR(bandSum, gatheredSum, 0.03 * gatheredSum) << "error estimates sum to " << errorSum;
 }
 
 TEST(PointValues, APostSeesTheThinBandOfALowRidgeAsItsOwnPlaneDoes)

@@ -166,3 +166,44 @@ TEST(PostLattice, ReadsPerTerrainSeenByTheTerrainEachCornerSees)
   EXPECT_DOUBLE_EQ(open.around(1, 1).leastPerTerrainSeen, 0.0);
   EXPECT_EQ(open.around(1, 1).variance, 1.0);
 }
+
+// A corner on the terrain's edge (the grid's border, or beside missing data) sees
+// terrain on one side only: the cells it is a corner of say so, whether it was gathered
+// in the first pass or the second; a corner without data does not count.
+TEST(PostLattice, TellsWhetherACornerLiesOnTheTerrainsEdge)
+{
+  PostLattice lattice(25, 25, 4); // lattice posts every 4th, coarse cells of 8 posts
+  auto gathered = [](bool edge) {
+    PostLattice::Gathered g;
+    g.reflected = uniformSpectrum(1.0);
+    g.variance = 1.0;
+    g.terrainSeen = 0.1;
+    g.received = 100.0;
+    g.edge = edge;
+    return g;
+  };
+  for (int j : { 0, 8, 16, 24 })
+    for (int i : { 0, 8, 16, 24 })
+      if (!(i == 24 && j == 24)) // no data there
+        lattice.set(i, j, gathered(i == 0 || j == 0 || ((i == 24 || j == 24) && j != 8)));
+  lattice.refine(0.01);
+  EXPECT_TRUE(lattice.around(3, 3).edgeCorner);   // cell (0, 0): its corners at i = 0, j = 0
+  EXPECT_TRUE(lattice.around(12, 3).edgeCorner);  // cell (1, 0): corners at j = 0
+  EXPECT_FALSE(lattice.around(12, 12).edgeCorner); // cell (1, 1): all inside
+  EXPECT_TRUE(lattice.around(20, 12).edgeCorner); // cell (2, 1): (24, 16) on the edge
+  // Cell (2, 2) lacks its (24, 24) corner and is refined: the second pass's corners.
+  EXPECT_TRUE(lattice.gatheredInPass(20, 20, false));
+  lattice.set(20, 20, gathered(false));
+  lattice.set(16, 20, gathered(false));
+  lattice.set(20, 16, gathered(false));
+  EXPECT_FALSE(lattice.around(17, 17).edgeCorner); // (16, 16), (20, 16), (16, 20), (20, 20)
+  lattice.set(24, 20, gathered(true));
+  EXPECT_TRUE(lattice.around(21, 17).edgeCorner);  // (24, 16) and (24, 20) on the edge
+  EXPECT_TRUE(lattice.around(21, 21).edgeCorner);  // (24, 20); (24, 24) has no data
+  PostLattice inside(25, 25, 4);
+  for (int j : { 0, 8, 16, 24 })
+    for (int i : { 0, 8, 16, 24 })
+      inside.set(i, j, gathered(false));
+  inside.refine(0.01);
+  EXPECT_FALSE(inside.around(3, 3).edgeCorner);
+}

@@ -378,6 +378,7 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
     g.variance = 0.5 + 0.01 * i;
     g.terrainSeen = 0.3 + 0.002 * j;
     g.received = 100.0;
+    g.edge = i == 0 || j == 0 || i == nx - 1 || j == ny - 1;
     return g;
   };
   auto gatherLattice = [&](PostLattice& lattice, const WorkSplit* split) {
@@ -398,8 +399,8 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
   runOnBandsAndBlocks(nx, ny, [&](const ThreadRanks::Split& split, bool pointToPoint, std::size_t parts) {
     PostLattice lattice(nx, ny, step, &split, halo);
     gatherLattice(lattice, &split);
-    // Each share sends to (or broadcasts from) each other process, per vector.
-    EXPECT_EQ(split.Shares + split.Sends, 2 * 3 * static_cast<int>(pointToPoint ? parts - 1 : parts));
+    // Each share sends to (or broadcasts from) each other process, per vector (four).
+    EXPECT_EQ(split.Shares + split.Sends, 2 * 4 * static_cast<int>(pointToPoint ? parts - 1 : parts));
     const HeldPosts read(nx, ny, &split, halo); // where gather rays read
     int differences = 0, coarse = 0, refined = 0;
     for (int j = read.own().j0; j <= read.own().j1; ++j)
@@ -407,7 +408,7 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
       {
         const PostLattice::Around a = lattice.around(i, j), b = alone.around(i, j);
         differences += a.variance != b.variance || a.largestPerTerrainSeen != b.largestPerTerrainSeen ||
-          a.leastPerTerrainSeen != b.leastPerTerrainSeen;
+          a.leastPerTerrainSeen != b.leastPerTerrainSeen || a.edgeCorner != b.edgeCorner;
         Spectrum r, s;
         const bool found = lattice.reflectedAt(i + 0.3, j + 0.6, r);
         differences += found != alone.reflectedAt(i + 0.3, j + 0.6, s) || (found && r != s);
