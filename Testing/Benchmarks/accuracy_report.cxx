@@ -38,6 +38,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -255,6 +257,12 @@ int computeReference(const terralux_bench::AccuracyScene& input, const std::stri
         c->standardError = std::sqrt(c->standardError) / weight[k];
       }
   }
+  // Which band of reflected light a point falls in, from an estimate of its own (an
+  // eighth of the directions, seeds 2^40 draws away, its first side alone): chosen by
+  // the reference itself, a band would hold the points its noise pushed in, and read
+  // every solve low against it at the band's lower edge (docs/benchmarks.md).
+  constexpr std::uint64_t bandSeeds = std::uint64_t(1) << 40;
+  const auto forBands = tracer.irradianceAt(s.points, s.normals, std::max(64, samples / 8), bandSeeds);
   std::vector<ReferencePoint> values(s.points.size());
   for (std::size_t k = 0; k < values.size(); ++k)
   {
@@ -269,6 +277,12 @@ int computeReference(const terralux_bench::AccuracyScene& input, const std::stri
   const std::uint64_t n = values.size();
   file.write(reinterpret_cast<const char*>(&n), sizeof n);
   file.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(n * sizeof(ReferencePoint)));
+  // Beside it, so that earlier releases' solves still read the reference.
+  std::vector<double> bands(n);
+  for (std::size_t k = 0; k < n; ++k)
+    bands[k] = forBands[k].reflected.mean;
+  std::ofstream bandFile(path + ".bands", std::ios::binary);
+  bandFile.write(reinterpret_cast<const char*>(bands.data()), static_cast<std::streamsize>(n * sizeof(double)));
   std::printf("{\"scene\": \"%s\", \"reference_seconds\": %.3f, \"points\": %zu, \"samples\": %d}\n",
     input.name.c_str(), seconds(start), values.size(), samples);
   return 0;
@@ -453,6 +467,29 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     }
   }
 
+  // Reflected light by band of what the points receive of it (W/m^2, as the reference's
+  // own estimate for bands tells): the bright posts of a snowy bowl judged on their own,
+  // not drowned in the scene's mean. None without that estimate (an older reference).
+  std::vector<double> forBands(n);
+  std::ifstream bandFile(referencePath + ".bands", std::ios::binary);
+  bandFile.read(reinterpret_cast<char*>(forBands.data()), static_cast<std::streamsize>(n * sizeof(double)));
+  std::string reflectedBands = bandFile ? "[" : "null";
+  const double bandEdges[] = { 0.0, 1.0, 10.0, 50.0, std::numeric_limits<double>::infinity() };
+  for (int band = 0; bandFile && band + 1 < static_cast<int>(std::size(bandEdges)); ++band)
+  {
+    std::vector<bool> inBand(n);
+    std::size_t posts = 0;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const double chosenBy = forBands[k];
+      posts += inBand[k] = used[k] && chosenBy >= bandEdges[band] && chosenBy < bandEdges[band + 1];
+    }
+    reflectedBands += (band ? ", " : "") + std::string("{\"from\": ") + std::to_string(bandEdges[band]) +
+      ", \"posts\": " + std::to_string(posts) + ", \"error\": " + errorJson(value[2], ref[2], refError[2], inBand) + "}";
+  }
+  if (bandFile)
+    reflectedBands += "]";
+
   // TERRALUX_REPORT_POINTS=FILE: every point's values beside the reference's, as CSV.
   if (const char* pointsFile = std::getenv("TERRALUX_REPORT_POINTS"))
   {
@@ -493,14 +530,14 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
               "\"phase_seconds\": {\"visibility\": %.4f, \"horizons\": %.4f, \"refine\": %.4f, \"gather\": %.4f, "
               "\"push_pull\": %.4f, \"points\": %.4f}, \"phase_rays\": {\"refine\": %.0f, \"gather_push_pull\": %.0f, \"points\": %.0f}, "
               "\"shadow_disagreement\": %.6f, \"sun\": %s, \"sky\": %s, \"reflected\": %s, \"global\": %s, "
-              "\"estimate\": %s}\n",
+              "\"estimate\": %s, \"reflected_bands\": %s}\n",
     input.name.c_str(), method.c_str(), tolerance, radiosity->GetTargetError(), wall, peakMiB(), field("Elements"), field("Links"), field("Rays"),
     field("Iterations"), field("HorizonAzimuths"), floorSeconds, field("SecondsVisibilityBuild"), field("SecondsHorizons"), field("SecondsRefine"),
     field("SecondsGather"), field("SecondsPushPull"), field("SecondsPoints"), field("RaysRefine"),
     field("RaysPushPull"), field("RaysPoints"), facing ? static_cast<double>(disagree) / facing : 0.0,
     errorJson(value[0], ref[0], refError[0], used).c_str(), errorJson(value[1], ref[1], refError[1], used).c_str(),
     errorJson(value[2], ref[2], refError[2], used).c_str(), errorJson(value[3], ref[3], refError[3], agree).c_str(),
-    estimateJson(estimate, value[3], ref[3], refError[3], used).c_str());
+    estimateJson(estimate, value[3], ref[3], refError[3], used).c_str(), reflectedBands.c_str());
   return 0;
 }
 } // namespace

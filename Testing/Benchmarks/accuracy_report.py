@@ -28,6 +28,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 COMPONENTS = ("sun", "sky", "reflected", "global")
+BAND_POINTS = 30  # fewer points in a band of reflected light: its bias is not shown
 METHODS = {"points": "patches, at points", "points-previous": "patches, at points, previous release",
            "rays": "patches, at points, sky by rays", "averaged": "patches, averaged",
            "triangles": "triangles, at points", "rsun": "GRASS r.sun",
@@ -113,29 +114,65 @@ def table(scene, reference, runs):
     return lines
 
 
+def reflected_bands(run):
+    """The reflected bias in each band of the reference's reflected light, from below 1 W/m^2
+    up, as 'a / b / c / d' (- where a band holds fewer than BAND_POINTS points)."""
+    bands = run.get("reflected_bands")
+    if not bands:
+        return "-"
+    return " / ".join(percent(b["error"]["bias"]) if b["posts"] >= BAND_POINTS and b["error"]["mean"] > 0 else "-"
+                      for b in bands)
+
+
+def band_table(solves):
+    """Reflected light at the defaults by band of what the points receive of it: each band's
+    bias, relative and in W/m^2, and its points."""
+    runs = sorted((r for r in solves if at_defaults(r) and r.get("reflected_bands")), key=lambda r: r["scene"])
+    if not runs:
+        return []
+    lines = ["### Reflected light by band", "",
+             "At the defaults, the points grouped by what they receive of reflected light, as a second "
+             "estimate of the reference's tells (an eighth of its directions, on seeds of their own: chosen by "
+             "either value compared, a band would hold the points whose noise pushed them in). Each cell: "
+             "the band's bias over its reference mean, the same in W/m^2, and its points (- where fewer "
+             "than %d)." % BAND_POINTS, "",
+             "| scene | below 1 W/m^2 | 1-10 W/m^2 | 10-50 W/m^2 | from 50 W/m^2 |", "|---|---|---|---|---|"]
+    for run in runs:
+        cells = []
+        for band in run["reflected_bands"]:
+            error = band["error"]
+            cells.append("%s %% = %.3f W/m^2 (%d)" % (percent(error["bias"]), error["bias"] * error["mean"], band["posts"])
+                         if band["posts"] >= BAND_POINTS and error["mean"] > 0 else "-")
+        lines.append("| %s | %s |" % (run["scene"], " | ".join(cells)))
+    return lines + [""]
+
+
 def summary(solves):
     """Every scene at the defaults (at points, ErrorTolerance 1e-2, TargetError 0.008) and at
     the knob's coarse end: the accuracy targets and the error estimate's."""
     lines = ["## At the defaults", "",
              "At points, ErrorTolerance %g, TargetError %g; the coarse end is TargetError %g (the command's "
              "`--fast`). Targets: global RMS at most 0.5 %% (2 %% at the coarse end), p95 at most 1 %%, reflected "
-             "light within 3 %% of the reference's mean; IrradianceError holding the difference from the "
+             "light within 3 %% of the reference's mean, overall and in each band of what the reference's points "
+             "receive of it (below 1, 1-10, 10-50 and from 50 W/m^2; a band of fewer than %d points is not shown); "
+             "IrradianceError holding the difference from the "
              "reference (widened by twice the reference's standard error, in quadrature) at 90 %% of points "
-             "or more, its median at most 2 %% of the mean global." % (DEFAULT_TOLERANCE, DEFAULT_TARGET, COARSE_TARGET),
+             "or more, its median at most 2 %% of the mean global." % (DEFAULT_TOLERANCE, DEFAULT_TARGET, COARSE_TARGET,
+                                                           BAND_POINTS),
              "",
-             "| scene | time s | global RMS % | p95 % | reflected bias % | estimate holds % | estimate median % | "
-             "coarse end: time s | global RMS % |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "| scene | time s | global RMS % | p95 % | reflected bias % | by band % | estimate holds % | "
+             "estimate median % | coarse end: time s | global RMS % |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     coarse = {r["scene"]: r for r in solves if at_defaults(r, COARSE_TARGET)}
     for run in sorted((r for r in solves if at_defaults(r)), key=lambda r: r["scene"]):
         g, refl, estimate = run["global"], run["reflected"], run.get("estimate")
         fast = coarse.get(run["scene"])
-        lines.append("| %s | %.2f | %s | %s | %s | %s | %s | %s | %s |" % (
+        lines.append("| %s | %.2f | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             run["scene"], run["seconds"], percent(g["rms"]), percent(g["p95"]),
-            percent(refl["bias"]) if refl["mean"] > 0 else "-",
+            percent(refl["bias"]) if refl["mean"] > 0 else "-", reflected_bands(run),
             percent(estimate["coverage"]) if estimate else "-", percent(estimate["median"]) if estimate else "-",
             "%.2f" % fast["seconds"] if fast else "-", percent(fast["global"]["rms"]) if fast else "-"))
-    return lines + [""]
+    return lines + [""] + band_table(solves)
 
 
 def against_peers(solves, peers):

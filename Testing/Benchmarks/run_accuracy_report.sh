@@ -35,7 +35,7 @@ runs="${out_dir}/runs.jsonl"
 : > "${runs}"
 for scene in "${scenes[@]}"; do
   if [ "${TERRALUX_REPORT_REUSE_REFERENCES:-0}" = 1 ] && [ -s "${out_dir}/${scene}.reference" ] &&
-    [ -s "${out_dir}/${scene}.reference.json" ]; then
+    [ -s "${out_dir}/${scene}.reference.json" ] && [ -s "${out_dir}/${scene}.reference.bands" ]; then
     echo "== ${scene}: reference kept"
     tee -a "${runs}" < "${out_dir}/${scene}.reference.json"
   else

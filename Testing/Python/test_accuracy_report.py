@@ -94,6 +94,25 @@ class PeersInTheReport(unittest.TestCase):
         self.assertTrue(rows[1].endswith("| no |"))   # nothing as fast as r.sun's 0.2 s
         self.assertEqual(accuracy_report.against_peers(solves, []), [])
 
+    def test_reflected_bands(self):
+        # Each band's bias, from below 1 W/m^2 up; a band of too few points, or none, is not
+        # shown, nor are bands a run does not have (an older reference).
+        run = terralux_run("a", 0.008, 0.8, 0.004)
+        self.assertEqual(accuracy_report.reflected_bands(run), "-")
+        run["reflected_bands"] = [
+            {"from": 0.0, "posts": 500, "error": errors(0.01, 0.012, 0.5)},
+            {"from": 1.0, "posts": 200, "error": errors(0.01, -0.0368, 3.0)},
+            {"from": 10.0, "posts": accuracy_report.BAND_POINTS - 1, "error": errors(0.01, 0.2, 20.0)},
+            {"from": 50.0, "posts": 0, "error": errors(0.0, 0.0, 0.0)}]
+        self.assertEqual(accuracy_report.reflected_bands(run), "1.20 / -3.68 / - / -")
+        rows = [line for line in accuracy_report.summary([run]) if line.startswith("| a |")]
+        self.assertEqual(len(rows), 2)  # the summary's row, then the table by band's
+        self.assertIn("| 1.20 / -3.68 / - / - |", rows[0])
+        # The table by band: relative, in W/m^2 (bias x the band's mean), and the points.
+        table = [line for line in accuracy_report.band_table([run]) if line.startswith("| a |")]
+        self.assertEqual(table, ["| a | 1.20 % = 0.006 W/m^2 (500) | -3.68 % = -0.110 W/m^2 (200) | - | - |"])
+        self.assertEqual(accuracy_report.band_table([terralux_run("a", 0.008, 0.8, 0.004)]), [])
+
     def test_report_with_peers(self):
         runs = os.path.join(self.work, "runs.jsonl")
         with open(runs, "w") as f:

@@ -244,11 +244,11 @@ ReferenceIrradiance PathTracer::irradianceAt(const Vec3& at, const Vec3& normal,
 }
 
 std::vector<ReferenceIrradiance> PathTracer::irradianceAt(
-  const std::vector<Vec3>& points, const std::vector<Vec3>& normals, int samples) const
+  const std::vector<Vec3>& points, const std::vector<Vec3>& normals, int samples, std::uint64_t firstSeed) const
 {
   std::vector<ReferenceIrradiance> results(points.size());
   tbb::parallel_for(std::size_t(0), points.size(),
-    [&](std::size_t k) { results[k] = this->irradianceAt(points[k], normals[k], samples, k + 1); });
+    [&](std::size_t k) { results[k] = this->irradianceAt(points[k], normals[k], samples, firstSeed + k); });
   return results;
 }
 } // namespace terralux_reference

@@ -62,9 +62,10 @@ public:
   /// (rounded up to a square for stratification); deterministic for a seed.
   ReferenceIrradiance irradianceAt(const Vec3& point, const Vec3& normal, int samples, std::uint64_t seed) const;
 
-  /// Many points in parallel, seeded by their index.
+  /// Many points in parallel, point k seeded by firstSeed + k (seeds far apart give
+  /// independent estimates: a seed's stream is the next seed's one draw behind).
   std::vector<ReferenceIrradiance> irradianceAt(
-    const std::vector<Vec3>& points, const std::vector<Vec3>& normals, int samples) const;
+    const std::vector<Vec3>& points, const std::vector<Vec3>& normals, int samples, std::uint64_t firstSeed = 1) const;
 
   /// Sky radiance toward a unit direction above the horizon (0 below, or without sky).
   double skyRadiance(const Vec3& direction) const;
