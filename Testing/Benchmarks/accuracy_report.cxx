@@ -38,12 +38,12 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <iterator>
-#include <limits>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -346,6 +346,33 @@ std::string errorJson(const std::vector<double>& value, const std::vector<double
   return text;
 }
 
+// Reflected light by band of what the points receive of it (W/m^2, as the reference's
+// own estimate for bands tells, `referencePath`.bands): the bright posts of a snowy bowl
+// judged on their own, not drowned in the scene's mean. null without that estimate (an
+// older reference).
+std::string reflectedBandsJson(const std::string& referencePath, const std::vector<double>& value,
+  const std::vector<double>& reference, const std::vector<double>& referenceError, const std::vector<bool>& include)
+{
+  const std::size_t n = value.size();
+  std::vector<double> forBands(n);
+  std::ifstream bandFile(referencePath + ".bands", std::ios::binary);
+  if (!bandFile.read(reinterpret_cast<char*>(forBands.data()), static_cast<std::streamsize>(n * sizeof(double))))
+    return "null";
+  const double bandEdges[] = { 0.0, 1.0, 10.0, 50.0, std::numeric_limits<double>::infinity() };
+  std::string text = "[";
+  for (int band = 0; band + 1 < static_cast<int>(std::size(bandEdges)); ++band)
+  {
+    std::vector<bool> inBand(n);
+    std::size_t posts = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      posts += inBand[k] = include[k] && forBands[k] >= bandEdges[band] && forBands[k] < bandEdges[band + 1];
+    text += (band ? ", " : "") + std::string("{\"from\": ") + std::to_string(bandEdges[band]) +
+      ", \"posts\": " + std::to_string(posts) + ", \"error\": " + errorJson(value, reference, referenceError, inBand) +
+      "}";
+  }
+  return text + "]";
+}
+
 int solve(const terralux_bench::AccuracyScene& input, const std::string& referencePath, const std::string& method,
   double tolerance, double targetError)
 {
@@ -467,28 +494,7 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     }
   }
 
-  // Reflected light by band of what the points receive of it (W/m^2, as the reference's
-  // own estimate for bands tells): the bright posts of a snowy bowl judged on their own,
-  // not drowned in the scene's mean. None without that estimate (an older reference).
-  std::vector<double> forBands(n);
-  std::ifstream bandFile(referencePath + ".bands", std::ios::binary);
-  bandFile.read(reinterpret_cast<char*>(forBands.data()), static_cast<std::streamsize>(n * sizeof(double)));
-  std::string reflectedBands = bandFile ? "[" : "null";
-  const double bandEdges[] = { 0.0, 1.0, 10.0, 50.0, std::numeric_limits<double>::infinity() };
-  for (int band = 0; bandFile && band + 1 < static_cast<int>(std::size(bandEdges)); ++band)
-  {
-    std::vector<bool> inBand(n);
-    std::size_t posts = 0;
-    for (std::size_t k = 0; k < n; ++k)
-    {
-      const double chosenBy = forBands[k];
-      posts += inBand[k] = used[k] && chosenBy >= bandEdges[band] && chosenBy < bandEdges[band + 1];
-    }
-    reflectedBands += (band ? ", " : "") + std::string("{\"from\": ") + std::to_string(bandEdges[band]) +
-      ", \"posts\": " + std::to_string(posts) + ", \"error\": " + errorJson(value[2], ref[2], refError[2], inBand) + "}";
-  }
-  if (bandFile)
-    reflectedBands += "]";
+  const std::string reflectedBands = reflectedBandsJson(referencePath, value[2], ref[2], refError[2], used);
 
   // TERRALUX_REPORT_POINTS=FILE: every point's values beside the reference's, as CSV.
   if (const char* pointsFile = std::getenv("TERRALUX_REPORT_POINTS"))

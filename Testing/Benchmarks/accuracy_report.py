@@ -114,14 +114,18 @@ def table(scene, reference, runs):
     return lines
 
 
+def band_shown(band):
+    """Whether a band of reflected light holds enough points, and light, to show its bias."""
+    return band["posts"] >= BAND_POINTS and band["error"]["mean"] > 0
+
+
 def reflected_bands(run):
-    """The reflected bias in each band of the reference's reflected light, from below 1 W/m^2
-    up, as 'a / b / c / d' (- where a band holds fewer than BAND_POINTS points)."""
+    """The reflected bias in each band of reflected light (as the reference's estimate for
+    bands tells), from below 1 W/m^2 up, as 'a / b / c / d' (- where a band is not shown)."""
     bands = run.get("reflected_bands")
     if not bands:
         return "-"
-    return " / ".join(percent(b["error"]["bias"]) if b["posts"] >= BAND_POINTS and b["error"]["mean"] > 0 else "-"
-                      for b in bands)
+    return " / ".join(percent(b["error"]["bias"]) if band_shown(b) else "-" for b in bands)
 
 
 def band_table(solves):
@@ -142,7 +146,7 @@ def band_table(solves):
         for band in run["reflected_bands"]:
             error = band["error"]
             cells.append("%s %% = %.3f W/m^2 (%d)" % (percent(error["bias"]), error["bias"] * error["mean"], band["posts"])
-                         if band["posts"] >= BAND_POINTS and error["mean"] > 0 else "-")
+                         if band_shown(band) else "-")
         lines.append("| %s | %s |" % (run["scene"], " | ".join(cells)))
     return lines + [""]
 

@@ -62,6 +62,7 @@ std::vector<PointValues> pointValues(
   plan.atPoints = atPoints;
   return polygonPointValues(PointEvaluator(solver, plan), scene, 0, 0, scene.points.size(), oneNormal, how, reached);
 }
+
 // Rolling hills with ripples (20 m high, 60-80 m long), 97 x 97 posts at 30 m, under a
 // sun 55 deg from the zenith and a clear sky, reflectance 0.2: light from surfaces is a
 // small, smooth share of what most posts receive. Solved fine enough that the error of
@@ -77,7 +78,12 @@ struct LitHills
   PointIrradiance at(int i, int j, std::uint64_t& rays) const
   {
     const TerrainPatch* leaf = this->solver->terrainRoots()[0]->mostLitLeafAt(i, j);
-    EXPECT_NE(leaf, nullptr);
+    rays = 0;
+    if (!leaf)
+    {
+      ADD_FAILURE() << "no leaf at post " << i << ", " << j;
+      return {};
+    }
     const std::uint64_t before = this->solver->raysCast();
     const PointIrradiance result = this->points->irradianceAt(*leaf, this->grid->post(i, j), this->grid->postNormal(i, j));
     rays = this->solver->raysCast() - before;
@@ -306,15 +312,15 @@ TEST(PointValues, PostsBesideTheBorderGatherRatherThanReadFromIt)
   // A lattice post on the DEM's border sees terrain on one side only and counts the void
   // beyond as terrain seen: per terrain seen it finds less than the posts inside. Posts
   // inside a lattice cell with a corner on the border gather; posts on the border read
-  // between their own kind. What the band inside receives from surfaces agrees with every post's own
-  // gather.
+  // between their own kind. What the band inside receives from surfaces agrees with
+  // every post's own gather.
   const auto reading = litHills(true), gathering = litHills(false);
   int bandRead = 0, bandPosts = 0, borderRead = 0;
   double bandSum = 0.0, gatheredSum = 0.0, errorSum = 0.0;
   for (int j = 0; j < 97; ++j)
     for (int i = 0; i < 97; i += (j == 0 || j == 96) ? 1 : 96)
     {
-      std::uint64_t spent = 0, gatherRays = 0;
+      std::uint64_t spent = 0;
       reading->at(i, j, spent);
       borderRead += spent <= 1;
     }
