@@ -18,9 +18,11 @@ const double gauss8Weights[8] = { 0.1012285362903763, 0.2223810344533745, 0.3137
 
 // Integral of max(0, a - b cos w) over w in [w0, w1], b >= 0: a - b cos w > 0 where
 // cos w < a / b, i.e. on [alpha, 2 pi - alpha] + 2 pi k with alpha = acos(a / b).
-double positiveCosineIntegral(double a, double b, double w0, double w1)
+// sinW0 and sinW1 are sin w0 and sin w1, the same for every row of a patch.
+double positiveCosineIntegral(double a, double b, double w0, double w1, double sinW0, double sinW1)
 {
-  auto piece = [&](double lo, double hi) { return hi > lo ? a * (hi - lo) - b * (std::sin(hi) - std::sin(lo)) : 0.0; };
+  auto sine = [&](double w) { return w == w0 ? sinW0 : (w == w1 ? sinW1 : std::sin(w)); };
+  auto piece = [&](double lo, double hi) { return hi > lo ? a * (hi - lo) - b * (sine(hi) - sine(lo)) : 0.0; };
   if (b <= 1e-15 * std::abs(a) || a >= b)
     return b <= 1e-15 * std::abs(a) ? std::max(0.0, a) * (w1 - w0) : piece(w0, w1);
   if (a <= -b)
@@ -43,6 +45,9 @@ SkyPatchElement::SkyPatchElement(
 {
   const terralux::Direction d = patch.direction();
   this->Direction = Vec3(d[0], d[1], d[2]);
+  const double u0 = patch.u0(), u1 = patch.u1(), v0 = patch.v0(), v1 = patch.v1();
+  this->Range = { u0, u1, v0, v1, std::sin(u0), std::cos(u0), std::sin(u1), std::cos(u1), std::sin(v0), std::cos(v0),
+    std::sin(v1), std::cos(v1) };
 
   const terralux::Direction vector = patch.vectorSolidAngle();
   this->VectorSolidAngle = Vec3(vector[0], vector[1], vector[2]);
@@ -114,17 +119,23 @@ Vec3 SkyPatchElement::sampleDirection(SampleGenerator& random) const
   return uniformDirection(p.u0() + a * du, p.u0() + (a + 1) * du, p.v0() + b * dv, p.v0() + (b + 1) * dv, random);
 }
 
-int SkyPatchElement::sideOf(const Vec3& n) const
+SkyPatchElement::PlaneTerms::PlaneTerms(const Vec3& normal)
+  : horizontal(std::hypot(normal.x, normal.y))
+  , phi(std::atan2(normal.x, normal.y))
+{
+}
+
+int SkyPatchElement::sideOf(const Vec3& n, const PlaneTerms& plane) const
 {
   // n . d = n_z sin u - cos u g(v), g(v) = n_x sin v + n_y cos v = h cos(v - phi).
-  const double v0 = this->Patch.v0(), v1 = this->Patch.v1(), u0 = this->Patch.u0(), u1 = this->Patch.u1();
+  const Bounds& r = this->Range;
   auto g = [&](double v) { return n.x * std::sin(v) + n.y * std::cos(v); };
-  double gLow = std::min(g(v0), g(v1)), gHigh = std::max(g(v0), g(v1));
-  const double phi = std::atan2(n.x, n.y);
+  const double g0 = n.x * r.sinV0 + n.y * r.cosV0, g1 = n.x * r.sinV1 + n.y * r.cosV1;
+  double gLow = std::min(g0, g1), gHigh = std::max(g0, g1);
   for (int k = -2; k <= 3; ++k) // the extremes of g at phi + k pi inside [v0, v1]
   {
-    const double v = phi + k * pi;
-    if (v > v0 && v < v1)
+    const double v = plane.phi + k * pi;
+    if (v > r.v0 && v < r.v1)
     {
       gLow = std::min(gLow, g(v));
       gHigh = std::max(gHigh, g(v));
@@ -135,14 +146,16 @@ int SkyPatchElement::sideOf(const Vec3& n) const
   double low = std::numeric_limits<double>::infinity(), high = -low;
   for (double gv : { gLow, gHigh })
   {
-    auto f = [&](double u) { return n.z * std::sin(u) - gv * std::cos(u); };
+    auto extend = [&](double f) {
+      low = std::min(low, f);
+      high = std::max(high, f);
+    };
+    extend(n.z * r.sinU0 - gv * r.cosU0);
+    extend(n.z * r.sinU1 - gv * r.cosU1);
     const double stationary = std::atan2(-n.z, gv); // tan u = -n_z / g
-    for (double u : { u0, u1, stationary, stationary + pi, stationary - pi })
-      if (u >= u0 && u <= u1)
-      {
-        low = std::min(low, f(u));
-        high = std::max(high, f(u));
-      }
+    for (double u : { stationary, stationary + pi, stationary - pi })
+      if (u >= r.u0 && u <= r.u1)
+        extend(n.z * std::sin(u) - gv * std::cos(u));
   }
   constexpr double grazing = 1e-12;
   return low >= -grazing ? 1 : (high <= grazing ? -1 : 0);
@@ -150,10 +163,11 @@ int SkyPatchElement::sideOf(const Vec3& n) const
 
 double SkyPatchElement::kernel(const Vec3& normal) const
 {
-  const int side = this->sideOf(normal);
+  const PlaneTerms plane(normal);
+  const int side = this->sideOf(normal, plane);
   if (side > 0)
     return std::max(0.0, glm::dot(normal, this->RadianceVector));
-  return side < 0 ? 0.0 : this->straddlingProjection(normal);
+  return side < 0 ? 0.0 : this->straddlingProjection(normal, plane);
 }
 
 double SkyPatchElement::geometricShare(const Vec3& normal) const
@@ -166,13 +180,15 @@ double SkyPatchElement::geometricShare(const Vec3& normal) const
 
 double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
 {
-  const int side = this->sideOf(normal);
+  const PlaneTerms plane(normal);
+  const int side = this->sideOf(normal, plane);
   if (side > 0)
     return std::max(0.0, glm::dot(normal, this->VectorSolidAngle));
-  return side < 0 ? 0.0 : this->straddlingProjection(normal);
+  return side < 0 ? 0.0 : this->straddlingProjection(normal, plane);
 }
 
-void SkyPatchElement::kernelAndProjection(const Vec3& normal, int side, double& kernel, double& projected) const
+void SkyPatchElement::kernelAndProjection(
+  const Vec3& normal, const PlaneTerms& plane, int side, double& kernel, double& projected) const
 {
   if (side > 0)
   {
@@ -180,29 +196,30 @@ void SkyPatchElement::kernelAndProjection(const Vec3& normal, int side, double& 
     projected = std::max(0.0, glm::dot(normal, this->VectorSolidAngle));
   }
   else
-    kernel = projected = side < 0 ? 0.0 : this->straddlingProjection(normal);
+    kernel = projected = side < 0 ? 0.0 : this->straddlingProjection(normal, plane);
 }
 
-double SkyPatchElement::straddlingProjection(const Vec3& normal) const
+double SkyPatchElement::straddlingProjection(const Vec3& normal, const PlaneTerms& plane) const
 {
   // The surface's horizon crosses the patch. With s = sin u (dOmega = ds dv) and
   // n . d = n_z s - sqrt(1 - s^2) h cos(v - phi), each row of constant s integrates
   // max(0, n . d) over v in closed form; the rows are summed by Gauss-Legendre over s,
   // split where a row turns wholly lit or wholly dark (the kinks in s).
-  const double h = std::hypot(normal.x, normal.y), phi = std::atan2(normal.x, normal.y);
-  const double w0 = this->Patch.v0() - phi, w1 = this->Patch.v1() - phi;
+  const double h = plane.horizontal;
+  const double w0 = this->Range.v0 - plane.phi, w1 = this->Range.v1 - plane.phi;
+  const double sinW0 = std::sin(w0), sinW1 = std::sin(w1);
   auto row = [&](double sinU) {
     const double a = normal.z * sinU, b = std::sqrt(std::max(0.0, 1.0 - sinU * sinU)) * h;
-    return positiveCosineIntegral(a, b, w0, w1);
+    return positiveCosineIntegral(a, b, w0, w1, sinW0, sinW1);
   };
-  const double s0 = std::sin(this->Patch.u0()), s1 = std::sin(this->Patch.u1());
+  const double s0 = this->Range.sinU0, s1 = this->Range.sinU1;
   // a = +-b where n_z s = +-h sqrt(1 - s^2): s = h / sqrt(n_z^2 + h^2) = h (unit normal).
-  std::vector<double> breaks{ s0, s1 };
+  std::array<double, 3> breaks{ s0, s1, s1 };
+  std::size_t count = 2;
   if (h > s0 && h < s1)
-    breaks.push_back(h);
-  std::sort(breaks.begin(), breaks.end());
+    breaks[1] = h, count = 3;
   double sum = 0.0;
-  for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
+  for (std::size_t k = 0; k + 1 < count; ++k)
   {
     const double lo = breaks[k], hi = breaks[k + 1];
     for (int g = 0; g < 8; ++g)

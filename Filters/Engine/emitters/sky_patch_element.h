@@ -46,8 +46,17 @@ public:
   /// what the radiance map gives it; projectedSolidAngle(n) where the surface's horizon
   /// crosses the patch (the refinement splits such links while they matter).
   double kernel(const Vec3& normal) const override;
+  /// What sideOf and the projection need of a unit normal whatever the patch: one
+  /// plane's terms, found once for all the patches it is tested against (OpenSky).
+  struct PlaneTerms
+  {
+    explicit PlaneTerms(const Vec3& normal);
+    double horizontal; ///< |(n_x, n_y)|
+    double phi;        ///< atan2(n_x, n_y): the azimuth v where n . d is least
+  };
   /// kernel(n) and projectedSolidAngle(n) at once, for a side already known (sideOf).
-  void kernelAndProjection(const Vec3& normal, int side, double& kernel, double& projected) const;
+  void kernelAndProjection(
+    const Vec3& normal, const PlaneTerms& plane, int side, double& kernel, double& projected) const;
   /// A direction in the patch for sampled visibility, distributed like the irradiance
   /// the patch gives a horizontal plane (radiance x sin u over dOmega): a bright part
   /// of the patch (the circumsolar sky) that an obstacle hides weighs as much as it
@@ -61,7 +70,8 @@ public:
   /// Whether the patch lies wholly in front of (+1), wholly behind (-1) a plane of unit
   /// normal n through the receiver, or straddles its horizon (0): the exact extremes of
   /// n . d over the patch.
-  int sideOf(const Vec3& normal) const;
+  int sideOf(const Vec3& normal) const { return this->sideOf(normal, PlaneTerms(normal)); }
+  int sideOf(const Vec3& normal, const PlaneTerms& plane) const;
 
 private:
   ElementStore* Store;
@@ -71,7 +81,16 @@ private:
   double SolidAngle;
   Vec3 Direction;
   /// Integral of max(0, n . d) dOmega over a patch that straddles the plane's horizon.
-  double straddlingProjection(const Vec3& normal) const;
+  double straddlingProjection(const Vec3& normal, const PlaneTerms& plane) const;
+  /// The patch's bounds in altitude u and azimuth v, and their sines and cosines, which
+  /// every side test and projection reads (the exact open sky of a point takes a few
+  /// hundred of them).
+  struct Bounds
+  {
+    double u0, u1, v0, v1;
+    double sinU0, cosU0, sinU1, cosU1, sinV0, cosV0, sinV1, cosV1;
+  };
+  Bounds Range;
 
   /// Sin u-weighted sampling of (sin u, v) over a range of the patch.
   static Vec3 uniformDirection(double u0, double u1, double v0, double v1, SampleGenerator& random);

@@ -61,29 +61,34 @@ OpenSky::OpenSky(const SkyHierarchy& sky)
 
 OpenSky::~OpenSky() = default;
 
-void OpenSky::accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, double& omega) const
+void OpenSky::accumulate(
+  int level, int iu, int iv, const Vec3& n, const SkyPatchElement::PlaneTerms& plane, Spectrum& e, double& omega) const
 {
   const std::size_t index = static_cast<std::size_t>(iu) * SkyHierarchy::cellsPerSide(level) + iv;
   const SkyPatchElement& patch = *this->Levels[level][index];
   // Cheap side test first: n . d >= n . c - |d - c| for unit n, and |d - c| <= the
   // patch's radius about its centre direction c; the exact test only where it is close.
   const double towardCentre = glm::dot(n, patch.direction()), radius = this->Radii[level][index];
-  const int side = towardCentre > radius ? 1 : (towardCentre < -radius ? -1 : patch.sideOf(n));
+  const int side = towardCentre > radius ? 1 : (towardCentre < -radius ? -1 : patch.sideOf(n, plane));
   if (side < 0)
     return;
-  // The plane's horizon crosses the patch: split it while it gives anything, since its
-  // radiance is taken as its mean where splitting stops.
-  if (side == 0 && level < this->Deepest &&
-    (level < 3 || patch.projectedSolidAngle(n) * largestBand(patch.emittance()) > 0.0))
+  // The plane's horizon crosses the patch: split it while it gives anything (from level
+  // 3, as its projection tells), since its radiance is taken as its mean where
+  // splitting stops.
+  double kernel = 0.0, projected = 0.0;
+  const bool measured = side == 0 && level >= 3;
+  if (measured)
+    patch.kernelAndProjection(n, plane, side, kernel, projected);
+  if (side == 0 && level < this->Deepest && (!measured || projected * largestBand(patch.emittance()) > 0.0))
   {
     for (int k = 0; k < 4; ++k)
-      this->accumulate(level + 1, 2 * iu + k / 2, 2 * iv + k % 2, n, e, omega);
+      this->accumulate(level + 1, 2 * iu + k / 2, 2 * iv + k % 2, n, plane, e, omega);
     return;
   }
   // Exact in front (the irradiance vector); exact in solid angle where the horizon
   // crosses a deepest patch, whose radiance is then taken as its mean.
-  double kernel, projected;
-  patch.kernelAndProjection(n, side, kernel, projected);
+  if (!measured)
+    patch.kernelAndProjection(n, plane, side, kernel, projected);
   const Spectrum l = patch.emittance();
   for (int band = 0; band < maxBands; ++band)
     e[band] += kernel * l[band];
@@ -94,7 +99,7 @@ void OpenSky::exactIrradiance(const Vec3& n, Spectrum& irradiance, double& proje
 {
   irradiance = {};
   projectedSolidAngle = 0.0;
-  this->accumulate(0, 0, 0, n, irradiance, projectedSolidAngle);
+  this->accumulate(0, 0, 0, n, SkyPatchElement::PlaneTerms(n), irradiance, projectedSolidAngle);
 }
 
 namespace

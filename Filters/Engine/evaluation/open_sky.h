@@ -4,6 +4,7 @@
 // point as "open sky minus what the scene hides" (a control variate: the rays then only
 // estimate the hidden part, which is 0 on open ground and small on most slopes).
 
+#include "emitters/sky_patch_element.h"
 #include "hierarchy/radiosity_types.h"
 
 #include <atomic>
@@ -14,7 +15,6 @@
 namespace terralux
 {
 class SkyHierarchy;
-class SkyPatchElement;
 
 class OpenSky
 {
@@ -54,7 +54,8 @@ public:
 
 private:
   void exactIrradiance(const Vec3& n, Spectrum& irradiance, double& projectedSolidAngle) const;
-  void accumulate(int level, int iu, int iv, const Vec3& n, Spectrum& e, double& omega) const;
+  void accumulate(int level, int iu, int iv, const Vec3& n, const SkyPatchElement::PlaneTerms& plane, Spectrum& e,
+    double& omega) const;
 
   int Deepest = 0;
   std::vector<std::vector<std::unique_ptr<SkyPatchElement>>> Levels; // [level][iu * side + iv]
