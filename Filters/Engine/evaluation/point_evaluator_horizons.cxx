@@ -133,14 +133,11 @@ double PointEvaluator::coarseSkyMisses(bool hornNormals, int stride, std::vector
       // with it. What the post receives is at least its sky: a target no larger than
       // its own. A share of the sky hidden first (most posts of gentle terrain end
       // there); where that misses, the band between azimuths, closer.
-      Spectrum open{};
-      double openSolidAngle = 0.0;
-      this->SkyAtPoints->irradiance(normal, open, openSolidAngle);
       const double target = this->Options.errorTarget(largestBand(sky.irradiance));
       const double openError = Tuning::openSkyError * largestBand(sky.irradiance);
-      const double hidden = std::max(0.0, largestBand(open) - largestBand(sky.irradiance));
+      const double hidden = std::max(0.0, sky.openLargestBand - largestBand(sky.irradiance));
       bool misses = openError + Tuning::coarseHorizonSkyError *
-          (hidden + std::max(0.0, openSolidAngle / pi - sky.skyViewFactor) * terrainRadiosity) >
+          (hidden + std::max(0.0, sky.openProjectedSolidAngle / pi - sky.skyViewFactor) * terrainRadiosity) >
         target;
       if (misses)
       {
@@ -219,10 +216,17 @@ double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, const H
   const double own = Tuning::openSkyError * largestBand(sky);
   if (!post || !this->SkyAtPoints)
     return own;
-  Spectrum open{};
-  double projectedSolidAngle = 0.0;
-  this->SkyAtPoints->irradiance(normal, open, projectedSolidAngle);
-  const double hidden = std::max(0.0, largestBand(open) - largestBand(sky));
+  // The open sky as the post's sky was found on the same normal (most points), else
+  // evaluated again.
+  PostSky::Value found;
+  const bool kept = this->PostSkies && this->PostSkies->found(post, normal, found);
+  if (!kept)
+  {
+    Spectrum open{};
+    this->SkyAtPoints->irradiance(normal, open, found.openProjectedSolidAngle);
+    found.openLargestBand = largestBand(open);
+  }
+  const double hidden = std::max(0.0, found.openLargestBand - largestBand(sky));
   // Horizons interpolated between a coarse map's azimuths (every post of one, a
   // refined map's but those it found) err by a share of the sky they hide, or where
   // that missed the post's target, as its band between azimuths tells (on the post's
@@ -231,9 +235,7 @@ double PointEvaluator::skyError(const Vec3& normal, const Spectrum& sky, const H
   const std::size_t cell = map.cellOf(post);
   if (map.azimuthCount() > static_cast<int>(HorizonMap::Density::Coarse) && map.exactAt(cell))
     return own + Tuning::horizonSkyError * hidden;
-  PostSky::Value found;
-  if (cell < this->BetweenAzimuths.size() && this->BetweenAzimuths[cell] >= 0.0f && this->PostSkies &&
-    this->PostSkies->found(post, normal, found))
+  if (cell < this->BetweenAzimuths.size() && this->BetweenAzimuths[cell] >= 0.0f && kept)
     return own + Tuning::betweenAzimuthsError * this->BetweenAzimuths[cell];
   return own + Tuning::coarseHorizonSkyError * hidden;
 }

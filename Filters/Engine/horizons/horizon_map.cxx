@@ -94,6 +94,7 @@ HorizonMap::HorizonMap(const TerrainGrid& terrain, Density density, const WorkSp
     this->sweepWindows(slotSteps, *split);
   else
     this->sweepSharedAzimuths(slotSteps, *split);
+  UninitializedVector<ProfilePost>().swap(this->SweepProfile);
   this->copyFromLender(lender);
 }
 
@@ -243,14 +244,14 @@ std::vector<HorizonMap::LineRun> HorizonMap::runsWithin(int q, int p, const Work
   return runs;
 }
 
-void HorizonMap::sweepWholeGrid(int q, int p, std::uint16_t* out) const
+void HorizonMap::sweepWholeGrid(int q, int p, std::uint16_t* out)
 {
   const WorkSplit::Window whole{ 0, this->Terrain.postsX() - 1, 0, this->Terrain.postsY() - 1 };
   this->sweep(q, p, runsWithin(q, p, whole), whole, out);
 }
 
 void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const WorkSplit::Window& window,
-  std::uint16_t* out, const std::vector<Capture>& captures, std::vector<Hull>* captured) const
+  std::uint16_t* out, const std::vector<Capture>& captures, std::vector<Hull>* captured)
 {
   const TerrainGrid& t = this->Terrain;
   const int nx = t.postsX(), ny = t.postsY();
@@ -272,8 +273,15 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
     return;
   }
   dx /= length, dy /= length;
+  // Each post's distance along the azimuth, found once rather than at each crossing
+  // that interpolates it (half the sweep's time), and its height.
   const float* xyz = t.vertices();
-  auto position = [&](int i, int j) { return xyz + 3 * (static_cast<std::size_t>(j) * nx + i); };
+  UninitializedVector<ProfilePost>& along = this->SweepProfile;
+  along.resize(static_cast<std::size_t>(nx) * ny);
+  tbb::parallel_for(0, ny, [&](int j) {
+    for (std::size_t at = static_cast<std::size_t>(j) * nx, end = at + nx; at < end; ++at)
+      along[at] = { xyz[3 * at] * dx + xyz[3 * at + 1] * dy, xyz[3 * at + 2] };
+  });
   auto inGrid = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx && j < ny; };
   auto cellValid = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx - 1 && j < ny - 1 && t.cellValid(i, j); };
 
@@ -304,13 +312,13 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
       pop(hull, size, point.x, point.z);
       hull[size++] = point;
     };
-    auto pointOf = [&](const float* post) { return Point{ post[0] * dx + post[1] * dy, post[2] }; };
+    auto pointOf = [&](const ProfilePost* post) { return Point{ post->x, post->z }; };
     // Crossing n of the step ahead of the post at `here`.
-    auto crossingAhead = [&](const float* here, std::size_t n) {
-      const float* a = here + 3 * offsets[n][0];
-      const float* b = here + 3 * offsets[n][1];
+    auto crossingAhead = [&](const ProfilePost* here, std::size_t n) {
+      const ProfilePost& a = here[offsets[n][0]];
+      const ProfilePost& b = here[offsets[n][1]];
       const double f = crossings[n].f;
-      return Point{ (a[0] + f * (b[0] - a[0])) * dx + (a[1] + f * (b[1] - a[1])) * dy, a[2] + f * (b[2] - a[2]) };
+      return Point{ a.x + f * (b.x - a.x), a.z + f * (b.z - a.z) };
     };
     // A point lies below the segment between two others (in x between them, as
     // crossings between posts do): no post before them sees it as its horizon, and
@@ -349,7 +357,7 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
           Point* hull = hulls[l].reserve(m + 1);
           std::size_t size = hulls[l].size;
           const int i = run.i + k * q, j = run.j + k * p;
-          const float* here = position(i, j);
+          const ProfilePost* here = along.data() + static_cast<std::size_t>(j) * nx + i;
           // Where the step ahead lies inside a grid without missing cells, every
           // crossing is on terrain and needs no check (most of a DEM).
           if (!complete || !inGrid(i + q, j + p))
@@ -370,7 +378,7 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
             // segment between their neighbours can count (about a third on rough
             // terrain); they are sorted out without a branch each, since which way
             // each goes is as random as the terrain (the sweep took 20 % less).
-            profile[0] = pointOf(here + 3 * nextOffset);
+            profile[0] = pointOf(here + nextOffset);
             profile[m + 1] = pointOf(here);
             for (std::size_t n = 0; n < m; ++n)
               profile[n + 1] = crossingAhead(here, m - 1 - n);

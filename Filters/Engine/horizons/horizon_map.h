@@ -260,6 +260,12 @@ private:
   {
     double x, z;
   };
+  /// A post as a sweep sees it: its distance along the azimuth and its height.
+  struct ProfilePost
+  {
+    double x;
+    float z;
+  };
   /// The upper convex hull of a line's profile ahead of a post, the nearest point last.
   using Hull = std::vector<HullPoint>;
   struct HullStack; // the sweep's working copy of a hull (horizon_map.cxx)
@@ -284,9 +290,12 @@ private:
   /// One azimuth's horizons at the posts of `runs`, into `out`, the posts of `window`
   /// in grid order (the runs write each post of it once).
   void sweep(int q, int p, const std::vector<LineRun>& runs, const WorkSplit::Window& window, std::uint16_t* out,
-    const std::vector<Capture>& captures = {}, std::vector<Hull>* captured = nullptr) const;
+    const std::vector<Capture>& captures = {}, std::vector<Hull>* captured = nullptr);
   /// The same at every post of the grid.
-  void sweepWholeGrid(int q, int p, std::uint16_t* out) const;
+  void sweepWholeGrid(int q, int p, std::uint16_t* out);
+  /// The posts as the sweep under way sees them, kept from one sweep to the next (they
+  /// run one at a time) rather than allocated for each; emptied once the map is built.
+  UninitializedVector<ProfilePost> SweepProfile;
   /// One post's horizon toward step (q, p) found alone, along its line from the post
   /// out (the sweep's profile, the same value): a refined map's exact posts.
   struct LineWalk;

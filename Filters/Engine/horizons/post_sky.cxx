@@ -68,8 +68,10 @@ void PostSky::findOwn(const HorizonSky& horizons, const OpenSky& sky, bool hornN
           for (int band = 0; band < maxBands; ++band)
             held[band] = static_cast<float>(value.irradiance[band]);
           held[maxBands] = static_cast<float>(value.skyViewFactor);
+          held[maxBands + 1] = static_cast<float>(value.openLargestBand);
+          held[maxBands + 2] = static_cast<float>(value.openProjectedSolidAngle);
           for (int axis = 0; axis < 3; ++axis)
-            held[maxBands + 1 + axis] = static_cast<float>(normal[axis]);
+            held[maxBands + 3 + axis] = static_cast<float>(normal[axis]);
           this->Used[index] = 1;
         }
       });
@@ -90,6 +92,8 @@ PostSky::Value PostSky::at(const HorizonMap::Post& post, const Vec3& normal, con
   for (int band = 0; band < maxBands; ++band)
     result.irradiance[band] = std::max(0.0, open[band] - hidden.irradiance[band]);
   result.skyViewFactor = std::max(0.0, openOmega - hidden.projectedSolidAngle) / pi;
+  result.openLargestBand = largestBand(open);
+  result.openProjectedSolidAngle = openOmega;
   return result;
 }
 
@@ -130,12 +134,14 @@ PostSky::Value PostSky::valueOf(const std::array<float, valueSize>& held)
   for (int band = 0; band < maxBands; ++band)
     value.irradiance[band] = held[band];
   value.skyViewFactor = held[maxBands];
+  value.openLargestBand = held[maxBands + 1];
+  value.openProjectedSolidAngle = held[maxBands + 2];
   return value;
 }
 
 Vec3 PostSky::normalOf(const std::array<float, valueSize>& held)
 {
-  return Vec3(held[maxBands + 1], held[maxBands + 2], held[maxBands + 3]);
+  return Vec3(held[maxBands + 3], held[maxBands + 4], held[maxBands + 5]);
 }
 
 bool PostSky::interpolate(double u, double v, Spectrum& irradiance) const

@@ -43,6 +43,10 @@ public:
   {
     Spectrum irradiance{};
     double skyViewFactor = 0.0;
+    /// The open sky on the same plane (OpenSky::irradiance): its largest band and its
+    /// projected solid angle, kept so that the sky's error (the share the horizons
+    /// hide) needs no second evaluation of it, exact on small terrains.
+    double openLargestBand = 0.0, openProjectedSolidAngle = 0.0;
   };
   /// The sky a post receives on a plane of unit normal n: the open sky less what its
   /// horizon hides (as the final gather takes it at a post).
@@ -66,10 +70,10 @@ private:
     const std::vector<std::uint8_t>* again);
   const TerrainGrid& Terrain;
   HeldPosts Held;
-  // Per held post, row by row: irradiance, sky view factor and the normal it was found
-  // on, each written by a parallel loop or a share without a serial zeroing first (read
+  // Per held post, row by row: irradiance, sky view factor, the open sky's largest band
+  // and projected solid angle, and the normal it was found on, each written by a parallel loop or a share without a serial zeroing first (read
   // only where Used).
-  static constexpr int valueSize = maxBands + 4;
+  static constexpr int valueSize = maxBands + 6;
   static Value valueOf(const std::array<float, valueSize>& held);
   static Vec3 normalOf(const std::array<float, valueSize>& held);
   /// Post (i, j)'s held values; null where this process does not hold it or it is unused.

@@ -55,6 +55,15 @@ TEST(PostSky, PostsHoldTheirSkyAndCellsReadItBetweenThem)
     PostSky::Value stored;
     ASSERT_TRUE(skies.found(map.find(grid->post(i, j)), grid->postNormal(i, j), stored));
     EXPECT_NEAR(stored.irradiance[0], at(i, j).irradiance[0], 1e-4 * open0[0]);
+    // It also keeps the open sky of its plane (what the sky's error estimate compares
+    // the sky with), as OpenSky finds it on the post's normal.
+    Spectrum openHere;
+    double omegaHere = 0.0;
+    open.irradiance(grid->postNormal(i, j), openHere, omegaHere);
+    EXPECT_NEAR(stored.openLargestBand, largestBand(openHere), 1e-6 * open0[0]);
+    EXPECT_NEAR(stored.openProjectedSolidAngle, omegaHere, 1e-6);
+    if (i == 16)
+      EXPECT_LT(stored.irradiance[0], 0.6 * stored.openLargestBand); // the pit hides much of it
     Spectrum read;
     ASSERT_TRUE(skies.interpolate(i, j, read));
     EXPECT_NEAR(read[0], at(i, j).irradiance[0], 1e-4 * open0[0]);
