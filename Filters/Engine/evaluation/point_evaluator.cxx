@@ -105,7 +105,7 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
       const GatherInputs overHierarchy{ this->Rays, solved.polygonRoots(), solved.terrainRoots(),
         solved.hierarchySuns() };
       const LeafGather probe(solved.surfaceLeaves(), this->Rays,
-        std::min(Tuning::leafGatherRays, this->Options.gatherSamples), true);
+        std::min(Tuning::deficitProbeRays(this->Options.targetError), this->Options.gatherSamples), true);
       deficit = HierarchyDeficit::measure(probe, FinalGather(overHierarchy), Tuning::deficitProbeLeaves);
     }
   }

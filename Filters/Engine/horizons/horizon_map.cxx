@@ -274,7 +274,7 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
   }
   dx /= length, dy /= length;
   // Each post's distance along the azimuth, found once rather than at each crossing
-  // that interpolates it (half the sweep's time), and its height.
+  // that interpolates it (docs/tuning.md), and its height.
   const float* xyz = t.vertices();
   UninitializedVector<ProfilePost>& along = this->SweepProfile;
   along.resize(static_cast<std::size_t>(nx) * ny);

@@ -30,6 +30,18 @@ struct Tuning
   static constexpr int leafGatherPasses = 3;
   /// Leaves sampled to measure how far the hierarchy's light from surfaces is off.
   static constexpr std::size_t deficitProbeLeaves = 512;
+  /// Rays per sampled leaf: the leaves' own gather's up to this TargetError, fewer in
+  /// proportion beyond it, to a floor. A coarser target needs the deficit (a term of
+  /// each point's estimate) less exactly, and on small terrains the probe was a third
+  /// of the coarse end's rays.
+  static constexpr double deficitProbeTarget = 0.008;
+  static constexpr int deficitProbeFewestRays = 32;
+  static int deficitProbeRays(double targetError)
+  {
+    const double scaled = targetError > deficitProbeTarget ? leafGatherRays * deficitProbeTarget / targetError
+                                                           : leafGatherRays;
+    return scaled > deficitProbeFewestRays ? static_cast<int>(scaled) : deficitProbeFewestRays;
+  }
   /// The share of the sky a post's horizons hide that its error estimate takes: the
   /// horizons are interpolated between the map's azimuths, and no ray corrects them.
   static constexpr double horizonSkyError = 0.1;
