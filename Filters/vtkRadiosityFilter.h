@@ -44,8 +44,9 @@ public:
    * estimate (a cluster, a coarse terrain quad) may leave out more than 5 times this
    * fraction of the scene's mean irradiance at its receiver (the bound each receiver
    * sees). The points' values (EvaluateAtPoints) gather over the leaves at full
-   * resolution, so a coarse hierarchy serves them: TargetError sets their accuracy.
-   * Default is 1e-2.
+   * resolution, so a coarse hierarchy serves them: TargetError sets their accuracy;
+   * from TargetError 0.03 up (the knob's coarse end) the hierarchy refines to three
+   * times this. Default is 1e-2.
    */
   vtkSetClampMacro(ErrorTolerance, double, 1e-9, 1.0);
   vtkGetMacro(ErrorTolerance, double);
@@ -93,7 +94,8 @@ public:
    * 0.008 (the default) gives 0.2-0.7 % global RMS on the validation's scenes, 0.04
    * (the command's --fast) 2-3 times faster at most 2 % (docs/validation.md). From
    * 0.03 up, a terrain's horizons are found toward 16 azimuths instead of 32 (see
-   * SkyFromHorizons): half their time, the sky between azimuths less exact.
+   * SkyFromHorizons): half their time, the sky between azimuths less exact; and the
+   * hierarchy refines to three times ErrorTolerance.
    * Defaults are 0.008 and -1 (the floor follows TargetError).
    */
   vtkSetClampMacro(TargetError, double, 1e-6, 1.0);

@@ -28,6 +28,7 @@
 #include "visibility/scene_geometry.h"
 #include "evaluation/point_evaluator.h"
 #include "solver/solver.h"
+#include "solver/tuning.h"
 #include "visibility/visibility.h"
 #include "parallel/terrain_window.h"
 #include "parallel/work_split.h"
@@ -166,7 +167,8 @@ void addStatistics(const terralux::HierarchicalRadiosity& solver, const vtkRadio
 terralux::HierarchicalRadiosity& vtkRadiosityFilter::PrepareSolver(std::unique_ptr<vtkRadiosityScene>& scene)
 {
   terralux::RadiosityOptions options;
-  options.errorTolerance = this->ErrorTolerance;
+  options.errorTolerance =
+    terralux::Tuning::hierarchyTolerance(this->ErrorTolerance, this->TargetError, this->EvaluateAtPoints != 0);
   options.minimumElementArea = this->MinimumElementArea;
   options.visibilitySamples = this->VisibilitySamples;
   options.gatherSamples = this->MaximumGatherRays;

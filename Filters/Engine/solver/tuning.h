@@ -16,6 +16,18 @@ struct Tuning
   /// TargetError from which the map is coarse (16 azimuths; fewer suns than above).
   static constexpr double coarseHorizonsTarget = 0.03;
 
+  // The hierarchy at the knob's coarse end.
+  /// From coarseHorizonsTarget on, with values evaluated at points, the hierarchy refines
+  /// to this times ErrorTolerance: the points gather over the leaves at full resolution,
+  /// and a coarse target does not need the finer hierarchy.
+  static constexpr double coarseHierarchyFactor = 3.0;
+  /// The refinement tolerance of a solve whose values are evaluated at points
+  /// (`atPoints`) to `targetError`, for a user's `errorTolerance`.
+  static double hierarchyTolerance(double errorTolerance, double targetError, bool atPoints)
+  {
+    return atPoints && targetError >= coarseHorizonsTarget ? coarseHierarchyFactor * errorTolerance : errorTolerance;
+  }
+
   // The hierarchy's suns (HierarchicalRadiosity::mergeSuns).
   /// Suns beyond which those within mergedSunDegrees of each other are merged into one.
   static constexpr std::size_t maximumSolveSuns = 64;

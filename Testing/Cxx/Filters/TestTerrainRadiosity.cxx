@@ -528,3 +528,33 @@ TEST(TerrainRadiosity, AFarTerrainKeepsEveryPostAndValuesCloseToTheFullResolutio
       ASSERT_EQ(array(again, "Irradiance")->GetComponent(k, 0), array(full, "Irradiance")->GetComponent(k, 0)) << k;
   }
 }
+
+// At the knob's coarse end (TargetError from 0.03) the points' hierarchy refines to
+// three times ErrorTolerance: the same elements as that tolerance asked for outright,
+// and values within the coarse end's aim. Averaged values take ErrorTolerance as given.
+TEST(TerrainRadiosity, TheCoarseEndRefinesTheHierarchyToThreeTimesTheTolerance)
+{
+  const RasterSpec spec = demSpec([](double x, double y) { return 60.0 * std::sin(x / 70.0) * std::cos(y / 50.0); });
+  LitTerrain lit("coarse_end.tif", spec);
+  auto elements = [&]() { return fieldValue(lit.radiosity->GetOutput(), "Elements"); };
+  lit.radiosity->SetErrorTolerance(1e-3);
+  lit.radiosity->SetTargetError(0.04);
+  auto coarse = lit.run(true);
+  const double coarseElements = elements();
+  lit.radiosity->SetTargetError(0.008);
+  auto fine = lit.run(true);
+  const double fineElements = elements();
+  EXPECT_LT(coarseElements, fineElements);
+  lit.radiosity->SetErrorTolerance(3e-3);
+  lit.run(true);
+  EXPECT_EQ(elements(), coarseElements);
+  EXPECT_LT(relativeRms(array(coarse, "Irradiance"), array(fine, "Irradiance")), 0.02);
+  // Averaged, TargetError changes nothing.
+  lit.radiosity->SetErrorTolerance(1e-3);
+  lit.run(true, false);
+  const double averagedElements = elements();
+  lit.radiosity->SetTargetError(0.04);
+  lit.run(true, false);
+  EXPECT_EQ(elements(), averagedElements);
+  EXPECT_EQ(averagedElements, fineElements);
+}
