@@ -71,8 +71,8 @@ private:
   const TerrainGrid& Terrain;
   HeldPosts Held;
   // Per held post, row by row: irradiance, sky view factor, the open sky's largest band
-  // and projected solid angle, and the normal it was found on, each written by a parallel loop or a share without a serial zeroing first (read
-  // only where Used).
+  // and projected solid angle, and the normal it was found on, each written by a
+  // parallel loop or a share without a serial zeroing first (read only where Used).
   static constexpr int valueSize = maxBands + 6;
   static Value valueOf(const std::array<float, valueSize>& held);
   static Vec3 normalOf(const std::array<float, valueSize>& held);
