@@ -81,7 +81,7 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
     this->SkyAtPoints = std::make_unique<OpenSky>(*sky);
     // Many points to evaluate: the open sky of each point's plane from a table over
     // normals rather than one exact evaluation per point (docs/tuning.md).
-    if (this->Options.gatherSamples > 0 && solved.pointCount() > 2 * 65 * 65)
+    if (this->Options.gatherSamples > 0 && solved.pointCount() > Tuning::openSkyTableFewestPoints)
       this->SkyAtPoints->tabulate(solved.pointCount() > Tuning::openSkyTablePoints ? 128 : 64);
     // Until the posts' horizons are found, those the rays find.
     if (solved.skyFromHorizons())

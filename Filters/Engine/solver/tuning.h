@@ -36,6 +36,10 @@ struct Tuning
   // The open sky of a point's plane (OpenSky::tabulate).
   /// Points from which its table over normals is 128 a side instead of 64.
   static constexpr std::size_t openSkyTablePoints = 200000;
+  /// Points from which the table (64 a side) serves rather than an exact evaluation per
+  /// point: about its vertices over the upper hemisphere, so that the table, filled where
+  /// it is read, evaluates no more often than the points would.
+  static constexpr std::size_t openSkyTableFewestPoints = 65 * 65 / 2;
 
   // The leaves' own gather (LeafLight): rays per leaf and passes (bounces).
   static constexpr int leafGatherRays = 256;
