@@ -163,11 +163,9 @@ int SkyPatchElement::sideOf(const Vec3& n, const PlaneTerms& plane) const
 
 double SkyPatchElement::kernel(const Vec3& normal) const
 {
-  const PlaneTerms plane(normal);
-  const int side = this->sideOf(normal, plane);
-  if (side > 0)
-    return std::max(0.0, glm::dot(normal, this->RadianceVector));
-  return side < 0 ? 0.0 : this->straddlingProjection(normal, plane);
+  double kernel = 0.0, projected = 0.0;
+  this->kernelAndProjection(normal, kernel, projected);
+  return kernel;
 }
 
 double SkyPatchElement::geometricShare(const Vec3& normal) const
@@ -180,11 +178,15 @@ double SkyPatchElement::geometricShare(const Vec3& normal) const
 
 double SkyPatchElement::projectedSolidAngle(const Vec3& normal) const
 {
+  double kernel = 0.0, projected = 0.0;
+  this->kernelAndProjection(normal, kernel, projected);
+  return projected;
+}
+
+void SkyPatchElement::kernelAndProjection(const Vec3& normal, double& kernel, double& projected) const
+{
   const PlaneTerms plane(normal);
-  const int side = this->sideOf(normal, plane);
-  if (side > 0)
-    return std::max(0.0, glm::dot(normal, this->VectorSolidAngle));
-  return side < 0 ? 0.0 : this->straddlingProjection(normal, plane);
+  this->kernelAndProjection(normal, plane, this->sideOf(normal, plane), kernel, projected);
 }
 
 void SkyPatchElement::kernelAndProjection(

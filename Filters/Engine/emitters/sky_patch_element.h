@@ -54,7 +54,9 @@ public:
     double horizontal; ///< |(n_x, n_y)|
     double phi;        ///< atan2(n_x, n_y): the azimuth v where n . d is least
   };
-  /// kernel(n) and projectedSolidAngle(n) at once, for a side already known (sideOf).
+  /// kernel(n) and projectedSolidAngle(n) at once.
+  void kernelAndProjection(const Vec3& normal, double& kernel, double& projected) const;
+  /// The same for a side already known (sideOf).
   void kernelAndProjection(
     const Vec3& normal, const PlaneTerms& plane, int side, double& kernel, double& projected) const;
   /// A direction in the patch for sampled visibility, distributed like the irradiance
