@@ -24,24 +24,19 @@ OpenSky::OpenSky(const SkyHierarchy& sky)
       {
         const SkyPatch cell{ level, iu, iv };
         patches.push_back(std::make_unique<SkyPatchElement>(0, level, nullptr, &sky, cell));
-        // Largest distance from the centre direction to the patch's boundary (where the
-        // farthest point of a patch below a hemisphere lies), sampled densely, padded.
+        // Largest distance from the centre direction to the patch (padded): at a corner.
+        // Along an edge of constant altitude the cosine to the centre falls with the
+        // azimuth's distance from the centre's (at most pi), and along an edge of
+        // constant azimuth it is a cosine of the altitude whose minimum lies outside
+        // [0, pi / 2].
         const Vec3& c = patches.back()->direction();
         double radius = 0.0;
-        constexpr int steps = 32;
-        for (int k = 0; k <= steps; ++k)
-        {
-          const double f = static_cast<double>(k) / steps;
-          const double us[4] = { cell.u0(), cell.u1(), cell.u0() + f * (cell.u1() - cell.u0()),
-            cell.u0() + f * (cell.u1() - cell.u0()) };
-          const double vs[4] = { cell.v0() + f * (cell.v1() - cell.v0()), cell.v0() + f * (cell.v1() - cell.v0()),
-            cell.v0(), cell.v1() };
-          for (int e = 0; e < 4; ++e)
+        for (const double u : { cell.u0(), cell.u1() })
+          for (const double v : { cell.v0(), cell.v1() })
           {
-            const Direction d = directionFromSkyParameters(us[e], vs[e]);
+            const Direction d = directionFromSkyParameters(u, v);
             radius = std::max(radius, glm::length(Vec3(d[0], d[1], d[2]) - c));
           }
-        }
         radii.push_back(1.01 * radius + 1e-9);
       }
     this->Levels.push_back(std::move(patches));

@@ -73,15 +73,23 @@ void forCellGaussPoints(const SkyPatch& cell, F&& f)
   constexpr double nodes[3] = { -0.7745966692414834, 0.0, 0.7745966692414834 };
   constexpr double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
   const double s0 = std::sin(cell.u0()), s1 = std::sin(cell.u1()), v0 = cell.v0(), v1 = cell.v1();
+  // The points' directions as directionFromSkyParameters gives them, from one sine and
+  // cosine per altitude and per azimuth (9 points a cell, the whole sky's at level 7).
+  double v[3], sinV[3], cosV[3];
+  for (int b = 0; b < 3; ++b)
+  {
+    v[b] = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * nodes[b];
+    sinV[b] = std::sin(v[b]);
+    cosV[b] = std::cos(v[b]);
+  }
   for (int a = 0; a < 3; ++a)
   {
     const double s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * nodes[a];
     const double u = std::asin(std::min(1.0, std::max(0.0, s)));
+    const double sinU = std::sin(u), cosU = std::cos(u);
     for (int b = 0; b < 3; ++b)
-    {
-      const double v = 0.5 * (v0 + v1) + 0.5 * (v1 - v0) * nodes[b];
-      f(directionFromSkyParameters(u, v), 0.25 * (s1 - s0) * (v1 - v0) * weights[a] * weights[b], s, u, v);
-    }
+      f(Direction{ -sinV[b] * cosU, -cosV[b] * cosU, sinU }, 0.25 * (s1 - s0) * (v1 - v0) * weights[a] * weights[b], s,
+        u, v[b]);
   }
 }
 

@@ -177,3 +177,31 @@ TEST(OpenSky, RadianceTowardAPatchCentreIsThatPatchsRadiance)
     }
   EXPECT_EQ(open.radiance(Vec3(0.0, 0.6, -0.8))[0], 0.0); // below the horizon
 }
+
+TEST(OpenSky, APatchLiesNoFartherFromItsCentreThanItsFarthestCorner)
+{
+  // OpenSky's cheap side test bounds each patch by its corners' distance from the
+  // patch's centre direction: true of every point inside, sampled densely here, at
+  // every level it splits to.
+  auto distance = [](const Direction& a, const Direction& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+  };
+  for (int level = 0; level <= 5; ++level)
+    for (int iu = 0; iu < SkyHierarchy::cellsPerSide(level); ++iu)
+      for (int iv = 0; iv < SkyHierarchy::cellsPerSide(level); ++iv)
+      {
+        const SkyPatch patch{ level, iu, iv };
+        const Direction centre = patch.direction();
+        double corners = 0.0, inside = 0.0;
+        for (const double u : { patch.u0(), patch.u1() })
+          for (const double v : { patch.v0(), patch.v1() })
+            corners = std::max(corners, distance(directionFromSkyParameters(u, v), centre));
+        constexpr int steps = 24;
+        for (int a = 0; a <= steps; ++a)
+          for (int b = 0; b <= steps; ++b)
+            inside = std::max(inside, distance(directionFromSkyParameters(patch.u0() + a * (patch.u1() - patch.u0()) / steps,
+                                                 patch.v0() + b * (patch.v1() - patch.v0()) / steps),
+                                        centre));
+        ASSERT_LE(inside, corners * (1.0 + 1e-12)) << level << " " << iu << " " << iv;
+      }
+}
