@@ -74,7 +74,7 @@ void forCellGaussPoints(const SkyPatch& cell, F&& f)
   constexpr double weights[3] = { 5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0 };
   const double s0 = std::sin(cell.u0()), s1 = std::sin(cell.u1()), v0 = cell.v0(), v1 = cell.v1();
   // The points' directions as directionFromSkyParameters gives them, from one sine and
-  // cosine per altitude and per azimuth (9 points a cell, the whole sky's at level 7).
+  // cosine per altitude and per azimuth rather than one of each per point.
   double v[3], sinV[3], cosV[3];
   for (int b = 0; b < 3; ++b)
   {
