@@ -45,7 +45,7 @@ def on_triangles(grid, u, v):
     return np.where(s + t <= 1, lower, upper)
 
 
-def march(points, heights, radiosity, azimuths):
+def march(points, spacing, heights, radiosity, azimuths):
     """Per post: the terrain seen, the light it sends and the void below the horizontal,
     as shares of the hemisphere's projected solid angle (the light in W/m^2)."""
     ny, nx = heights.shape
@@ -58,7 +58,7 @@ def march(points, heights, radiosity, azimuths):
         dx, dy = np.cos(phi), np.sin(phi)
         u, v = i[:, None] + steps * dx, j[:, None] + steps * dy
         inside = (u >= 0) & (u <= nx - 1) & (v >= 0) & (v <= ny - 1)
-        elevation = np.where(inside, np.arctan2(on_triangles(heights, u, v) - z[:, None], steps * points["spacing"]),
+        elevation = np.where(inside, np.arctan2(on_triangles(heights, u, v) - z[:, None], steps * spacing),
                              -np.pi)
         nearer = np.concatenate([np.full((len(z), 1), -np.pi), np.maximum.accumulate(elevation, 1)[:, :-1]], 1)
         # The post's plane in this azimuth, and the projected solid angle of an elevation
@@ -108,7 +108,6 @@ def main():
         sys.exit("faint_reads.py: the points are not an axis-aligned grid of posts (a terrain scene's, "
                  "e.g. steep-noon, steep-morning or fractal)")
     spacing = float(np.median(np.diff(xs)))
-    points["spacing"] = spacing
     points["i"] = np.round((points["x"] - xs[0]) / spacing).astype(int)
     points["j"] = np.round((points["y"] - ys[0]) / spacing).astype(int)
 
@@ -118,7 +117,7 @@ def main():
         return g
 
     heights = grid(points["z"])
-    seen, light, void = march(points, heights, grid(reflectance * points["ref_global"]), azimuths)
+    seen, light, void = march(points, spacing, heights, grid(reflectance * points["ref_global"]), azimuths)
     mapped = 1.0 - points["sky_view"]
     truth = points["ref_reflected"]
     used = points["used"] > 0
