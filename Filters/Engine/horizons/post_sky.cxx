@@ -67,11 +67,11 @@ void PostSky::findOwn(const HorizonSky& horizons, const OpenSky& sky, bool hornN
           std::array<float, valueSize>& held = this->Values[index];
           for (int band = 0; band < maxBands; ++band)
             held[band] = static_cast<float>(value.irradiance[band]);
-          held[maxBands] = static_cast<float>(value.skyViewFactor);
-          held[maxBands + 1] = static_cast<float>(value.openLargestBand);
-          held[maxBands + 2] = static_cast<float>(value.openProjectedSolidAngle);
+          held[skyViewSlot] = static_cast<float>(value.skyViewFactor);
+          held[openBandSlot] = static_cast<float>(value.openLargestBand);
+          held[openSolidAngleSlot] = static_cast<float>(value.openProjectedSolidAngle);
           for (int axis = 0; axis < 3; ++axis)
-            held[maxBands + 3 + axis] = static_cast<float>(normal[axis]);
+            held[normalSlot + axis] = static_cast<float>(normal[axis]);
           this->Used[index] = 1;
         }
       });
@@ -133,15 +133,15 @@ PostSky::Value PostSky::valueOf(const std::array<float, valueSize>& held)
   Value value;
   for (int band = 0; band < maxBands; ++band)
     value.irradiance[band] = held[band];
-  value.skyViewFactor = held[maxBands];
-  value.openLargestBand = held[maxBands + 1];
-  value.openProjectedSolidAngle = held[maxBands + 2];
+  value.skyViewFactor = held[skyViewSlot];
+  value.openLargestBand = held[openBandSlot];
+  value.openProjectedSolidAngle = held[openSolidAngleSlot];
   return value;
 }
 
 Vec3 PostSky::normalOf(const std::array<float, valueSize>& held)
 {
-  return Vec3(held[maxBands + 3], held[maxBands + 4], held[maxBands + 5]);
+  return Vec3(held[normalSlot], held[normalSlot + 1], held[normalSlot + 2]);
 }
 
 bool PostSky::interpolate(double u, double v, Spectrum& irradiance) const

@@ -70,10 +70,13 @@ private:
     const std::vector<std::uint8_t>* again);
   const TerrainGrid& Terrain;
   HeldPosts Held;
-  // Per held post, row by row: irradiance, sky view factor, the open sky's largest band
-  // and projected solid angle, and the normal it was found on, each written by a
-  // parallel loop or a share without a serial zeroing first (read only where Used).
-  static constexpr int valueSize = maxBands + 6;
+  // Per held post, row by row: irradiance (its bands first), sky view factor, the open
+  // sky's largest band and projected solid angle, and the normal it was found on, each
+  // written by a parallel loop or a share without a serial zeroing first (read only
+  // where Used).
+  static constexpr int skyViewSlot = maxBands, openBandSlot = maxBands + 1, openSolidAngleSlot = maxBands + 2,
+                       normalSlot = maxBands + 3;
+  static constexpr int valueSize = normalSlot + 3;
   static Value valueOf(const std::array<float, valueSize>& held);
   static Vec3 normalOf(const std::array<float, valueSize>& held);
   /// Post (i, j)'s held values; null where this process does not hold it or it is unused.
