@@ -288,15 +288,16 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
     !this->PostSkies->found(post, normal, sky))
     return false;
   // The sky is its horizons'. The light from surfaces comes from the terrain the post
-  // sees, 1 - its sky view factor: that times what the lattice's posts around found per
-  // terrain seen.
+  // sees, 1 - its sky view factor less the void (directions that leave the terrain
+  // below the horizontal; docs/tuning.md): that times what the lattice's posts around
+  // found per terrain seen.
   // Read between them it errs by at most their spread, plus the bias of reading light
   // from surfaces between posts (Tuning::latticeReadBias); the post reads it where that
   // meets its target, else gathers. The error of what the lattice's posts read from the
   // hierarchy is in both (a gather's hits read the lattice too), so it does not decide;
   // nor does the sky's (no ray corrects it), nor anything else a process computes for
   // itself (a window's own hierarchy), and pieces read where one process does.
-  const double terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
+  const double terrainSeen = sky.terrainSeen();
   const double received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
   const double spread = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen);
   const double largestReflected = terrainSeen * std::max(0.0, around.largestPerTerrainSeen);
@@ -451,7 +452,7 @@ void PointEvaluator::gatherLatticePosts(
       PostLattice::Gathered gathered;
       gathered.reflected = result.irradiance[ReflectedLight];
       gathered.variance = result.gatherVariance;
-      gathered.terrainSeen = std::max(0.0, 1.0 - sky.skyViewFactor);
+      gathered.terrainSeen = sky.terrainSeen();
       gathered.received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
       gathered.edge = !grid.surroundedByCells(i, j);
       lattice.set(i, j, gathered);

@@ -59,7 +59,7 @@ public:
   {
     Spectrum reflected{};          ///< light from surfaces
     double variance = 0.0;         ///< of one ray's estimate
-    double terrainSeen = 0.0;      ///< 1 - its horizons' sky view factor
+    double terrainSeen = 0.0;      ///< PostSky::Value::terrainSeen()
     double received = 0.0;         ///< from the sun and its horizons' sky (largest bands)
     bool edge = false;             ///< on the terrain's edge (see Around::edgeCorner)
   };

@@ -173,6 +173,16 @@ std::size_t HorizonMap::postsX() const
   return static_cast<std::size_t>(this->Terrain.postsX());
 }
 
+std::uint16_t HorizonMap::codeOfTangent(double tangent)
+{
+  if (!(tangent > -std::numeric_limits<double>::infinity()))
+    return horizontalCode - 32767;
+  const double elevation = tangent >= 0.0 ? atanOfPositive(tangent) : -atanOfPositive(-tangent);
+  // Rounded to the nearest (a positive value: + 0.5, truncated).
+  const double code = horizontalCode + elevation / (0.5 * pi) * 32767.0 + 0.5;
+  return static_cast<std::uint16_t>(std::clamp(code, 1.0, 65535.0));
+}
+
 bool HorizonMap::fits(const TerrainGrid& terrain, Density density)
 {
   const double bytes = 2.0 * static_cast<int>(density) * terrain.postsX() * terrain.postsY();
@@ -269,7 +279,7 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
   if (!(length > 0.0))
   {
     // A grid without extent.
-    std::fill_n(out, window.empty() ? 0 : outX * static_cast<std::size_t>(window.j1 - window.j0 + 1), std::uint16_t{ 0 });
+    std::fill_n(out, window.empty() ? 0 : outX * static_cast<std::size_t>(window.j1 - window.j0 + 1), horizontalCode);
     return;
   }
   dx /= length, dy /= length;
@@ -395,25 +405,19 @@ void HorizonMap::sweep(int q, int p, const std::vector<LineRun>& runs, const Wor
           }
           std::uint16_t& horizon =
             out[static_cast<std::size_t>(j - window.j0) * outX + static_cast<std::size_t>(i - window.i0)];
-          horizon = 0; // nothing above the horizontal, or a post of no cell
           if (!complete && !t.postUsed(i, j))
           {
+            horizon = horizontalCode; // a post of no cell
             hulls[l].size = size;
             captureAt(run, l, k);
             continue;
           }
           const auto [x, z] = pointOf(here);
           pop(hull, size, x, z);
-          if (size > 0 && hull[size - 1].x > x)
-          {
-            const double tangent = (hull[size - 1].z - z) / (hull[size - 1].x - x);
-            if (tangent > 0.0)
-            {
-              // Rounded to the nearest (a positive value: + 0.5, truncated).
-              const double quantised = atanOfPositive(tangent) / (0.5 * pi) * 65535.0 + 0.5;
-              horizon = static_cast<std::uint16_t>(std::min(65535.0, quantised));
-            }
-          }
+          // Below the horizontal too, where the terrain ahead falls away; nothing ahead:
+          // the nadir.
+          horizon = codeOfTangent(size > 0 && hull[size - 1].x > x ? (hull[size - 1].z - z) / (hull[size - 1].x - x)
+                                                                     : -std::numeric_limits<double>::infinity());
           hull[size++] = { x, z };
           hulls[l].size = size;
           captureAt(run, l, k);

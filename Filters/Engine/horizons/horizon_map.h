@@ -113,6 +113,9 @@ public:
   /// The horizon's elevation at a post toward azimuth a (radians, 0 where nothing
   /// rises above the horizontal), to 2.4e-5 rad.
   double elevation(const Post& post, int a) const { return this->elevationAt(this->cellOf(post), a); }
+  /// The same as it lies: below the horizontal where the terrain ahead falls away,
+  /// -pi/2 where none lies ahead (the DEM's edge or missing data beyond the post).
+  double trueElevation(const Post& post, int a) const { return this->trueElevationAt(this->cellOf(post), a); }
   /// Where a post's horizons lie in the map (its window's order), for elevationAt.
   std::size_t cellOf(const Post& post) const
   {
@@ -121,10 +124,17 @@ public:
     const std::size_t nx = this->postsX(), i = post.index % nx, j = post.index / nx;
     return (j - this->Held.j0) * this->HeldX + (i - this->Held.i0);
   }
-  double elevationAt(std::size_t cell, int a) const
+  double elevationAt(std::size_t cell, int a) const { return std::max(0.0, this->trueElevationAt(cell, a)); }
+  double trueElevationAt(std::size_t cell, int a) const { return elevationOfCode(this->Elevations[a * this->HeldCount + cell]); }
+  /// Elevations as the map keeps them: -pi/2 to pi/2 in steps of pi/2 / 32767 (4.8e-5
+  /// rad), rounded to the nearest; the horizontal is horizontalCode.
+  static constexpr std::uint16_t horizontalCode = 32768;
+  static double elevationOfCode(std::uint16_t code)
   {
-    return this->Elevations[a * this->HeldCount + cell] * (0.5 * pi / 65535.0);
+    return (static_cast<int>(code) - static_cast<int>(horizontalCode)) * (0.5 * pi / 32767.0);
   }
+  /// The code of a horizon's tangent (-inf: nothing ahead, the nadir's).
+  static std::uint16_t codeOfTangent(double tangent);
 
   /// A direction between two of the map's azimuths: the one below it (k) and how far
   /// it lies from it and from the next (radians).
@@ -297,9 +307,11 @@ private:
   /// run one at a time) rather than allocated for each; emptied once the map is built.
   UninitializedVector<ProfilePost> SweepProfile;
   /// One post's horizon toward step (q, p) found alone, along its line from the post
-  /// out (the sweep's profile, the same value): a refined map's exact posts.
+  /// out (the sweep's profile, the same value), as its tangent where above the
+  /// horizontal (0 elsewhere: the walk ends where nothing can rise above it): a refined
+  /// map's exact posts.
   struct LineWalk;
-  std::uint16_t walkedHorizon(int i, int j, const LineWalk& line) const;
+  double walkedTangent(int i, int j, const LineWalk& line) const;
   /// A window's horizons toward step (q, p), at every post of its grid
   /// (horizon_window.cxx).
   void sweepWindow(int q, int p, const GivenFarTerrain& far, double detailDistance, std::uint16_t* out) const;
@@ -349,7 +361,7 @@ private:
   /// A metre along each azimuth in grid parameters (the mean map inverted).
   std::vector<std::array<double, 2>> AzimuthSteps;
   std::vector<std::array<double, 2>> AzimuthDirections; // (cos, sin) of each
-  /// Azimuth by azimuth, the held posts in order; elevation / (pi / 2) x 65535.
+  /// Azimuth by azimuth, the held posts in order; codeOfTangent's.
   UninitializedVector<std::uint16_t> Elevations; // every value written by a sweep or a share
   std::size_t PostCount = 0;
   /// A refined map's held posts whose horizons are all found (empty: every post).

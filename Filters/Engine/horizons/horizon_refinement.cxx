@@ -108,14 +108,28 @@ HorizonMap::HorizonMap(const HorizonMap& coarse, const std::vector<std::uint8_t>
       for (int i = this->Held.i0; i <= this->Held.i1; ++i)
       {
         const std::size_t cell = static_cast<std::size_t>(j - this->Held.j0) * this->HeldX + (i - this->Held.i0);
-        out[cell] = exact[cell] ? this->walkedHorizon(i, j, line)
-                                : static_cast<std::uint16_t>(lower[cell] + weight * (upper[cell] - lower[cell]) + 0.5);
+        // Above the horizontal, the horizons between as before; below it, what the
+        // terrain ahead falls away to, between too (a walk ends at the horizontal).
+        auto between = [&](std::uint16_t low, std::uint16_t high) {
+          return static_cast<std::uint16_t>(low + weight * (high - low) + 0.5);
+        };
+        const std::uint16_t rising =
+          between(std::max(lower[cell], horizontalCode), std::max(upper[cell], horizontalCode));
+        const std::uint16_t falling =
+          between(std::min(lower[cell], horizontalCode), std::min(upper[cell], horizontalCode));
+        if (!exact[cell])
+          out[cell] = rising > horizontalCode ? rising : falling;
+        else
+        {
+          const double walked = this->walkedTangent(i, j, line);
+          out[cell] = walked > 0.0 ? codeOfTangent(walked) : falling;
+        }
       }
     });
   }
 }
 
-std::uint16_t HorizonMap::walkedHorizon(int i, int j, const LineWalk& line) const
+double HorizonMap::walkedTangent(int i, int j, const LineWalk& line) const
 {
   const TerrainGrid& t = this->Terrain;
   const int nx = t.postsX(), ny = t.postsY(), q = line.q, p = line.p;
@@ -183,8 +197,6 @@ std::uint16_t HorizonMap::walkedHorizon(int i, int j, const LineWalk& line) cons
     if (x > x0 && rise <= steepest * (x - x0))
       break;
   }
-  if (!(steepest > 0.0))
-    return 0;
-  return static_cast<std::uint16_t>(std::min(65535.0, atanOfPositive(steepest) / (0.5 * pi) * 65535.0 + 0.5));
+  return steepest;
 }
 } // namespace terralux

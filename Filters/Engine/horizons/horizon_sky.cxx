@@ -416,6 +416,48 @@ void HorizonSky::mapHorizons(const HorizonMap::Post& post, const Vec3& normal, M
   }
 }
 
+double HorizonSky::voidAt(const HorizonMap::Post& post, const Vec3& normal) const
+{
+  const MapAzimuths& table = this->MapTable;
+  const int count = static_cast<int>(table.directions.size());
+  if (count == 0 || !(normal.z > 0.0))
+    return 0.0;
+  const std::size_t cell = this->Map->cellOf(post);
+  MapElevations falls;
+  bool any = false;
+  for (int a = 0; a < count; ++a)
+  {
+    falls[a] = std::min(0.0, this->Map->trueElevationAt(cell, a));
+    any = any || falls[a] < 0.0;
+  }
+  if (!any)
+    return 0.0;
+  // Per piece, at its middle: from the higher of the plane's horizon and the map's up
+  // to the horizontal, the integral of (n . d) cos u du dphi (its terms as hidePiece's).
+  double projected = 0.0;
+  for (int a = 0; a < count; ++a)
+  {
+    const int b = (a + 1) % count;
+    if (falls[a] == 0.0 && falls[b] == 0.0)
+      continue;
+    for (int j = 0; j < piecesPerSector; ++j)
+    {
+      const MapPiece& piece = table.pieces[a * piecesPerSector + j];
+      const double t = (j + 0.5) / piecesPerSector;
+      const double toward = normal.x * piece.middle.cos + normal.y * piece.middle.sin;
+      if (toward <= 0.0)
+        continue; // the plane stays above the horizontal there
+      const double from = std::max(-std::atan(toward / normal.z), (1.0 - t) * falls[a] + t * falls[b]);
+      if (from >= 0.0)
+        continue;
+      const double s = std::sin(from), c = std::cos(from);
+      const double across = normal.x * (piece.end.sin - piece.start.sin) - normal.y * (piece.end.cos - piece.start.cos);
+      projected -= across * 0.5 * (from + s * c) + normal.z * (piece.phi1 - piece.phi0) * 0.5 * s * s;
+    }
+  }
+  return std::max(0.0, projected / pi);
+}
+
 HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal, bool betweenAzimuths) const
 {
   // The map's azimuths, each with its horizon, interpolated between them over pieces

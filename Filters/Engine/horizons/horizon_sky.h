@@ -67,6 +67,12 @@ public:
   /// the map's horizons (no rays); with `betweenAzimuths`, from a coarse map, also the
   /// band between them (HiddenSky::betweenAzimuths).
   HiddenSky hiddenAt(const HorizonMap::Post& post, const Vec3& normal, bool betweenAzimuths = false) const;
+  /// The share of a post's view (projected solid angle / pi) above its plane and below
+  /// the horizontal whose directions leave the terrain without meeting it: where the
+  /// terrain ahead falls away (the map's horizon lies below the horizontal) or ends.
+  /// Neither sky nor terrain, it sends nothing: the post sees 1 - its sky view factor
+  /// - this of terrain. The map's horizons interpolated over its pieces, as hiddenAt.
+  double voidAt(const HorizonMap::Post& post, const Vec3& normal) const;
   const HorizonMap* map() const { return this->Map; }
 
   struct SinCos

@@ -321,7 +321,7 @@ void HorizonMap::sweepWindow(
   const double length = std::hypot(dx, dy);
   if (!(length > 0.0 && detailDistance > 0.0))
   {
-    std::fill_n(out, this->PostCount, std::uint16_t{ 0 });
+    std::fill_n(out, this->PostCount, horizontalCode);
     return;
   }
   dx /= length, dy /= length;
@@ -486,7 +486,7 @@ void HorizonMap::sweepWindow(
           beyond.push(farProfile[--farPushed]);
 
         std::uint16_t& horizon = out[static_cast<std::size_t>(run.j + k * p) * nx + static_cast<std::size_t>(run.i + k * q)];
-        horizon = 0; // nothing above the horizontal, or a post of no cell
+        horizon = horizontalCode; // a post of no cell
         if (!onTerrain[at])
           continue;
         double steepest = std::max({ rest.steepestFromNext(post), next.steepestFrom(post), beyond.steepestFrom(post) });
@@ -496,11 +496,7 @@ void HorizonMap::sweepWindow(
           steepest = std::max(steepest, (fineCut.heightAt(reach, at) - post.z) / detailDistance);
           steepest = std::max(steepest, (farCut.heightAt(reach, 0) - post.z) / detailDistance);
         }
-        if (steepest > 0.0)
-        {
-          const double quantised = atanOfPositive(steepest) / (0.5 * pi) * 65535.0 + 0.5;
-          horizon = static_cast<std::uint16_t>(std::min(65535.0, quantised));
-        }
+        horizon = codeOfTangent(steepest); // below the horizontal too
       }
     }
   });

@@ -70,6 +70,7 @@ void PostSky::findOwn(const HorizonSky& horizons, const OpenSky& sky, bool hornN
           held[skyViewSlot] = static_cast<float>(value.skyViewFactor);
           held[openBandSlot] = static_cast<float>(value.openLargestBand);
           held[openSolidAngleSlot] = static_cast<float>(value.openProjectedSolidAngle);
+          held[voidSlot] = static_cast<float>(value.voidViewFactor);
           for (int axis = 0; axis < 3; ++axis)
             held[normalSlot + axis] = static_cast<float>(normal[axis]);
           this->Used[index] = 1;
@@ -94,6 +95,7 @@ PostSky::Value PostSky::at(const HorizonMap::Post& post, const Vec3& normal, con
   result.skyViewFactor = std::max(0.0, openOmega - hidden.projectedSolidAngle) / pi;
   result.openLargestBand = largestBand(open);
   result.openProjectedSolidAngle = openOmega;
+  result.voidViewFactor = horizons.voidAt(post, normal);
   return result;
 }
 
@@ -136,6 +138,7 @@ PostSky::Value PostSky::valueOf(const std::array<float, valueSize>& held)
   value.skyViewFactor = held[skyViewSlot];
   value.openLargestBand = held[openBandSlot];
   value.openProjectedSolidAngle = held[openSolidAngleSlot];
+  value.voidViewFactor = held[voidSlot];
   return value;
 }
 

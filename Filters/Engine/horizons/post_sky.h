@@ -12,6 +12,7 @@
 #include "hierarchy/radiosity_types.h"
 #include "base/uninitialized_vector.h"
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -47,6 +48,10 @@ public:
     /// projected solid angle, kept so that the sky's error (the share the horizons
     /// hide) needs no second evaluation of it, exact on small terrains.
     double openLargestBand = 0.0, openProjectedSolidAngle = 0.0;
+    /// The share of the view that meets neither sky nor terrain (HorizonSky::voidAt).
+    double voidViewFactor = 0.0;
+    /// The share that meets terrain: where the light from surfaces comes from.
+    double terrainSeen() const { return std::max(0.0, 1.0 - this->skyViewFactor - this->voidViewFactor); }
   };
   /// The sky a post receives on a plane of unit normal n: the open sky less what its
   /// horizon hides (as the final gather takes it at a post).
@@ -71,11 +76,11 @@ private:
   const TerrainGrid& Terrain;
   HeldPosts Held;
   // Per held post, row by row: irradiance (its bands first), sky view factor, the open
-  // sky's largest band and projected solid angle, and the normal it was found on, each
+  // sky's largest band and projected solid angle, the void, and the normal it was found on, each
   // written by a parallel loop or a share without a serial zeroing first (read only
   // where Used).
   static constexpr int skyViewSlot = maxBands, openBandSlot = maxBands + 1, openSolidAngleSlot = maxBands + 2,
-                       normalSlot = maxBands + 3;
+                       voidSlot = maxBands + 3, normalSlot = maxBands + 4;
   static constexpr int valueSize = normalSlot + 3;
   static Value valueOf(const std::array<float, valueSize>& held);
   static Vec3 normalOf(const std::array<float, valueSize>& held);
