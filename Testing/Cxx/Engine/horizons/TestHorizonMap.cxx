@@ -49,6 +49,32 @@ TEST(HorizonMap, AzimuthsAreEvenlySpreadAndWallsSeenAtTheirTangent)
   EXPECT_FALSE(map.find(Vec3(-500.0, 0.0, 0.0)));
 }
 
+TEST(HorizonMap, TerrainFallingAwayKeepsItsHorizonBelowTheHorizontal)
+{
+  // A plane falling at 0.2 toward +x: from a post inside, toward azimuth phi the
+  // terrain ahead lies at atan(-0.2 cos phi), below the horizontal where cos phi > 0;
+  // from a post on the grid's +x edge nothing lies ahead there (the nadir).
+  const auto grid = makeGrid(101, 101, 10.0, [](double x, double) { return -0.2 * x; });
+  for (const HorizonMap::Density density : HorizonMap::densities)
+  {
+    const HorizonMap map(*grid, density);
+    const HorizonMap::Post inside = map.find(grid->post(50, 50)), edge = map.find(grid->post(100, 50));
+    ASSERT_TRUE(inside && edge);
+    for (int a = 0; a < map.azimuthCount(); ++a)
+    {
+      const double c = std::cos(map.azimuths()[a]);
+      const double expected = std::atan(-0.2 * c);
+      EXPECT_NEAR(map.trueElevation(inside, a), expected, 5e-5) << map.azimuths()[a] / degree;
+      EXPECT_NEAR(map.elevation(inside, a), std::max(0.0, expected), 5e-5) << map.azimuths()[a] / degree;
+      if (c > 1e-9)
+        EXPECT_EQ(map.trueElevation(edge, a), -0.5 * pi) << map.azimuths()[a] / degree;
+      else
+        EXPECT_GE(map.trueElevation(edge, a), -2.5e-5) << map.azimuths()[a] / degree;
+      EXPECT_GE(map.elevation(edge, a), 0.0);
+    }
+  }
+}
+
 TEST(HorizonMap, CoarseAndDenseAzimuthsKeepTheStandardOnesOrder)
 {
   // Dense azimuths lie between the standard ones, coarse ones are every other standard

@@ -5,6 +5,7 @@
 #include "base/angles.h"
 #include "horizons/horizon_map.h"
 #include "horizons/horizon_sky.h"
+#include "horizons/post_sky.h"
 #include "evaluation/open_sky.h"
 #include "visibility/sampling.h"
 #include "sky/sky_hierarchy.h"
@@ -84,6 +85,52 @@ TEST(HorizonSky, VValleyBottomSeesCosOfItsSlope)
       EXPECT_NEAR(1.0 - hidden.projectedSolidAngle / pi, std::cos(slope * degree), 0.005) << slope;
     }
   }
+}
+
+TEST(HorizonSky, ATiltedPlaneSeesTheVoidBelowTheHorizontalAndNoTerrain)
+{
+  // A post on a plane tilted by beta sees (1 + cos beta) / 2 of sky and (1 - cos beta)
+  // / 2 below the horizontal, where every direction leaves the plane without meeting
+  // it: void, no terrain. A V valley's bottom, level, sees none; a post on the edge of
+  // a level grid none either (nothing of its view lies below the horizontal).
+  const SkyHierarchy sky(UniformSky(), 100.0, 6);
+  const OpenSky open(sky);
+  for (double beta : { 10.0, 30.0 })
+  {
+    const double t = std::tan(beta * degree);
+    const auto grid = makeGrid(81, 81, 10.0, [&](double x, double y) { return -t * (0.6 * x + 0.8 * y); });
+    const RadiosityScene scene = sceneOf(*grid);
+    const Visibility rays(scene);
+    const HorizonMap map(*grid);
+    const HorizonSky horizons(rays, open, &map);
+    const HorizonMap::Post post = map.find(grid->post(40, 40));
+    ASSERT_TRUE(post);
+    const Vec3 normal = glm::normalize(Vec3(0.6 * t, 0.8 * t, 1.0));
+    const PostSky::Value value = PostSky::at(post, normal, horizons, open);
+    EXPECT_NEAR(value.voidViewFactor, 0.5 * (1.0 - std::cos(beta * degree)), 2e-3) << beta;
+    EXPECT_NEAR(value.skyViewFactor, 0.5 * (1.0 + std::cos(beta * degree)), 2e-3) << beta;
+    EXPECT_NEAR(value.terrainSeen(), 0.0, 3e-3) << beta;
+  }
+  const auto valley = makeGrid(81, 81, 10.0, [](double, double y) { return 0.5 * std::abs(y - 400.0); });
+  const RadiosityScene scene = sceneOf(*valley);
+  const Visibility rays(scene);
+  const HorizonMap map(*valley);
+  const HorizonSky horizons(rays, open, &map);
+  for (const int i : { 40, 0 })
+  {
+    const HorizonMap::Post post = map.find(valley->post(i, 40));
+    ASSERT_TRUE(post);
+    EXPECT_EQ(horizons.voidAt(post, Vec3(0, 0, 1)), 0.0) << i;
+  }
+  // A post on the valley's side, 10 m from the bottom, on the side's plane: below the
+  // horizontal toward the bottom the far side rises again, so its plane sees terrain
+  // there, no void. Higher up the side, sights near the valley's line leave the grid's
+  // ends before the bottom and see void (legitimately: nothing is there).
+  const Vec3 sideNormal = glm::normalize(Vec3(0.0, -0.5, 1.0));
+  const HorizonMap::Post low = map.find(valley->post(40, 41)), high = map.find(valley->post(40, 60));
+  ASSERT_TRUE(low && high);
+  EXPECT_EQ(horizons.voidAt(low, sideNormal), 0.0);
+  EXPECT_GT(horizons.voidAt(high, sideNormal), 1e-3);
 }
 
 TEST(HorizonSky, AgreesWithBruteForceRaysOnRoughTerrainUnderAClearSky)

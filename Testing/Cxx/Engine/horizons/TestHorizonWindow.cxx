@@ -79,6 +79,27 @@ TEST(HorizonWindow, AWindowsHorizonsAreThoseItsRaysSee)
   EXPECT_GT(map.elevation(post, 0), 0.9 * mountainTop);
 }
 
+TEST(HorizonWindow, TerrainFallingAwayKeepsItsHorizonBelowTheHorizontal)
+{
+  // A plane falling at 0.2 toward +x, its far terrain the same plane: from a window's
+  // post, toward azimuth phi the terrain lies at atan(-0.2 cos phi), within the detail
+  // distance and beyond it; past the far terrain's +x edge nothing lies (the nadir).
+  const auto grid = makeGrid(121, 101, 30.0, [](double x, double) { return -0.2 * x; });
+  const FarTerrain far(*grid, stride);
+  const auto window = windowOf(*grid, 40, 20, 41, 41);
+  const HorizonMap map(*window, GivenFarTerrain{ &far.grid(), stride, 40, 20 }, detail);
+  const HorizonMap::Post post = map.find(window->post(20, 20));
+  ASSERT_TRUE(post);
+  for (int a = 0; a < map.azimuthCount(); ++a)
+    EXPECT_NEAR(map.trueElevation(post, a), std::atan(-0.2 * std::cos(map.azimuths()[a])), 5e-5)
+      << map.azimuths()[a] / degree;
+  const auto edgeWindow = windowOf(*grid, 80, 20, 41, 41);
+  const HorizonMap edgeMap(*edgeWindow, GivenFarTerrain{ &far.grid(), stride, 80, 20 }, detail);
+  const HorizonMap::Post edge = edgeMap.find(edgeWindow->post(40, 20));
+  ASSERT_TRUE(edge);
+  EXPECT_EQ(edgeMap.trueElevation(edge, 0), -0.5 * pi);
+}
+
 TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
 {
   const auto grid = ridgesAndMountain();
@@ -98,7 +119,7 @@ TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
       {
         const HorizonMap::Post post = whole.find(grid->post(i, j));
         for (int a = 0; a < whole.azimuthCount(); ++a)
-          ASSERT_EQ(copying.elevation(post, a), whole.elevation(post, a)) << i << " " << j << " azimuth " << a;
+          ASSERT_EQ(copying.trueElevation(post, a), whole.trueElevation(post, a)) << i << " " << j << " azimuth " << a;
       }
   }
   // Two windows of different extents, neither a multiple of the stride from the grid's
@@ -117,7 +138,7 @@ TEST(HorizonWindow, WindowsAgreeOnThePostsTheyShare)
         const HorizonMap::Post here = map.find(window->post(i, j)), there = whole.find(grid->post(i0 + i, j0 + j));
         ASSERT_TRUE(here && there);
         for (int a = 0; a < map.azimuthCount(); ++a)
-          ASSERT_EQ(map.elevation(here, a), whole.elevation(there, a)) << i << " " << j << " azimuth " << a;
+          ASSERT_EQ(map.trueElevation(here, a), whole.trueElevation(there, a)) << i << " " << j << " azimuth " << a;
         // And what the proofs bound the sights with.
         ASSERT_EQ(map.slopeAt(i, j), whole.slopeAt(i0 + i, j0 + j)) << i << " " << j;
         ASSERT_EQ(map.highestAt(i, j), whole.highestAt(i0 + i, j0 + j)) << i << " " << j;

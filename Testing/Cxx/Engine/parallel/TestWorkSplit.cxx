@@ -233,7 +233,7 @@ TEST(WorkSplit, RanksBuildTheHorizonsAndSkiesOneProcessBuilds)
             differences += map.holds(i, j) != held;
             differences += static_cast<bool>(map.find(grid->post(i, j))) != held;
             for (int a = 0; held && a < map.azimuthCount(); ++a)
-              differences += map.elevation(post, a) != alone.elevation(post, a);
+              differences += map.trueElevation(post, a) != alone.trueElevation(post, a);
             differences += skyDifferences(skies, aloneSkies, *grid, i, j);
             differences += sunlight.at(i, j).seen != aloneSunlight.at(i, j).seen;
             differences += sunlight.at(i, j).hidden != aloneSunlight.at(i, j).hidden;
@@ -287,7 +287,7 @@ TEST(WorkSplit, RanksRefineACoarseMapAndFindItsSkiesAgainAsOneProcessDoes)
           {
             const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * nx + i };
             for (int a = 0; own.holds(i, j) && a < refined.azimuthCount(); ++a)
-              differences += refined.elevation(post, a) != alone.elevation(post, a);
+              differences += refined.trueElevation(post, a) != alone.trueElevation(post, a);
             flaggedHeld += own.holds(i, j) && flagged(i, j);
             differences += skyDifferences(skies, aloneSkies, *grid, i, j);
           }
@@ -489,8 +489,8 @@ TEST(WorkSplit, WindowsHandingHullsOnSweepTheHorizonsOneProcessSweeps)
             const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * n + i };
             for (int a = 0; a < map.azimuthCount(); ++a)
             {
-              differences += map.elevation(post, a) != alone.elevation(post, a);
-              differences += copying && copying->elevation(post, a) != alone.elevation(post, a);
+              differences += map.trueElevation(post, a) != alone.trueElevation(post, a);
+              differences += copying && copying->trueElevation(post, a) != alone.trueElevation(post, a);
             }
           }
         EXPECT_EQ(differences, 0) << "cut " << cut << ", part " << split.part() << ", " << static_cast<int>(density) << " azimuths";
