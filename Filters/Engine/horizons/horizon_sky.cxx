@@ -447,12 +447,17 @@ double HorizonSky::voidAt(const HorizonMap::Post& post, const Vec3& normal) cons
       const double toward = normal.x * piece.middle.cos + normal.y * piece.middle.sin;
       if (toward <= 0.0)
         continue; // the plane stays above the horizontal there
-      const double from = std::max(-std::atan(toward / normal.z), (1.0 - t) * falls[a] + t * falls[b]);
+      // From the higher of the plane's elevation and the map's, with its tangent
+      // (sin u cos u and sin^2 u from it).
+      const double planeTangent = -toward / normal.z, plane = -horizon_lines::atanOfPositive(toward / normal.z);
+      const double falling = (1.0 - t) * falls[a] + t * falls[b];
+      const double from = std::max(plane, falling);
       if (from >= 0.0)
         continue;
-      const double s = std::sin(from), c = std::cos(from);
+      const double tangent = from == plane ? planeTangent : std::tan(from);
+      const double cos2 = 1.0 / (1.0 + tangent * tangent);
       const double across = normal.x * (piece.end.sin - piece.start.sin) - normal.y * (piece.end.cos - piece.start.cos);
-      projected -= across * 0.5 * (from + s * c) + normal.z * (piece.phi1 - piece.phi0) * 0.5 * s * s;
+      projected -= across * 0.5 * (from + tangent * cos2) + normal.z * (piece.phi1 - piece.phi0) * 0.5 * tangent * tangent * cos2;
     }
   }
   return std::max(0.0, projected / pi);
