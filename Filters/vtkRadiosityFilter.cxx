@@ -63,6 +63,7 @@ vtkRadiosityFilter::vtkRadiosityFilter(int inputPorts, int farTerrainPort)
   , MaximumGatherRays(4096)
   , TargetError(0.008)
   , TargetErrorFloor(-1.0)
+  , RandomSeed(0)
   , DetailDistance(0.0)
   , FarTerrainStride(1)
   , MaximumIterations(30)
@@ -382,6 +383,7 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetError: " << this->TargetError << "\n";
   os << indent << "TargetErrorFloor: " << this->TargetErrorFloor << "\n";
   os << indent << "EffectiveTargetErrorFloor: " << this->GetEffectiveTargetErrorFloor() << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "DetailDistance: " << this->DetailDistance << "\n";
   os << indent << "FarTerrainStride: " << this->FarTerrainStride << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";

@@ -114,6 +114,18 @@ public:
 
   ///@{
   /**
+   * Set/Get the seed of the Monte-Carlo samples that the points' values draw (their
+   * final gathers, with EvaluateAtPoints on): 0, the default, or any other value for
+   * another draw of the same estimate. Each seed's values are reproducible, on any
+   * number of processes; rerunning with a few seeds shows the sampling noise in a
+   * scene's values (IrradianceError bounds it per point).
+   */
+  vtkSetClampMacro(RandomSeed, int, 0, VTK_INT_MAX);
+  vtkGetMacro(RandomSeed, int);
+  ///@}
+
+  ///@{
+  /**
    * Set/Get the distance (m, horizontally) within which a gather ray's hit on the
    * scene's one terrain reads what its posts found (their skies by their horizons, the
    * suns they prove seen or hidden, the lattice's light from surfaces); a hit farther
@@ -409,6 +421,7 @@ protected:
   int MaximumGatherRays;
   double TargetError;
   double TargetErrorFloor;
+  int RandomSeed;
   double DetailDistance;
   int FarTerrainStride;
   int MaximumIterations;

@@ -174,6 +174,7 @@ terralux::HierarchicalRadiosity& vtkRadiosityFilter::PrepareSolver(std::unique_p
   options.gatherSamples = this->MaximumGatherRays;
   options.targetError = this->TargetError;
   options.targetErrorFloor = this->GetEffectiveTargetErrorFloor();
+  options.randomSeed = static_cast<std::uint64_t>(this->RandomSeed);
   options.gatherDetailDistance = this->DetailDistance;
   options.farTerrainStride = this->FarTerrainStride;
   options.skyFromHorizons = this->SkyFromHorizons != 0;

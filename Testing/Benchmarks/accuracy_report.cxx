@@ -405,6 +405,9 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     radiosity->SetTargetErrorFloor(std::atof(value));
   if (const char* value = std::getenv("TERRALUX_REPORT_GATHER_RAYS"))
     radiosity->SetMaximumGatherRays(std::atoi(value));
+  // TERRALUX_REPORT_SEED: another draw of the gather rays (RandomSeed).
+  if (const char* value = std::getenv("TERRALUX_REPORT_SEED"))
+    radiosity->SetRandomSeed(std::atoi(value));
   // TERRALUX_REPORT_DETAIL_DISTANCE: far gather hits take their leaves' light (m).
   if (const char* value = std::getenv("TERRALUX_REPORT_DETAIL_DISTANCE"))
     radiosity->SetDetailDistance(std::atof(value));

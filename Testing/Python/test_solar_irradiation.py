@@ -441,6 +441,7 @@ class Command(unittest.TestCase):
                           (OLINDA, "-o", "x.tif", "--day-of-year", "1", "--detail-distance", "nan"),
                           (OLINDA, "-o", "x.tif", "--day-of-year", "1", "--far-stride", "0"),
                           (OLINDA, "-o", "x.tif", "--day-of-year", "1", "--far-stride", "4"),
+                          (OLINDA, "-o", "x.tif", "--day-of-year", "1", "--seed", "-1"),
                           (OLINDA, "-o", "x.tif", "--day-of-year", "1", "--pieces"),  # not a .vrt
                           ("missing.tif", "-o", "x.tif", "--day-of-year", "1")):
             result = self.run_command(*arguments, "--quiet")

@@ -4,7 +4,7 @@ GeoTIFF on the DEM's own grid.
 
     python3 -m terralux.irradiation DEM.tif -o out.tif --start 2024-06-01 --end 2024-06-30
         [--step 30] [--linke 3.0] [--reflectance 0.2] [--weather FILE.epw] [--day-of-year N]
-        [--target-error E | --fast] [--target-floor W] [--kwh]
+        [--target-error E | --fast] [--target-floor W] [--seed N] [--kwh]
     mpirun -np N python3 -m terralux.irradiation DEM.tif -o out.tif ... --mpi
 
 The equivalent GRASS call for one day: r.sun elevation=dem aspect=aspect slope=slope
@@ -67,6 +67,9 @@ def parse_arguments(argv):
     parser.add_argument("--target-floor", type=float, default=None, metavar="W",
                         help="W/m^2: the error a post aims at where E of what it receives is less (default "
                              "250 E: 2 at the default E, 10 with --fast)")
+    parser.add_argument("--seed", type=int, default=0, metavar="N",
+                        help="another draw of the gather rays (default 0): the spread of a few seeds' maps shows "
+                             "the sampling noise, which IrradiationError bounds per post")
     parser.add_argument("--kwh", action="store_true", help="write kWh/m^2 instead of Wh/m^2")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--mpi", action="store_true",
@@ -216,6 +219,8 @@ def run(args):
         raise InputError("--target-error %g is not a fraction of what a post receives (1e-6..1)" % args.target_error)
     if args.target_floor is not None and not 0.0 <= args.target_floor < float("inf"):
         raise InputError("--target-floor %g is not an irradiance in W/m^2 (>= 0)" % args.target_floor)
+    if not 0 <= args.seed <= 2**31 - 1:
+        raise InputError("--seed %d is not a seed (0..2147483647)" % args.seed)
     if args.far_stride < 1:
         raise InputError("--far-stride %d is not a stride of posts (>= 1; 1: none)" % args.far_stride)
     if args.far_stride > 1 and not args.detail_distance > 0.0:
@@ -238,6 +243,7 @@ def run(args):
     irradiation.SetTargetError(args.target_error)
     if args.target_floor is not None:
         irradiation.SetTargetErrorFloor(args.target_floor)
+    irradiation.SetRandomSeed(args.seed)
     irradiation.SetPostNormalsToHorn()  # as r.slope.aspect and gdaldem
     if args.weather:
         if not os.path.isfile(args.weather):

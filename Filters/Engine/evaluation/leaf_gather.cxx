@@ -18,12 +18,14 @@ namespace
 constexpr int points = 4, morePoints = 16; // of each leaf; of a partly buried one
 }
 
-LeafGather::LeafGather(std::vector<PolygonElement*> leaves, const Visibility& rays, int raysPerLeaf, bool surfacesSend)
+LeafGather::LeafGather(std::vector<PolygonElement*> leaves, const Visibility& rays, int raysPerLeaf, bool surfacesSend,
+  std::uint64_t randomSeed)
   : Leaves(std::move(leaves))
   , Lifts(this->Leaves.size(), 3.0 * rays.offset())
   , Rays(rays)
   , RaysPerPoint(std::max(1, raysPerLeaf / points))
   , SurfacesSend(surfacesSend)
+  , RandomSeed(randomSeed)
 {
   // Points are lifted as points users read are (three ray offsets), above a rough
   // patch's crease; a non-planar quad's points (on its bilinear surface) also by how far
@@ -52,7 +54,7 @@ std::vector<LeafLight::Sample> LeafGather::at(
   budget.pilot = 0;
   budget.minimum = budget.maximum = this->RaysPerPoint;
   const PolygonElement& leaf = *this->Leaves[k];
-  SampleGenerator random((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull));
+  SampleGenerator random(reseeded((leaf.id() * 0xD1342543DE82EF95ull + 1) ^ (pass * 0x9E3779B97F4A7C15ull), this->RandomSeed));
   std::vector<LeafLight::Sample> seen;
   Bounce sum;
   int buried = 0;
@@ -60,7 +62,8 @@ std::vector<LeafLight::Sample> LeafGather::at(
     const SurfaceSample at = leaf.sample(p, n, random);
     const Vec3 from = at.position + this->Lifts[k] * at.normal;
     const GatheredLight received =
-      gather.irradianceAt(from, at.normal, budget, this->Rays.seedOf(from) ^ pass, 0.0, this->SurfacesSend);
+      gather.irradianceAt(
+        from, at.normal, budget, reseeded(this->Rays.seedOf(from), this->RandomSeed) ^ pass, 0.0, this->SurfacesSend);
     if (4 * received.backRays > received.count)
       ++buried;
     else

@@ -16,8 +16,10 @@ class LeafGather
 {
 public:
   /// `raysPerLeaf` spread over each leaf's points; `surfacesSend`: whether any surface
-  /// sends light (else the gathers take the sky alone).
-  LeafGather(std::vector<PolygonElement*> leaves, const Visibility& rays, int raysPerLeaf, bool surfacesSend);
+  /// sends light (else the gathers take the sky alone); `randomSeed`:
+  /// RadiosityOptions::randomSeed.
+  LeafGather(std::vector<PolygonElement*> leaves, const Visibility& rays, int raysPerLeaf, bool surfacesSend,
+    std::uint64_t randomSeed = 0);
 
   const std::vector<PolygonElement*>& leaves() const { return this->Leaves; }
 
@@ -40,6 +42,7 @@ private:
   const Visibility& Rays;
   int RaysPerPoint;
   bool SurfacesSend;
+  std::uint64_t RandomSeed;
 };
 
 /// How far the light from surfaces the hierarchy holds at its leaves is off, measured on

@@ -105,7 +105,8 @@ PointEvaluator::PointEvaluator(HierarchicalRadiosity& solved, const EvaluationPl
       const GatherInputs overHierarchy{ this->Rays, solved.polygonRoots(), solved.terrainRoots(),
         solved.hierarchySuns() };
       const LeafGather probe(solved.surfaceLeaves(), this->Rays,
-        std::min(Tuning::deficitProbeRays(this->Options.targetError), this->Options.gatherSamples), true);
+        std::min(Tuning::deficitProbeRays(this->Options.targetError), this->Options.gatherSamples), true,
+        this->Options.randomSeed);
       deficit = HierarchyDeficit::measure(probe, FinalGather(overHierarchy), Tuning::deficitProbeLeaves);
     }
   }
@@ -176,7 +177,7 @@ PointIrradiance PointEvaluator::irradianceAt(
   const int clearSamples = this->Options.visibilitySamples;
   // Seeded by the point itself: points sharing a leaf (posts inside a terrain patch)
   // must not share their jitter, or the noise would be the same pattern at each.
-  const std::uint64_t pointSeed = this->Rays.seedOf(point);
+  const std::uint64_t pointSeed = reseeded(this->Rays.seedOf(point), this->Options.randomSeed);
   std::uint64_t salt = pointSeed ^ (leaf.id() * 31);
   const std::uint64_t gatherSeed = this->gatherSeedOf(point);
   const Vec3 inside = this->movedInside(point, toward);
@@ -319,7 +320,7 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
 
 std::uint64_t PointEvaluator::gatherSeedOf(const Vec3& point) const
 {
-  return this->Rays.seedOf(point) * 0x9E3779B97F4A7C15ull;
+  return reseeded(this->Rays.seedOf(point), this->Options.randomSeed) * 0x9E3779B97F4A7C15ull;
 }
 
 Vec3 PointEvaluator::movedInside(const Vec3& point, const Vec3& toward) const
@@ -476,7 +477,7 @@ void PointEvaluator::gatherLeaves(bool terrains)
   if (leaves.empty())
     return;
   const LeafGather gathering(leaves, this->Rays, std::min(Tuning::leafGatherRays, this->Options.gatherSamples),
-    this->Solver.largestRadiosity() > 0.0);
+    this->Solver.largestRadiosity() > 0.0, this->Options.randomSeed);
   std::vector<std::uint64_t> ids(leaves.size());
   for (std::size_t k = 0; k < leaves.size(); ++k)
     ids[k] = leaves[k]->id();

@@ -142,13 +142,14 @@ const TerrainPatch* HierarchicalRadiosity::leafAtPost(const TerrainPatch& root, 
 
 bool operator==(const RadiosityOptions& a, const RadiosityOptions& b)
 {
-  static_assert(sizeof(RadiosityOptions) == 96, "an option was added: compare it here");
+  static_assert(sizeof(RadiosityOptions) == 104, "an option was added: compare it here");
   return a.errorTolerance == b.errorTolerance && a.minimumElementArea == b.minimumElementArea &&
     a.visibilitySamples == b.visibilitySamples && a.maximumIterations == b.maximumIterations &&
     a.convergenceTolerance == b.convergenceTolerance && a.maximumSkyLevel == b.maximumSkyLevel &&
     a.maximumElements == b.maximumElements && a.gatherSamples == b.gatherSamples &&
     a.targetError == b.targetError && a.targetErrorFloor == b.targetErrorFloor && a.skyFromHorizons == b.skyFromHorizons &&
-    a.gatherDetailDistance == b.gatherDetailDistance && a.farTerrainStride == b.farTerrainStride;
+    a.gatherDetailDistance == b.gatherDetailDistance && a.farTerrainStride == b.farTerrainStride &&
+    a.randomSeed == b.randomSeed;
 }
 
 bool HierarchicalRadiosity::serves(const RadiosityScene& scene, const RadiosityOptions& options) const

@@ -64,6 +64,12 @@ struct RadiosityOptions
   /// them alone), while every post of the scene's grid is still evaluated. 1: the full
   /// resolution everywhere.
   int farTerrainStride = 1;
+  /// Draws the points' Monte-Carlo samples (their gathers, the lattice's, and the
+  /// leaves') from another sequence: 0, the default, and every other value is a
+  /// different draw of the same estimate, so the spread between seeds shows a solve's
+  /// sampling noise (IrradianceError bounds it per point). Still a function of the
+  /// points alone: a split or a second run with the same seed gives the same values.
+  std::uint64_t randomSeed = 0;
   FarSight farSight() const { return FarSight{ this->farTerrainStride, this->gatherDetailDistance }; }
 };
 

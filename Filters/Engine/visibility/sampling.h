@@ -33,6 +33,19 @@ inline std::uint64_t linkSeed(std::uint64_t receiverId, std::uint64_t senderId)
   return receiverId * 0x9E3779B97F4A7C15ull ^ (senderId + 0x632BE59BD9B4E019ull);
 }
 
+/// A point's or leaf's seed drawn again under a user's random seed (the same where that
+/// is 0, the default).
+inline std::uint64_t reseeded(std::uint64_t seed, std::uint64_t randomSeed)
+{
+  if (randomSeed == 0)
+    return seed;
+  // SplitMix64's finaliser of the user's seed: neighbouring seeds draw unrelated rays.
+  std::uint64_t z = randomSeed * 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return seed ^ (z ^ (z >> 31));
+}
+
 /// The k-th of n stratified, jittered points of the unit square.
 inline void stratifiedPoint(int k, int n, SampleGenerator& random, double& s, double& t)
 {

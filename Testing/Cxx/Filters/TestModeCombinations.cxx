@@ -324,6 +324,37 @@ TEST_P(TargetErrorKnob, TheFloorFollowsTheKnobUnlessSet)
   ASSERT_EQ(coarse.size(), atTwo.size());
 }
 
+// RandomSeed draws the gather rays again: the same seed gives the same values (in one
+// piece or two), another seed other values, which differ by no more than their two
+// error estimates at 90 % of posts.
+TEST_P(TargetErrorKnob, ASeedDrawsTheRaysAgainWithinTheEstimate)
+{
+  auto terrain = Terrain();
+  auto first = Lit(terrain);
+  EXPECT_EQ(first->GetRandomSeed(), 0);
+  first->SetRandomSeed(-3);
+  EXPECT_EQ(first->GetRandomSeed(), 0);
+  std::vector<double> firstErrors, otherErrors, againErrors;
+  const std::vector<double> values = Solve(first, 1, &firstErrors);
+  auto other = Lit(terrain);
+  other->SetRandomSeed(7);
+  const std::vector<double> drawnAgain = Solve(other, 1, &otherErrors);
+  auto again = Lit(terrain);
+  again->SetRandomSeed(7);
+  const std::vector<double> inPieces = Solve(again, 2, &againErrors);
+  ASSERT_EQ(values.size(), drawnAgain.size());
+  int differing = 0, covered = 0;
+  const int count = static_cast<int>(values.size());
+  for (int k = 0; k < count; ++k)
+  {
+    EXPECT_EQ(inPieces[k], drawnAgain[k]) << k;
+    differing += values[k] != drawnAgain[k];
+    covered += std::abs(values[k] - drawnAgain[k]) <= std::hypot(firstErrors[k], otherErrors[k]);
+  }
+  EXPECT_GT(differing, count / 10);
+  EXPECT_GE(covered, 0.9 * count);
+}
+
 INSTANTIATE_TEST_SUITE_P(AtPoints, TargetErrorKnob, ::testing::Values(Modes{ true, true, true, false }),
   [](const ::testing::TestParamInfo<Modes>& info) { return nameOf(info.param); });
 } // namespace
