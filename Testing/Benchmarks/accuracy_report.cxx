@@ -534,13 +534,13 @@ int solve(const terralux_bench::AccuracyScene& input, const std::string& referen
     vtkDataArray* array = fieldData->GetArray(name);
     return array ? array->GetComponent(0, 0) : 0.0;
   };
-  std::printf("{\"scene\": \"%s\", \"method\": \"%s\", \"tolerance\": %g, \"target_error\": %g, \"seconds\": %.4f, \"peak_mib\": %.1f, "
+  std::printf("{\"scene\": \"%s\", \"method\": \"%s\", \"tolerance\": %g, \"target_error\": %g, \"random_seed\": %d, \"seconds\": %.4f, \"peak_mib\": %.1f, "
               "\"elements\": %.0f, \"links\": %.0f, \"rays\": %.0f, \"iterations\": %.0f, \"horizon_azimuths\": %.0f, \"floor_seconds\": %.5f, "
               "\"phase_seconds\": {\"visibility\": %.4f, \"horizons\": %.4f, \"refine\": %.4f, \"gather\": %.4f, "
               "\"push_pull\": %.4f, \"points\": %.4f}, \"phase_rays\": {\"refine\": %.0f, \"gather_push_pull\": %.0f, \"points\": %.0f}, "
               "\"shadow_disagreement\": %.6f, \"sun\": %s, \"sky\": %s, \"reflected\": %s, \"global\": %s, "
               "\"estimate\": %s, \"reflected_bands\": %s}\n",
-    input.name.c_str(), method.c_str(), tolerance, radiosity->GetTargetError(), wall, peakMiB(), field("Elements"), field("Links"), field("Rays"),
+    input.name.c_str(), method.c_str(), tolerance, radiosity->GetTargetError(), radiosity->GetRandomSeed(), wall, peakMiB(), field("Elements"), field("Links"), field("Rays"),
     field("Iterations"), field("HorizonAzimuths"), floorSeconds, field("SecondsVisibilityBuild"), field("SecondsHorizons"), field("SecondsRefine"),
     field("SecondsGather"), field("SecondsPushPull"), field("SecondsPoints"), field("RaysRefine"),
     field("RaysPushPull"), field("RaysPoints"), facing ? static_cast<double>(disagree) / facing : 0.0,

@@ -112,6 +112,19 @@ class PeersInTheReport(unittest.TestCase):
         table = [line for line in accuracy_report.band_table([run]) if line.startswith("| a |")]
         self.assertEqual(table, ["| a | 1.20 % = 0.006 W/m^2 (500) | -3.68 % = -0.110 W/m^2 (200) | - | - |"])
         self.assertEqual(accuracy_report.band_table([terralux_run("a", 0.008, 0.8, 0.004)]), [])
+        # Drawn again on other seeds: each band's bias over them all, mean and spread.
+        again = json.loads(json.dumps(run))
+        again["random_seed"] = 1
+        again["reflected"]["bias"] = -0.002
+        again["reflected_bands"][0]["error"]["bias"] = 0.008
+        again["reflected_bands"][1]["error"]["bias"] = -0.0168
+        self.assertTrue(accuracy_report.drawn_again(again))
+        self.assertFalse(accuracy_report.drawn_again(run))
+        table = [line for line in accuracy_report.band_table([run], [again]) if line.startswith("| a |")]
+        self.assertEqual(len(table), 2)
+        overall = 100.0 * (run["reflected"]["bias"] - 0.002) / 2
+        self.assertEqual(table[1], "| a | %.2f ± %.2f | 1.00 ± 0.28 | -2.68 ± 1.41 | - | - |" % (
+            overall, abs(100.0 * (run["reflected"]["bias"] + 0.002)) / 2 ** 0.5))
 
     def test_report_with_peers(self):
         runs = os.path.join(self.work, "runs.jsonl")
