@@ -282,8 +282,9 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   const PostLattice::Around& around, PointIrradiance& result) const
 {
   // A post inside the terrain does not read from a corner on its edge, which sees
-  // terrain on one side only (and counts the void beyond as terrain seen): posts beside
-  // a DEM's border read 10-17 % too little light from surfaces (docs/tuning.md).
+  // terrain on one side only: posts beside a DEM's border read 10-17 % too little light
+  // from surfaces (docs/tuning.md; reading there still costs the steep crop's faint
+  // posts a third more bias, the void taken off or not).
   PostSky::Value sky;
   if ((around.edgeCorner && this->HeightFieldGrid->surroundedByCells(i, j)) || !this->PostSkies ||
     !this->PostSkies->found(post, normal, sky))
