@@ -403,64 +403,64 @@ HorizonSky::RadianceTerms HorizonSky::columnSumAt(int iv, double u, const Elevat
 }
 
 void HorizonSky::mapHorizons(const HorizonMap::Post& post, const Vec3& normal, MapElevations& elevations,
-  std::array<bool, HorizonMap::maximumAzimuths>& rises) const
+  std::array<bool, HorizonMap::maximumAzimuths>& rises, MapElevations* falls) const
 {
   const std::vector<SinCos>& directions = this->MapTable.directions;
   const std::size_t cell = this->Map->cellOf(post);
   for (std::size_t a = 0; a < directions.size(); ++a)
   {
     const double lower = lowerBound(normal, directions[a]);
-    const double horizon = this->Map->elevationAt(cell, static_cast<int>(a));
+    const double trueHorizon = this->Map->trueElevationAt(cell, static_cast<int>(a));
+    const double horizon = std::max(0.0, trueHorizon);
     rises[a] = horizon > lower;
     elevations[a] = std::max(lower, horizon);
+    if (falls)
+      (*falls)[a] = std::min(0.0, trueHorizon);
   }
 }
 
 double HorizonSky::voidAt(const HorizonMap::Post& post, const Vec3& normal) const
 {
+  MapElevations elevations, falls;
+  std::array<bool, HorizonMap::maximumAzimuths> rises;
+  if (this->MapTable.directions.empty())
+    return 0.0;
+  this->mapHorizons(post, normal, elevations, rises, &falls);
+  return this->voidOf(falls, normal) / pi;
+}
+
+double HorizonSky::voidOf(const MapElevations& falls, const Vec3& normal) const
+{
   const MapAzimuths& table = this->MapTable;
   const int count = static_cast<int>(table.directions.size());
-  if (count == 0 || !(normal.z > 0.0))
+  if (!(normal.z > 0.0) || std::none_of(falls.begin(), falls.begin() + count, [](double f) { return f < 0.0; }))
     return 0.0;
-  const std::size_t cell = this->Map->cellOf(post);
-  MapElevations falls;
-  bool any = false;
-  for (int a = 0; a < count; ++a)
-  {
-    falls[a] = std::min(0.0, this->Map->trueElevationAt(cell, a));
-    any = any || falls[a] < 0.0;
-  }
-  if (!any)
-    return 0.0;
-  // Per piece, at its middle: from the higher of the plane's horizon and the map's up
-  // to the horizontal, the integral of (n . d) cos u du dphi (its terms as hidePiece's).
+  // Per sector, at its middle (a band below the horizontal is low: one piece, as the
+  // hidden sky takes a low sector): from the higher of the plane's horizon and the
+  // map's up to the horizontal, the integral of (n . d) cos u du dphi (its terms as
+  // hidePiece's).
   double projected = 0.0;
   for (int a = 0; a < count; ++a)
   {
     const int b = (a + 1) % count;
     if (falls[a] == 0.0 && falls[b] == 0.0)
       continue;
-    for (int j = 0; j < piecesPerSector; ++j)
-    {
-      const MapPiece& piece = table.pieces[a * piecesPerSector + j];
-      const double t = (j + 0.5) / piecesPerSector;
-      const double toward = normal.x * piece.middle.cos + normal.y * piece.middle.sin;
-      if (toward <= 0.0)
-        continue; // the plane stays above the horizontal there
-      // From the higher of the plane's elevation and the map's, with its tangent
-      // (sin u cos u and sin^2 u from it).
-      const double planeTangent = -toward / normal.z, plane = -horizon_lines::atanOfPositive(toward / normal.z);
-      const double falling = (1.0 - t) * falls[a] + t * falls[b];
-      const double from = std::max(plane, falling);
-      if (from >= 0.0)
-        continue;
-      const double tangent = from == plane ? planeTangent : std::tan(from);
-      const double cos2 = 1.0 / (1.0 + tangent * tangent);
-      const double across = normal.x * (piece.end.sin - piece.start.sin) - normal.y * (piece.end.cos - piece.start.cos);
-      projected -= across * 0.5 * (from + tangent * cos2) + normal.z * (piece.phi1 - piece.phi0) * 0.5 * tangent * tangent * cos2;
-    }
+    const MapPiece& sector = table.sectors[a];
+    const double toward = normal.x * sector.middle.cos + normal.y * sector.middle.sin;
+    if (toward <= 0.0)
+      continue; // the plane stays above the horizontal there
+    // From the higher of the plane's elevation and the map's, with its tangent (sin u
+    // cos u and sin^2 u from it).
+    const double planeTangent = -toward / normal.z, plane = -horizon_lines::atanOfPositive(toward / normal.z);
+    const double from = std::max(plane, 0.5 * (falls[a] + falls[b]));
+    if (from >= 0.0)
+      continue;
+    const double tangent = from == plane ? planeTangent : std::tan(from);
+    const double cos2 = 1.0 / (1.0 + tangent * tangent);
+    const double across = normal.x * (sector.end.sin - sector.start.sin) - normal.y * (sector.end.cos - sector.start.cos);
+    projected -= across * 0.5 * (from + tangent * cos2) + normal.z * (sector.phi1 - sector.phi0) * 0.5 * tangent * tangent * cos2;
   }
-  return std::max(0.0, projected / pi);
+  return std::max(0.0, projected);
 }
 
 HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal, bool betweenAzimuths) const
@@ -471,9 +471,10 @@ HiddenSky HorizonSky::hiddenAt(const HorizonMap::Post& post, const Vec3& normal,
   const MapAzimuths& table = this->MapTable;
   const int count = static_cast<int>(table.directions.size());
   const bool coarse = betweenAzimuths && count <= static_cast<int>(HorizonMap::Density::Coarse);
-  MapElevations elevations;
+  MapElevations elevations, falls;
   std::array<bool, HorizonMap::maximumAzimuths> rises;
-  this->mapHorizons(post, normal, elevations, rises);
+  this->mapHorizons(post, normal, elevations, rises, &falls);
+  result.voidSolidAngle = this->voidOf(falls, normal);
   // A coarse map's piece also takes the band between its linear horizon and the
   // cubic's (Catmull-Rom through the sector's ends and their neighbours) at its middle.
   auto hide = [&](const MapPiece& piece, int a, int b, double t) {

@@ -38,6 +38,8 @@ struct HiddenSky
   /// azimuths (W/m^2, and its projected solid angle, sr). Zero otherwise.
   Spectrum betweenAzimuths{};
   double betweenAzimuthsSolidAngle = 0.0;
+  /// From a map's horizons: the projected solid angle (sr) of the void, HorizonSky::voidAt.
+  double voidSolidAngle = 0.0;
 };
 
 class HorizonSky
@@ -71,7 +73,8 @@ public:
   /// the horizontal whose directions leave the terrain without meeting it: where the
   /// terrain ahead falls away (the map's horizon lies below the horizontal) or ends.
   /// Neither sky nor terrain, it sends nothing: the post sees 1 - its sky view factor
-  /// - this of terrain. The map's horizons interpolated over its pieces, as hiddenAt.
+  /// - this of terrain. The map's horizons interpolated over its sectors, as hiddenAt
+  /// takes low ones (hiddenAt at a post gives it too, as HiddenSky::voidSolidAngle / pi).
   double voidAt(const HorizonMap::Post& post, const Vec3& normal) const;
   const HorizonMap* map() const { return this->Map; }
 
@@ -101,9 +104,10 @@ public:
   using MapElevations = std::array<double, HorizonMap::maximumAzimuths>;
   /// A post's horizon at each of the map's azimuths as the hidden sky takes it: never
   /// below the lowest elevation whose sky can be hidden (the plane's own horizon or the
-  /// world's); `rises`: whether terrain stands above that bound there.
+  /// world's); `rises`: whether terrain stands above that bound there; `falls`, where
+  /// given: the horizon where below the horizontal, else 0 (HorizonMap::trueElevation).
   void mapHorizons(const HorizonMap::Post& post, const Vec3& normal, MapElevations& elevations,
-    std::array<bool, HorizonMap::maximumAzimuths>& rises) const;
+    std::array<bool, HorizonMap::maximumAzimuths>& rises, MapElevations* falls = nullptr) const;
 
 private:
   struct ElevationTerms
@@ -125,6 +129,8 @@ private:
   void hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1, double share,
     const Vec3& normal, HiddenSky& result) const;
   ElevationTerms termsAt(double u) const; // from the table Terms
+  /// voidAt's projected solid angle (sr), from the map's horizons below the horizontal.
+  double voidOf(const MapElevations& falls, const Vec3& normal) const;
   /// Entries of Terms; a multiple of every sky's cells per side (at most 2^10).
   static constexpr int fineTerms = 4096;
   static constexpr double termsPerRadian = fineTerms / (0.5 * pi);

@@ -95,7 +95,7 @@ PostSky::Value PostSky::at(const HorizonMap::Post& post, const Vec3& normal, con
   result.skyViewFactor = std::max(0.0, openOmega - hidden.projectedSolidAngle) / pi;
   result.openLargestBand = largestBand(open);
   result.openProjectedSolidAngle = openOmega;
-  result.voidViewFactor = horizons.voidAt(post, normal);
+  result.voidViewFactor = hidden.voidSolidAngle / pi;
   return result;
 }
 
