@@ -130,7 +130,9 @@ class PeersInTheReport(unittest.TestCase):
         runs = os.path.join(self.work, "runs.jsonl")
         with open(runs, "w") as f:
             f.write(json.dumps({"scene": "a", "reference_seconds": 1.0, "points": 100, "samples": 64}) + "\n")
-            for run in (terralux_run("a", 0.064, 0.2, 0.009), terralux_run("a", 0.008, 0.8, 0.004)):
+            # The defaults, and the same drawn again on another seed.
+            for run in (terralux_run("a", 0.064, 0.2, 0.009), terralux_run("a", 0.008, 0.8, 0.004),
+                        dict(terralux_run("a", 0.008, 0.9, 0.004), random_seed=1)):
                 f.write(json.dumps(run) + "\n")
         with open(os.path.join(self.work, "rsun.jsonl"), "w") as f:
             f.write(json.dumps(peer_run("a", "rsun", 0.3, 0.2)) + "\n")
@@ -147,6 +149,10 @@ class PeersInTheReport(unittest.TestCase):
         with open(os.path.join(self.work, "report.json")) as f:
             report = json.load(f)
         self.assertEqual({r["method"] for r in report["solves"]}, {"points"})
+        self.assertEqual(len(report["solves"]), 3)  # the seed's solve kept with the others'
+        # ... but not among the scene's rows and the summary's: those are seed 0's alone.
+        with open(os.path.join(self.work, "report.md")) as f:
+            self.assertEqual(f.read().count("| 0.900 |"), 0)
         with open(os.path.join(self.work, "report.md")) as f:
             text = f.read()
         self.assertIn("## Against GRASS r.sun", text)
