@@ -176,11 +176,11 @@ std::size_t HorizonMap::postsX() const
 std::uint16_t HorizonMap::codeOfTangent(double tangent)
 {
   if (!(tangent > -std::numeric_limits<double>::infinity()))
-    return horizontalCode - 32767;
+    return horizontalCode - codeSteps;
   const double elevation = tangent >= 0.0 ? atanOfPositive(tangent) : -atanOfPositive(-tangent);
   // Rounded to the nearest (a positive value: + 0.5, truncated).
-  const double code = horizontalCode + elevation / (0.5 * pi) * 32767.0 + 0.5;
-  return static_cast<std::uint16_t>(std::clamp(code, 1.0, 65535.0));
+  const double code = horizontalCode + elevation / (0.5 * pi) * codeSteps + 0.5;
+  return static_cast<std::uint16_t>(std::clamp(code, double{ horizontalCode - codeSteps }, double{ horizontalCode + codeSteps }));
 }
 
 bool HorizonMap::fits(const TerrainGrid& terrain, Density density)

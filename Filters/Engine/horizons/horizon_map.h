@@ -126,12 +126,14 @@ public:
   }
   double elevationAt(std::size_t cell, int a) const { return std::max(0.0, this->trueElevationAt(cell, a)); }
   double trueElevationAt(std::size_t cell, int a) const { return elevationOfCode(this->Elevations[a * this->HeldCount + cell]); }
-  /// Elevations as the map keeps them: -pi/2 to pi/2 in steps of pi/2 / 32767 (4.8e-5
-  /// rad), rounded to the nearest; the horizontal is horizontalCode.
+  /// Elevations as the map keeps them: -pi/2 to pi/2 in steps of pi/2 / codeSteps
+  /// (4.8e-5 rad), rounded to the nearest; the horizontal is horizontalCode, the nadir
+  /// horizontalCode - codeSteps.
   static constexpr std::uint16_t horizontalCode = 32768;
+  static constexpr int codeSteps = 32767;
   static double elevationOfCode(std::uint16_t code)
   {
-    return (static_cast<int>(code) - static_cast<int>(horizontalCode)) * (0.5 * pi / 32767.0);
+    return (static_cast<int>(code) - static_cast<int>(horizontalCode)) * (0.5 * pi / codeSteps);
   }
   /// The code of a horizon's tangent (-inf: nothing ahead, the nadir's).
   static std::uint16_t codeOfTangent(double tangent);

@@ -104,26 +104,27 @@ HorizonMap::HorizonMap(const HorizonMap& coarse, const std::vector<std::uint8_t>
     std::uint16_t* out = this->Elevations.data() + static_cast<std::size_t>(slot) * this->HeldCount;
     const std::uint16_t* lower = this->Elevations.data() + static_cast<std::size_t>(below) * this->HeldCount;
     const std::uint16_t* upper = this->Elevations.data() + static_cast<std::size_t>(above) * this->HeldCount;
+    auto between = [weight](std::uint16_t low, std::uint16_t high) {
+      return static_cast<std::uint16_t>(low + weight * (high - low) + 0.5);
+    };
     tbb::parallel_for(this->Held.j0, this->Held.j1 + 1, [&](int j) {
       for (int i = this->Held.i0; i <= this->Held.i1; ++i)
       {
         const std::size_t cell = static_cast<std::size_t>(j - this->Held.j0) * this->HeldX + (i - this->Held.i0);
-        // Above the horizontal, the horizons between as before; below it, what the
-        // terrain ahead falls away to, between too (a walk ends at the horizontal).
-        auto between = [&](std::uint16_t low, std::uint16_t high) {
-          return static_cast<std::uint16_t>(low + weight * (high - low) + 0.5);
-        };
-        const std::uint16_t rising =
-          between(std::max(lower[cell], horizontalCode), std::max(upper[cell], horizontalCode));
+        // Above the horizontal, the walk's horizon or the horizons between as before;
+        // below it, what the terrain ahead falls away to, between too (a walk ends at
+        // the horizontal).
         const std::uint16_t falling =
           between(std::min(lower[cell], horizontalCode), std::min(upper[cell], horizontalCode));
-        if (!exact[cell])
-          out[cell] = rising > horizontalCode ? rising : falling;
-        else
+        if (exact[cell])
         {
           const double walked = this->walkedTangent(i, j, line);
           out[cell] = walked > 0.0 ? codeOfTangent(walked) : falling;
+          continue;
         }
+        const std::uint16_t rising =
+          between(std::max(lower[cell], horizontalCode), std::max(upper[cell], horizontalCode));
+        out[cell] = rising > horizontalCode ? rising : falling;
       }
     });
   }

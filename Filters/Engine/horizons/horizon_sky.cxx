@@ -421,10 +421,10 @@ void HorizonSky::mapHorizons(const HorizonMap::Post& post, const Vec3& normal, M
 
 double HorizonSky::voidAt(const HorizonMap::Post& post, const Vec3& normal) const
 {
-  MapElevations elevations, falls;
-  std::array<bool, HorizonMap::maximumAzimuths> rises;
   if (this->MapTable.directions.empty())
     return 0.0;
+  MapElevations elevations, falls;
+  std::array<bool, HorizonMap::maximumAzimuths> rises;
   this->mapHorizons(post, normal, elevations, rises, &falls);
   return this->voidOf(falls, normal) / pi;
 }
