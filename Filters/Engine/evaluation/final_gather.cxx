@@ -270,6 +270,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   if (horizons && post && this->Horizons->map())
     belowHorizon.emplace(*this->Horizons, post, normal);
   Spectrum surfaces{};
+  PerSector<Spectrum> bySector{};
+  PerSector<double> seenBySector{};
   // Each ray's estimate of what surfaces send (largest band); its spread sets how many
   // rays are needed. A pilot of budget.pilot rays of their own sets how many rays the
   // point needs; the estimate then comes from that many fresh stratified rays. Rays that
@@ -286,6 +288,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     sum = sumOfSquares = interreflected = reflectanceSeen = 0.0;
     backRays = 0;
     surfaces = Spectrum{};
+    bySector = PerSector<Spectrum>{};
+    seenBySector = PerSector<double>{};
     // One ray's estimate of what surfaces send (largest band).
     auto gather = [&](int k, double s, double t) -> double {
       TerrainDirections::Sample below;
@@ -299,6 +303,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       const PolygonElement* leaf = this->Rays.firstHit(point, normal, d, hit) ? this->leafAt(hit) : nullptr;
       if (!leaf)
         return 0.0;
+      const int sector = sectorOf(d.x, d.y);
+      seenBySector[sector] += weight;
       // The back of a one-sided surface sends nothing.
       const Vec3 front = frontAt(hit, *leaf);
       if (!(glm::dot(front, d) < 0.0))
@@ -310,7 +316,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       double bounced = 0.0;
       const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample, point, &bounced);
       for (int band = 0; band < maxBands; ++band)
-        surfaces[band] += weight * b[band];
+        surfaces[band] += weight * b[band], bySector[sector][band] += weight * b[band];
       interreflected += weight * bounced;
       reflectanceSeen += weight * largestBand(leaf->reflectance());
       return weight * largestBand(b);
@@ -340,7 +346,13 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   // E = pi x the mean radiance over cosine-weighted directions: the mean radiosity.
   const double perRay = count > 0 ? 1.0 / count : 0.0;
   for (int band = 0; band < maxBands; ++band)
+  {
     result.surfaces[band] = surfaces[band] * perRay;
+    for (int q = 0; q < viewSectors; ++q)
+      result.surfacesBySector[q][band] = bySector[q][band] * perRay;
+  }
+  for (int q = 0; q < viewSectors; ++q)
+    result.surfacesSeenBySector[q] = seenBySector[q] * perRay;
   if (this->Sky)
     result.skyViewFactor = openOmega / pi;
   result.rays += count;

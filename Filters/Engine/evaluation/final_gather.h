@@ -8,6 +8,7 @@
 
 #include "horizons/horizon_map.h"
 #include "hierarchy/radiosity_types.h"
+#include "terrain/view_sectors.h"
 
 #include <memory>
 
@@ -30,6 +31,11 @@ class Visibility;
 struct GatheredLight
 {
   Spectrum surfaces{};
+  /// `surfaces` split by the sector of the view each ray went toward (they sum to it),
+  /// and the view factor of the surfaces the rays met there (fronts and backs): their
+  /// ratio is the mean radiosity of what the point sees in that sector.
+  PerSector<Spectrum> surfacesBySector{};
+  PerSector<double> surfacesSeenBySector{};
   Spectrum sky{};
   double skyViewFactor = 0.0;
   int rays = 0;

@@ -169,6 +169,12 @@ PointIrradiance PointEvaluator::irradianceAt(
 PointIrradiance PointEvaluator::irradianceAt(
   const PolygonElement& leaf, const Vec3& point, const Vec3& normal, const Vec3& toward) const
 {
+  return this->evaluate(leaf, point, normal, toward, nullptr);
+}
+
+PointIrradiance PointEvaluator::evaluate(const PolygonElement& leaf, const Vec3& point, const Vec3& normal,
+  const Vec3& toward, GatheredLight* gathered) const
+{
   PointIrradiance result;
   auto& irradiance = result.irradiance;
   // Visibility from a point is noisier than over an element: more samples where the
@@ -181,10 +187,10 @@ PointIrradiance PointEvaluator::irradianceAt(
   std::uint64_t salt = pointSeed ^ (leaf.id() * 31);
   const std::uint64_t gatherSeed = this->gatherSeedOf(point);
   const Vec3 inside = this->movedInside(point, toward);
-  const bool gathered = this->gathersAtPoints();
+  const bool gathers = this->gathersAtPoints();
   double visibilityVariance = 0.0; // of the links' sampled visibility, without a gather
   // Without a gather, every link that reaches the leaf, re-evaluated at the point.
-  for (const HElement* element = gathered ? nullptr : &leaf; element; element = element->Parent)
+  for (const HElement* element = gathers ? nullptr : &leaf; element; element = element->Parent)
   {
     for (const Link& link : element->Incoming)
     {
@@ -216,7 +222,7 @@ PointIrradiance PointEvaluator::irradianceAt(
   result.irradianceError = errorCoverage * std::sqrt(visibilityVariance);
   // Sky and light from surfaces by a final gather from the point (inside its leaf, as
   // form factors), over the leaves' solved radiosity.
-  if (gathered)
+  if (gathers)
   {
     GatherBudget budget;
     budget.maximum = this->Options.gatherSamples;
@@ -261,6 +267,8 @@ PointIrradiance PointEvaluator::irradianceAt(
     const GatheredLight light = this->Gather->irradianceAt(lifted, normal, budget, gatherSeed,
       largestBand(sun), this->Solver.largestRadiosity() > 0.0, post);
     irradiance[ReflectedLight] = light.surfaces;
+    if (gathered)
+      *gathered = light;
     result.gatherVariance = light.variance;
     // The rays' noise and the sky's error, independent of each other (in quadrature),
     // and the error of the light from surfaces their hits read, which the hierarchy's
@@ -292,7 +300,8 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // The sky is its horizons'. The light from surfaces comes from the terrain the post
   // sees, 1 - its sky view factor less the void (directions that leave the terrain
   // below the horizontal; docs/tuning.md): that times what the lattice's posts around
-  // found per terrain seen.
+  // found per terrain seen, in each sector of the view by the post's share of terrain
+  // there (a ridge's post sees one side of it, its corners every side).
   // Read between them it errs by at most their spread, plus the bias of reading light
   // from surfaces between posts (Tuning::latticeReadBias); the post reads it where that
   // meets its target, else gathers. The error of what the lattice's posts read from the
@@ -301,12 +310,24 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // itself (a window's own hierarchy), and pieces read where one process does.
   const double terrainSeen = sky.terrainSeen();
   const double received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
-  const double spread = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen);
   const double largestReflected = terrainSeen * std::max(0.0, around.largestPerTerrainSeen);
-  Spectrum perTerrainSeen;
-  if (spread + Tuning::latticeReadBias * largestReflected > this->Options.errorTarget(received + largestReflected) ||
-    !this->Lattice->perTerrainSeenAt(i, j, perTerrainSeen))
+  const double limit = this->Options.errorTarget(received + largestReflected) - Tuning::latticeReadBias * largestReflected;
+  double spread = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen);
+  if (spread > limit)
     return false;
+  // It errs by the corners' spread in the whole or in its sectors; and where the reads
+  // by sector and of the whole disagree, the post's view is not its corners': either
+  // may be off by their difference. A post that sees no terrain needs no shares.
+  PostLattice::SectorRead read;
+  PerSector<double> even;
+  even.fill(1.0 / viewSectors);
+  if (!this->Lattice->readBySector(i, j, terrainSeen > 0.0 ? this->terrainSharesAt(post, normal) : even, read))
+    return false;
+  spread = std::max(spread, terrainSeen * read.spread) +
+    terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole));
+  if (spread > limit)
+    return false;
+  const Spectrum& perTerrainSeen = read.perTerrainSeen;
   for (int band = 0; band < maxBands; ++band)
     result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * perTerrainSeen[band]);
   result.irradiance[SkyLight] = sky.irradiance;
@@ -317,6 +338,17 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   result.irradianceError = spread + readRelativeError * largestBand(result.irradiance[ReflectedLight]) +
     this->skyError(normal, sky.irradiance, post);
   return true;
+}
+
+PerSector<double> PointEvaluator::terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal) const
+{
+  PerSector<double> shares = this->Horizons ? this->Horizons->terrainBySector(post, normal) : PerSector<double>{};
+  double sum = 0.0;
+  for (const double share : shares)
+    sum += share;
+  for (double& share : shares)
+    share = sum > 0.0 ? share / sum : 1.0 / viewSectors;
+  return shares;
 }
 
 std::uint64_t PointEvaluator::gatherSeedOf(const Vec3& point) const
@@ -447,14 +479,26 @@ void PointEvaluator::gatherLatticePosts(
       if (!leaf)
         continue;
       const Vec3 normal = grid.normalAt(i, j, hornNormals);
-      const PointIrradiance result = this->irradianceAt(*leaf, grid.post(i, j), normal);
+      GatheredLight light;
+      const PointIrradiance result = this->evaluate(*leaf, grid.post(i, j), normal, leaf->centre(), &light);
       PostSky::Value sky;
-      if (!this->PostSkies || !this->PostSkies->found({ true, static_cast<std::size_t>(j) * grid.postsX() + i }, normal, sky))
+      const HorizonMap::Post post{ true, static_cast<std::size_t>(j) * grid.postsX() + i };
+      if (!this->PostSkies || !this->PostSkies->found(post, normal, sky))
         continue;
       PostLattice::Gathered gathered;
       gathered.reflected = result.irradiance[ReflectedLight];
+      gathered.reflectedBySector = light.surfacesBySector;
       gathered.variance = result.gatherVariance;
       gathered.terrainSeen = sky.terrainSeen();
+      // Its terrain by sector: the surfaces its rays met there, scaled to the terrain
+      // its horizons show in all. From the map's shares instead, a sector whose
+      // horizons show next to no terrain where its rays met some (the thin band of
+      // flat ground) would divide their light by next to nothing.
+      double met = 0.0;
+      for (const double seen : light.surfacesSeenBySector)
+        met += seen;
+      for (int q = 0; q < viewSectors; ++q)
+        gathered.terrainBySector[q] = met > 0.0 ? gathered.terrainSeen * light.surfacesSeenBySector[q] / met : 0.0;
       gathered.received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
       gathered.edge = !grid.surroundedByCells(i, j);
       lattice.set(i, j, gathered);

@@ -17,6 +17,7 @@ namespace terralux
 {
 class FinalGather;
 class HorizonSky;
+struct GatheredLight;
 class LeafLight;
 class OpenSky;
 class PolygonElement;
@@ -115,6 +116,10 @@ private:
   /// A lattice of the terrain's posts gathered first (PostLattice), so that the others
   /// read from it or take their ray count from its spread.
   void gatherPostLattice(const TerrainPatch& root, bool hornNormals);
+  /// irradianceAt's; with `gathered`, also what its final gather found (a lattice
+  /// post's light from surfaces by sector; untouched where it takes none).
+  PointIrradiance evaluate(const PolygonElement& leaf, const Vec3& point, const Vec3& normal, const Vec3& toward,
+    GatheredLight* gathered) const;
   /// The gather over what the phases so far have found (each phase's gathers read the
   /// earlier phases' results).
   std::unique_ptr<FinalGather> makeGather() const;
@@ -158,6 +163,9 @@ private:
   /// The lattice's posts of one pass this process gathers (its share where the work is
   /// split).
   void gatherLatticePosts(const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const;
+  /// The shares of the terrain a post sees in each sector of its view (summing to 1;
+  /// even where its horizons show none): what its read weighs the lattice's by.
+  PerSector<double> terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal) const;
   /// Post (i, j), between gathered lattice posts that agree on the radiosity of the
   /// terrain they see, takes its light from surfaces from them and its sky from its
   /// horizons, without a gather: true, with `result` (its sun already in it) filled.

@@ -124,23 +124,40 @@ PostLattice::Cell PostLattice::cellAt(double u, double v) const
   }
 }
 
-template <class Value, class NodeValue>
-bool PostLattice::interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const
+int PostLattice::cornersAt(double u, double v, std::array<WeightedCorner, 4>& corners, double& total) const
 {
-  // Bilinear between the corners of the cell's own lattice (every post, or every second).
+  // The corners of the cell's own lattice (every post, or every second) gathered.
   const Cell cell = this->cellAt(u, v);
   const double size = static_cast<double>(this->Step * cell.side);
   const int nodesX = cell.side == 1 ? this->Nx : (this->Nx - 1) / 2 + 1;
   const int nodesY = cell.side == 1 ? this->Ny : (this->Ny - 1) / 2 + 1;
-  return interpolateNodes(u / size, v / size, nodesX, nodesY,
-    [&](int a, int b, Value& value) {
-      const std::size_t k = this->index(a * cell.side, b * cell.side);
-      if (this->Variance[k] < 0.0)
-        return false;
-      value = nodeValue(k);
-      return true;
-    },
-    result);
+  std::array<NodeWeight, 4> nodes;
+  const int count = nodeWeights(u / size, v / size, nodesX, nodesY,
+    [&](int a, int b) { return this->Variance[this->index(a * cell.side, b * cell.side)] >= 0.0; }, nodes, total);
+  for (int n = 0; n < count; ++n)
+    corners[n] = { this->index(nodes[n].i * cell.side, nodes[n].j * cell.side), nodes[n].weight };
+  return count;
+}
+
+template <class Value, class NodeValue>
+bool PostLattice::interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const
+{
+  // Bilinear between the gathered corners.
+  std::array<WeightedCorner, 4> corners;
+  double total = 0.0;
+  const int count = this->cornersAt(u, v, corners, total);
+  if (count == 0)
+    return false;
+  result = Value{};
+  for (int n = 0; n < count; ++n)
+  {
+    const Value value = nodeValue(corners[n].k);
+    for (std::size_t c = 0; c < result.size(); ++c)
+      result[c] += corners[n].weight * value[c];
+  }
+  for (double& c : result)
+    c /= total;
+  return true;
 }
 
 void PostLattice::set(int i, int j, const Gathered& gathered)
@@ -151,6 +168,12 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   for (int band = 0; band < maxBands; ++band)
     found[band] = gathered.reflected[band];
   found[terrainSeenSlot] = std::max(0.0, gathered.terrainSeen);
+  for (int q = 0; q < viewSectors; ++q)
+  {
+    for (int band = 0; band < maxBands; ++band)
+      found[sectorStart(q) + band] = gathered.reflectedBySector[q][band];
+    found[sectorStart(q) + terrainSeenSlot] = std::max(0.0, gathered.terrainBySector[q]);
+  }
   this->Received[k] = gathered.received;
   this->Edge[k] = gathered.edge ? 1 : 0;
 }
@@ -222,6 +245,51 @@ bool PostLattice::perTerrainSeenAt(double u, double v, Spectrum& reflected) cons
   const double perTerrainSeen = 1.0 / found[terrainSeenSlot];
   for (int band = 0; band < maxBands; ++band)
     reflected[band] = found[band] * perTerrainSeen;
+  return true;
+}
+
+bool PostLattice::readBySector(double u, double v, const PerSector<double>& shares, SectorRead& read) const
+{
+  // Only the sectors the post sees terrain in, from the corners' values in place (a
+  // post's read reads no more than it needs: every post of a DEM takes one).
+  std::array<WeightedCorner, 4> corners;
+  double total = 0.0;
+  const int count = this->cornersAt(u, v, corners, total);
+  auto sum = [&](std::size_t slot) {
+    double value = 0.0;
+    for (int n = 0; n < count; ++n)
+      value += corners[n].weight * this->Found[corners[n].k][slot];
+    return value / total;
+  };
+  const double terrainSeen = count > 0 ? sum(terrainSeenSlot) : 0.0;
+  if (!(terrainSeen > minimumTerrainSeen))
+    return false;
+  read = SectorRead{};
+  for (int band = 0; band < maxBands; ++band)
+    read.whole[band] = sum(band) / terrainSeen;
+  for (int q = 0; q < viewSectors; ++q)
+  {
+    if (!(shares[q] > 0.0))
+      continue;
+    const std::size_t start = sectorStart(q);
+    const double seen = sum(start + terrainSeenSlot);
+    for (int band = 0; band < maxBands; ++band)
+      read.perTerrainSeen[band] += shares[q] * (seen > minimumTerrainSeen ? sum(start + band) / seen : read.whole[band]);
+    // The spread between the corners that met terrain there.
+    double largest = -std::numeric_limits<double>::infinity(), least = std::numeric_limits<double>::infinity();
+    for (int n = 0; n < count; ++n)
+    {
+      const Beyond& found = this->Found[corners[n].k];
+      if (!(found[start + terrainSeenSlot] > minimumTerrainSeen))
+        continue;
+      const double perTerrainSeen =
+        *std::max_element(&found[start], &found[start] + maxBands) / found[start + terrainSeenSlot];
+      largest = std::max(largest, perTerrainSeen);
+      least = std::min(least, perTerrainSeen);
+    }
+    if (largest >= least)
+      read.spread += shares[q] * (largest - least);
+  }
   return true;
 }
 } // namespace terralux

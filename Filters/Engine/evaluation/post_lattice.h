@@ -5,7 +5,8 @@
 //   light it receives from other surfaces is, from its leaf, the hierarchy's, which
 //   misses the many small exchanges inside rough terrain (issue: about half of them on
 //   a steep fractal DEM). Read between the lattice's gathered posts instead, a hit's
-//   second bounce is as exact as their first.
+//   second bounce is as exact as their first. A post that reads its own light from
+//   surfaces reads it by the sectors of its view it sees terrain in (view_sectors.h).
 // - Rays: a post's gather takes as many rays as a pilot of its own says are needed. The
 //   lattice's posts tell their neighbours the spread of one ray's estimate instead (the
 //   largest at a corner of the lattice cell: neighbours see much the same terrain),
@@ -24,6 +25,7 @@
 #include "parallel/held_posts.h"
 #include "hierarchy/radiosity_types.h"
 #include "parallel/work_split.h"
+#include "terrain/view_sectors.h"
 
 #include <algorithm>
 #include <array>
@@ -60,6 +62,12 @@ public:
     Spectrum reflected{};          ///< light from surfaces
     double variance = 0.0;         ///< of one ray's estimate
     double terrainSeen = 0.0;      ///< PostSky::Value::terrainSeen()
+    /// The light from surfaces by the sector of the view it comes from
+    /// (GatheredLight::surfacesBySector), and terrainSeen split as its rays met
+    /// surfaces there (GatheredLight::surfacesSeenBySector): their ratio is the mean
+    /// radiosity its rays met in that sector, bounded whatever its horizons show there.
+    PerSector<Spectrum> reflectedBySector{};
+    PerSector<double> terrainBySector{};
     double received = 0.0;         ///< from the sun and its horizons' sky (largest bands)
     bool edge = false;             ///< on the terrain's edge (see Around::edgeCorner)
   };
@@ -100,6 +108,19 @@ public:
   /// about terrainSeen times this. False where none around holds a value or sees
   /// terrain.
   bool perTerrainSeenAt(double u, double v, Spectrum& reflected) const;
+  /// What a post that sees `shares` of its terrain in each sector of its view (summing
+  /// to 1; HorizonSky::terrainBySector) reads: each sector's light per terrain seen
+  /// (the corners' sums of light over their sums of terrain met there; a sector where
+  /// none met terrain takes the whole's) weighed by its share; the whole's, as
+  /// perTerrainSeenAt; and what the first may err by, as Around's spread for the whole:
+  /// in each sector the spread of the corners' light per terrain seen there (largest
+  /// band), weighed by its share. False where perTerrainSeenAt is.
+  struct SectorRead
+  {
+    Spectrum perTerrainSeen{}, whole{};
+    double spread = 0.0;
+  };
+  bool readBySector(double u, double v, const PerSector<double>& shares, SectorRead& read) const;
 
 private:
   /// Where lattice post (li, lj) is in the held values; throws unless held.
@@ -129,6 +150,14 @@ private:
   void forEachCorner(const Cell& cell, const Corner& corner) const;
   /// What the gathered corners of `cell` found (see around).
   Around aroundCell(const Cell& cell) const;
+  /// The gathered corners of the cell that grid parameters (u, v) read from, with
+  /// their bilinear weights (`total`: their sum); how many (0: none).
+  struct WeightedCorner
+  {
+    std::size_t k;
+    double weight;
+  };
+  int cornersAt(double u, double v, std::array<WeightedCorner, 4>& corners, double& total) const;
   template <class Value, class NodeValue>
   bool interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const;
   double terrainSeen(std::size_t k) const { return this->Found[k][terrainSeenSlot]; }
@@ -136,9 +165,11 @@ private:
   bool seesTerrain(std::size_t k) const;
   double largestPerTerrainSeen(std::size_t k) const;
   // Per lattice post: the light from surfaces it found (maxBands), then the terrain it
-  // sees.
-  using Beyond = std::array<double, maxBands + 1>;
+  // sees; then the same for each sector of the view.
+  static constexpr std::size_t part = maxBands + 1;
+  using Beyond = std::array<double, part * (1 + viewSectors)>;
   static constexpr std::size_t terrainSeenSlot = maxBands;
+  static constexpr std::size_t sectorStart(int q) { return part * (1 + q); }
   static constexpr double minimumTerrainSeen = 1e-6;
 
   int Step, Nx, Ny; // lattice posts each way

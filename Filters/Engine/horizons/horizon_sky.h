@@ -17,6 +17,7 @@
 #include "base/angles.h"
 #include "horizons/horizon_map.h"
 #include "hierarchy/radiosity_types.h"
+#include "terrain/view_sectors.h"
 
 #include <array>
 #include <cstdint>
@@ -76,6 +77,12 @@ public:
   /// - this of terrain. The map's horizons interpolated over its sectors, as hiddenAt
   /// takes low ones (hiddenAt at a post gives it too, as HiddenSky::voidSolidAngle / pi).
   double voidAt(const HorizonMap::Post& post, const Vec3& normal) const;
+  /// The projected solid angle (sr) of the terrain a post sees in each sector of its
+  /// view (view_sectors.h): between its plane and the map's true horizon (below the
+  /// horizontal too), a piece per sector, with its plane at its middle and its horizon
+  /// averaged over its azimuths. Which way a post sees its terrain, for the lattice's
+  /// reads (PostLattice::perTerrainSeenAt).
+  PerSector<double> terrainBySector(const HorizonMap::Post& post, const Vec3& normal) const;
   const HorizonMap* map() const { return this->Map; }
 
   struct SinCos
@@ -129,6 +136,9 @@ private:
   void hideBand(double phi0, double phi1, const SinCos& start, const SinCos& end, double u0, double u1, double share,
     const Vec3& normal, HiddenSky& result) const;
   ElevationTerms termsAt(double u) const; // from the table Terms
+  /// The terms at any u in [-pi/2, pi/2] (along is odd, up even), by series near the
+  /// horizontal.
+  ElevationTerms lowTerms(double u) const;
   /// voidAt's projected solid angle (sr), from the map's horizons below the horizontal.
   double voidOf(const MapElevations& falls, const Vec3& normal) const;
   /// Entries of Terms; a multiple of every sky's cells per side (at most 2^10).
@@ -175,6 +185,14 @@ private:
     std::vector<SinCos> directions;
     std::vector<MapPiece> pieces; // piecesPerSector after each azimuth
     std::vector<MapPiece> sectors; // each azimuth to the next, whole
+    /// Each azimuth's wedge, half-way to its neighbours: its halves' widths (radians)
+    /// and the sectors of the view they lie in (terrainBySector).
+    struct Wedge
+    {
+      double before, after;
+      int sectorBefore, sectorAfter;
+    };
+    std::vector<Wedge> wedges;
   };
   MapAzimuths MapTable; // of the map's azimuths, where there is a map
 };

@@ -207,3 +207,63 @@ TEST(PostLattice, TellsWhetherACornerLiesOnTheTerrainsEdge)
   inside.refine(0.01);
   EXPECT_FALSE(inside.around(3, 3).edgeCorner);
 }
+
+// A post reads each sector's light per terrain seen, weighed by the share of its own
+// terrain seen there: a post on a ridge that sees only the dim side reads the dim
+// side's light, not the mean of the lattice posts that see both sides.
+TEST(PostLattice, ReadsEachSectorByTheShareOfTerrainThePostSeesThere)
+{
+  PostLattice lattice(9, 9, 4);
+  const int bright = sectorOf(1.0, 0.1), dim = sectorOf(-1.0, 0.1), unseen = sectorOf(0.1, -1.0);
+  ASSERT_NE(bright, dim);
+  ASSERT_NE(unseen, bright);
+  ASSERT_NE(unseen, dim);
+  for (int j : { 0, 4, 8 })
+    for (int i : { 0, 4, 8 })
+    {
+      // Every corner: 10 W/m^2 from 0.1 of terrain on the bright side, 1 W/m^2 from
+      // 0.1 on the dim side.
+      PostLattice::Gathered g;
+      g.variance = 1.0;
+      g.terrainSeen = 0.2;
+      g.received = 100.0;
+      g.reflectedBySector[bright] = uniformSpectrum(10.0);
+      g.reflectedBySector[dim] = uniformSpectrum(1.0);
+      g.reflected = uniformSpectrum(11.0);
+      g.terrainBySector[bright] = g.terrainBySector[dim] = 0.1;
+      lattice.set(i, j, g);
+    }
+  Spectrum whole;
+  ASSERT_TRUE(lattice.perTerrainSeenAt(2.0, 3.0, whole));
+  EXPECT_DOUBLE_EQ(whole[0], 55.0);
+  PostLattice::SectorRead read;
+  PerSector<double> shares{};
+  shares[dim] = 1.0;
+  ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
+  EXPECT_NEAR(read.perTerrainSeen[0], 10.0, 1e-12);
+  EXPECT_EQ(read.whole, whole);
+  EXPECT_EQ(read.spread, 0.0); // every corner found the same
+  shares[dim] = 0.25, shares[bright] = 0.75;
+  ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
+  EXPECT_NEAR(read.perTerrainSeen[0], 0.75 * 100.0 + 0.25 * 10.0, 1e-12);
+  // A sector where no lattice post met terrain takes the whole's light per terrain seen.
+  shares = PerSector<double>{};
+  shares[unseen] = 0.5, shares[bright] = 0.5;
+  ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
+  EXPECT_NEAR(read.perTerrainSeen[0], 0.5 * 55.0 + 0.5 * 100.0, 1e-12);
+  // The spread is each sector's between the corners, by the post's shares: one corner
+  // finding twice the dim side's light per terrain seen spreads it by 10.
+  PostLattice::Gathered brighter;
+  brighter.variance = 1.0;
+  brighter.terrainSeen = 0.2;
+  brighter.received = 100.0;
+  brighter.reflectedBySector[bright] = uniformSpectrum(10.0);
+  brighter.reflectedBySector[dim] = uniformSpectrum(2.0);
+  brighter.reflected = uniformSpectrum(12.0);
+  brighter.terrainBySector[bright] = brighter.terrainBySector[dim] = 0.1;
+  lattice.set(4, 4, brighter);
+  shares = PerSector<double>{};
+  shares[dim] = 0.5, shares[bright] = 0.5;
+  ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
+  EXPECT_NEAR(read.spread, 0.5 * 10.0, 1e-12);
+}

@@ -133,6 +133,61 @@ TEST(HorizonSky, ATiltedPlaneSeesTheVoidBelowTheHorizontalAndNoTerrain)
   EXPECT_GT(horizons.voidAt(high, sideNormal), 1e-3);
 }
 
+TEST(HorizonSky, TellsTheSectorsAPostSeesTerrainIn)
+{
+  // A V valley along x whose sides rise at slope 0.5. At its bottom, a level post sees
+  // each side rise in every sector as the closed form says. On the side's own plane,
+  // 10 m up, a post sees next to nothing above its plane on its own side (+y; a
+  // sector's plane is taken at its middle), and across the valley the bottom below the
+  // horizontal and the far side. Either way the sectors sum to the terrain it sees.
+  const SkyHierarchy sky(UniformSky(), 100.0, 6);
+  const OpenSky open(sky);
+  const auto valley = makeGrid(81, 81, 10.0, [](double, double y) { return 0.5 * std::abs(y - 400.0); });
+  const RadiosityScene scene = sceneOf(*valley);
+  const Visibility rays(scene);
+  const HorizonMap map(*valley);
+  const HorizonSky horizons(rays, open, &map);
+  auto sum = [](const PerSector<double>& sectors) {
+    double total = 0.0;
+    for (const double s : sectors)
+      total += s;
+    return total;
+  };
+  EXPECT_EQ(sectorOf(1.0, 0.1), 0);
+  EXPECT_EQ(sectorOf(0.1, 1.0), 1);
+  EXPECT_EQ(sectorOf(-1.0, -0.1), 4);
+  EXPECT_EQ(sectorOf(1.0, -0.1), 7);
+  const HorizonMap::Post bottom = map.find(valley->post(40, 40));
+  ASSERT_TRUE(bottom);
+  const PerSector<double> level = horizons.terrainBySector(bottom, Vec3(0, 0, 1));
+  EXPECT_NEAR(sum(level) / pi, PostSky::at(bottom, Vec3(0, 0, 1), horizons, open).terrainSeen(), 0.01);
+  // Toward azimuth phi the far side stands at elevation h, tan h = 0.5 |sin phi|: the
+  // sector's terrain is the integral of sin^2 h / 2 over it.
+  for (int q = 0; q < viewSectors; ++q)
+  {
+    double expected = 0.0;
+    const int steps = 1000;
+    for (int k = 0; k < steps; ++k)
+    {
+      const double phi = (q + (k + 0.5) / steps) * 0.25 * pi, t2 = 0.25 * std::pow(std::sin(phi), 2);
+      expected += 0.5 * t2 / (1.0 + t2) * 0.25 * pi / steps;
+    }
+    EXPECT_NEAR(level[q], expected, 0.05 * expected) << q;
+  }
+  const Vec3 sideNormal = glm::normalize(Vec3(0.0, -0.5, 1.0));
+  const HorizonMap::Post side = map.find(valley->post(40, 41));
+  ASSERT_TRUE(side);
+  const PerSector<double> sloped = horizons.terrainBySector(side, sideNormal);
+  const double seen = PostSky::at(side, sideNormal, horizons, open).terrainSeen();
+  ASSERT_GT(seen, 0.05);
+  EXPECT_NEAR(sum(sloped) / pi, seen, 0.08 * seen); // a piece's terms averaged over 45 deg
+  for (const double x : { 1.0, -1.0 })
+  {
+    EXPECT_LT(sloped[sectorOf(x, 0.1)] + sloped[sectorOf(0.1 * x, 1.0)], 0.01 * sum(sloped)) << x;
+    EXPECT_GT(sloped[sectorOf(0.1 * x, -1.0)], 0.1 * sum(sloped)) << x;
+  }
+}
+
 TEST(HorizonSky, AgreesWithBruteForceRaysOnRoughTerrainUnderAClearSky)
 {
   // Ridges and bowls of about 45 deg, sun low over them (the bright circumsolar sky
