@@ -218,21 +218,22 @@ TEST(PostLattice, ReadsEachSectorByTheShareOfTerrainThePostSeesThere)
   ASSERT_NE(bright, dim);
   ASSERT_NE(unseen, bright);
   ASSERT_NE(unseen, dim);
+  // A corner that finds 10 W/m^2 from 0.1 of terrain on the bright side, `dimLight`
+  // from 0.1 on the dim side.
+  auto twoSided = [&](double dimLight) {
+    PostLattice::Gathered g;
+    g.variance = 1.0;
+    g.terrainSeen = 0.2;
+    g.received = 100.0;
+    g.reflectedBySector[bright] = uniformSpectrum(10.0);
+    g.reflectedBySector[dim] = uniformSpectrum(dimLight);
+    g.reflected = uniformSpectrum(10.0 + dimLight);
+    g.terrainBySector[bright] = g.terrainBySector[dim] = 0.1;
+    return g;
+  };
   for (int j : { 0, 4, 8 })
     for (int i : { 0, 4, 8 })
-    {
-      // Every corner: 10 W/m^2 from 0.1 of terrain on the bright side, 1 W/m^2 from
-      // 0.1 on the dim side.
-      PostLattice::Gathered g;
-      g.variance = 1.0;
-      g.terrainSeen = 0.2;
-      g.received = 100.0;
-      g.reflectedBySector[bright] = uniformSpectrum(10.0);
-      g.reflectedBySector[dim] = uniformSpectrum(1.0);
-      g.reflected = uniformSpectrum(11.0);
-      g.terrainBySector[bright] = g.terrainBySector[dim] = 0.1;
-      lattice.set(i, j, g);
-    }
+      lattice.set(i, j, twoSided(1.0));
   Spectrum whole;
   ASSERT_TRUE(lattice.perTerrainSeenAt(2.0, 3.0, whole));
   EXPECT_DOUBLE_EQ(whole[0], 55.0);
@@ -253,15 +254,7 @@ TEST(PostLattice, ReadsEachSectorByTheShareOfTerrainThePostSeesThere)
   EXPECT_NEAR(read.perTerrainSeen[0], 0.5 * 55.0 + 0.5 * 100.0, 1e-12);
   // The spread is each sector's between the corners, by the post's shares: one corner
   // finding twice the dim side's light per terrain seen spreads it by 10.
-  PostLattice::Gathered brighter;
-  brighter.variance = 1.0;
-  brighter.terrainSeen = 0.2;
-  brighter.received = 100.0;
-  brighter.reflectedBySector[bright] = uniformSpectrum(10.0);
-  brighter.reflectedBySector[dim] = uniformSpectrum(2.0);
-  brighter.reflected = uniformSpectrum(12.0);
-  brighter.terrainBySector[bright] = brighter.terrainBySector[dim] = 0.1;
-  lattice.set(4, 4, brighter);
+  lattice.set(4, 4, twoSided(2.0));
   shares = PerSector<double>{};
   shares[dim] = 0.5, shares[bright] = 0.5;
   ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
