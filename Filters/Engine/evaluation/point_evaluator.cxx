@@ -322,9 +322,7 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // steep DEMs for no gain in accuracy (docs/tuning.md). A post that sees no terrain
   // needs no shares.
   PostLattice::SectorRead read;
-  PerSector<double> even;
-  even.fill(1.0 / viewSectors);
-  if (!this->Lattice->readBySector(i, j, terrainSeen > 0.0 ? this->terrainSharesAt(post, normal) : even, read))
+  if (!this->Lattice->readBySector(i, j, terrainSeen > 0.0 ? this->terrainSharesAt(post, normal) : PerSector<double>{}, read))
     return false;
   const double spread = std::max(wholeSpread, terrainSeen * read.spread) +
     terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole));

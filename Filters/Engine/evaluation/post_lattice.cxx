@@ -124,18 +124,23 @@ PostLattice::Cell PostLattice::cellAt(double u, double v) const
   }
 }
 
-int PostLattice::cornersAt(double u, double v, std::array<WeightedCorner, 4>& corners, double& total) const
+PostLattice::NodeGrid PostLattice::nodeGridAt(double u, double v) const
 {
-  // The corners of the cell's own lattice (every post, or every second) gathered.
+  // The cell's own lattice: every post, or every second.
   const Cell cell = this->cellAt(u, v);
   const double size = static_cast<double>(this->Step * cell.side);
-  const int nodesX = cell.side == 1 ? this->Nx : (this->Nx - 1) / 2 + 1;
-  const int nodesY = cell.side == 1 ? this->Ny : (this->Ny - 1) / 2 + 1;
+  return { cell.side, u / size, v / size, cell.side == 1 ? this->Nx : (this->Nx - 1) / 2 + 1,
+    cell.side == 1 ? this->Ny : (this->Ny - 1) / 2 + 1 };
+}
+
+int PostLattice::cornersAt(double u, double v, std::array<WeightedCorner, 4>& corners, double& total) const
+{
+  const NodeGrid grid = this->nodeGridAt(u, v);
   std::array<NodeWeight, 4> nodes;
-  const int count = nodeWeights(u / size, v / size, nodesX, nodesY,
-    [&](int a, int b) { return this->Variance[this->index(a * cell.side, b * cell.side)] >= 0.0; }, nodes, total);
+  const int count = nodeWeights(grid.x, grid.y, grid.nodesX, grid.nodesY,
+    [&](int a, int b) { return this->Variance[this->index(a * grid.side, b * grid.side)] >= 0.0; }, nodes, total);
   for (int n = 0; n < count; ++n)
-    corners[n] = { this->index(nodes[n].i * cell.side, nodes[n].j * cell.side), nodes[n].weight };
+    corners[n] = { this->index(nodes[n].i * grid.side, nodes[n].j * grid.side), nodes[n].weight };
   return count;
 }
 
@@ -143,21 +148,16 @@ template <class Value, class NodeValue>
 bool PostLattice::interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const
 {
   // Bilinear between the gathered corners.
-  std::array<WeightedCorner, 4> corners;
-  double total = 0.0;
-  const int count = this->cornersAt(u, v, corners, total);
-  if (count == 0)
-    return false;
-  result = Value{};
-  for (int n = 0; n < count; ++n)
-  {
-    const Value value = nodeValue(corners[n].k);
-    for (std::size_t c = 0; c < result.size(); ++c)
-      result[c] += corners[n].weight * value[c];
-  }
-  for (double& c : result)
-    c /= total;
-  return true;
+  const NodeGrid grid = this->nodeGridAt(u, v);
+  return interpolateNodes(grid.x, grid.y, grid.nodesX, grid.nodesY,
+    [&](int a, int b, Value& value) {
+      const std::size_t k = this->index(a * grid.side, b * grid.side);
+      if (this->Variance[k] < 0.0)
+        return false;
+      value = nodeValue(k);
+      return true;
+    },
+    result);
 }
 
 void PostLattice::set(int i, int j, const Gathered& gathered)
@@ -234,24 +234,21 @@ bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
 
 bool PostLattice::perTerrainSeenAt(double u, double v, Spectrum& reflected) const
 {
-  // A ratio of the corners' sums (each weighted by the terrain it sees) rather than a
-  // mean of their ratios: a corner that sees next to no terrain (an open ridge between
-  // valleys) tells next to nothing of what terrain sends, and counting its ratio as 0
-  // read too little light from surfaces on gentle terrain (docs/tuning.md).
-  Beyond found;
-  if (!this->interpolate(u, v, [&](std::size_t k) { return this->Found[k]; }, found) ||
-    !(found[terrainSeenSlot] > minimumTerrainSeen))
+  SectorRead read;
+  if (!this->readBySector(u, v, PerSector<double>{}, read))
     return false;
-  const double perTerrainSeen = 1.0 / found[terrainSeenSlot];
-  for (int band = 0; band < maxBands; ++band)
-    reflected[band] = found[band] * perTerrainSeen;
+  reflected = read.whole;
   return true;
 }
 
 bool PostLattice::readBySector(double u, double v, const PerSector<double>& shares, SectorRead& read) const
 {
-  // Only the sectors the post sees terrain in, from the corners' values in place (a
-  // post's read reads no more than it needs: every post of a DEM takes one).
+  // The whole's: a ratio of the corners' sums (each weighted by the terrain it sees)
+  // rather than a mean of their ratios: a corner that sees next to no terrain (an open
+  // ridge between valleys) tells next to nothing of what terrain sends, and counting
+  // its ratio as 0 read too little light from surfaces on gentle terrain
+  // (docs/tuning.md). Then only the sectors the post sees terrain in, from the corners'
+  // values in place (every post of a DEM takes one).
   std::array<WeightedCorner, 4> corners;
   double total = 0.0;
   const int count = this->cornersAt(u, v, corners, total);

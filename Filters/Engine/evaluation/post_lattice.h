@@ -158,6 +158,15 @@ private:
     double weight;
   };
   int cornersAt(double u, double v, std::array<WeightedCorner, 4>& corners, double& total) const;
+  /// The lattice grid that grid parameters (u, v) read from (its posts `side` lattice
+  /// posts apart) and where they lie in it.
+  struct NodeGrid
+  {
+    int side;
+    double x, y;
+    int nodesX, nodesY;
+  };
+  NodeGrid nodeGridAt(double u, double v) const;
   template <class Value, class NodeValue>
   bool interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const;
   double terrainSeen(std::size_t k) const { return this->Found[k][terrainSeenSlot]; }

@@ -8,6 +8,7 @@
 #include "base/floor_divide.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
@@ -72,6 +73,12 @@ inline double atanOfPositive(double t)
   if (shifted)
     a += pi / 6.0;
   return inverted ? 0.5 * pi - a : a;
+}
+
+/// atan of any t, as atanOfPositive.
+inline double atanOf(double t)
+{
+  return std::copysign(atanOfPositive(std::abs(t)), t);
 }
 
 } // namespace horizon_lines

@@ -17,7 +17,7 @@
 
 namespace terralux
 {
-using horizon_lines::atanOfPositive;
+using horizon_lines::atanOf;
 using horizon_lines::crossingsOf;
 using horizon_lines::Crossing;
 
@@ -177,7 +177,7 @@ std::uint16_t HorizonMap::codeOfTangent(double tangent)
 {
   if (!(tangent > -std::numeric_limits<double>::infinity()))
     return horizontalCode - codeSteps;
-  const double elevation = tangent >= 0.0 ? atanOfPositive(tangent) : -atanOfPositive(-tangent);
+  const double elevation = atanOf(tangent);
   // Rounded to the nearest (a positive value: + 0.5, truncated).
   const double code = horizontalCode + elevation / (0.5 * pi) * codeSteps + 0.5;
   return static_cast<std::uint16_t>(std::clamp(code, double{ horizontalCode - codeSteps }, double{ horizontalCode + codeSteps }));

@@ -505,8 +505,7 @@ PerSector<double> HorizonSky::terrainBySector(const HorizonMap::Post& post, cons
   {
     const double toward = normal.x * table.directions[a].cos + normal.y * table.directions[a].sin;
     const double horizon = this->Map->trueElevationAt(cell, a);
-    const double tangent = -toward * invNz;
-    const double plane = std::copysign(horizon_lines::atanOfPositive(std::abs(tangent)), tangent);
+    const double plane = horizon_lines::atanOf(-toward * invNz);
     const ElevationTerms terms = lowTerms(horizon);
     bands[a] = horizon > plane ? toward * (terms.along - 0.5 * plane) + normal.z * terms.up : 0.0;
   }

@@ -53,7 +53,7 @@ bool interpolateNodes(double x, double y, int nx, int ny, const Node& node, Valu
   int held = 0;
   double total = 0.0;
   const int count = nodeWeights(
-    x, y, nx, ny, [&](int i, int j) { return held < 4 && node(i, j, values[held]) && (++held, true); }, nodes, total);
+    x, y, nx, ny, [&](int i, int j) { return node(i, j, values[held]) && (++held, true); }, nodes, total);
   if (count == 0)
     return false;
   result = Value{};
