@@ -319,14 +319,19 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // by sector and of the whole disagree, the post's view is not its corners': either
   // may be off by their difference. Only the whole's spread decides (as the lattice's
   // cells were refined by it): deciding by all of it gathered a quarter more rays on
-  // steep DEMs for no gain in accuracy (docs/tuning.md). A post that sees no terrain
-  // needs no shares.
+  // steep DEMs for no gain in accuracy (docs/tuning.md).
+  // Where the corners' sectors differ too little to matter (most posts of gentle
+  // terrain, which see little of it), the post reads the whole and errs by that width
+  // instead: its shares of terrain took a third of their points' time.
+  const double sectorWidth = terrainSeen * around.sectorWidth;
+  const bool bySector = sectorWidth > Tuning::latticeSectorWidthShare * limit;
   PostLattice::SectorRead read;
-  if (!this->Lattice->readBySector(i, j, terrainSeen > 0.0 ? this->terrainSharesAt(post, normal) : PerSector<double>{}, read))
+  if (!this->Lattice->readBySector(i, j, bySector ? this->terrainSharesAt(post, normal) : PerSector<double>{}, read))
     return false;
-  const double spread = std::max(wholeSpread, terrainSeen * read.spread) +
-    terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole));
-  const Spectrum& perTerrainSeen = read.perTerrainSeen;
+  const double spread = bySector ? std::max(wholeSpread, terrainSeen * read.spread) +
+      terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole))
+                                 : wholeSpread + sectorWidth;
+  const Spectrum& perTerrainSeen = bySector ? read.perTerrainSeen : read.whole;
   for (int band = 0; band < maxBands; ++band)
     result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * perTerrainSeen[band]);
   result.irradiance[SkyLight] = sky.irradiance;

@@ -35,6 +35,7 @@ PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* spli
   const std::size_t posts = this->Held.count();
   this->Variance.assign(posts, -1.0);
   this->Found.resize(posts);
+  this->SectorRange.assign(posts, { 0.0, 0.0 });
   this->Received.assign(posts, 0.0);
   this->Edge.assign(posts, 0);
   const std::size_t cells = this->HeldCells.empty() ? 0
@@ -176,6 +177,26 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   }
   this->Received[k] = gathered.received;
   this->Edge[k] = gathered.edge ? 1 : 0;
+  this->findSectorRange(k);
+}
+
+void PostLattice::findSectorRange(std::size_t k)
+{
+  // Over every sector that met terrain, however little: a post's read by sector and its
+  // whole's are both weighted means of these.
+  const Beyond& found = this->Found[k];
+  double least = std::numeric_limits<double>::infinity(), largest = -least;
+  for (int q = 0; q < viewSectors; ++q)
+  {
+    const std::size_t start = sectorStart(q);
+    if (!(found[start + terrainSeenSlot] > 0.0))
+      continue;
+    const double perTerrainSeen =
+      *std::max_element(&found[start], &found[start] + maxBands) / found[start + terrainSeenSlot];
+    least = std::min(least, perTerrainSeen);
+    largest = std::max(largest, perTerrainSeen);
+  }
+  this->SectorRange[k] = largest >= least ? std::array<double, 2>{ least, largest } : std::array<double, 2>{ 0.0, 0.0 };
 }
 
 void PostLattice::share()
@@ -185,6 +206,8 @@ void PostLattice::share()
   this->Held.share(this->Found, latticeTag + 1);
   this->Held.share(this->Received, latticeTag + 2);
   this->Held.share(this->Edge, latticeTag + 3);
+  for (std::size_t k = 0; k < this->Found.size(); ++k)
+    this->findSectorRange(k);
 }
 
 template <class Corner>
@@ -199,6 +222,7 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
 {
   Around result;
   result.leastPerTerrainSeen = std::numeric_limits<double>::infinity();
+  double sectorLeast = result.leastPerTerrainSeen, sectorLargest = -sectorLeast;
   this->forEachCorner(cell, [&](std::size_t k) {
     if (this->Variance[k] < 0.0)
       return;
@@ -209,7 +233,10 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
     const double largest = this->largestPerTerrainSeen(k);
     result.largestPerTerrainSeen = std::max(result.largestPerTerrainSeen, largest);
     result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
+    sectorLeast = std::min(sectorLeast, this->SectorRange[k][0]);
+    sectorLargest = std::max(sectorLargest, this->SectorRange[k][1]);
   });
+  result.sectorWidth = sectorLargest >= sectorLeast ? sectorLargest - sectorLeast : 0.0;
   if (result.leastPerTerrainSeen > result.largestPerTerrainSeen) // no corner sees terrain
     result.leastPerTerrainSeen = result.largestPerTerrainSeen = 0.0;
   return result;

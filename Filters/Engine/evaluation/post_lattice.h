@@ -96,6 +96,10 @@ public:
     double variance = -1.0;
     double largestPerTerrainSeen = 0.0;
     double leastPerTerrainSeen = 0.0;
+    /// The width of the corners' light per terrain seen (largest band) across the
+    /// sectors of their views they met terrain in: a post's read by sector
+    /// (readBySector) and its whole's differ by at most its terrain seen times this.
+    double sectorWidth = 0.0;
     bool edgeCorner = false;
   };
   Around around(int i, int j) const;
@@ -173,6 +177,8 @@ private:
   /// Whether lattice post k sees enough terrain to tell what terrain sends.
   bool seesTerrain(std::size_t k) const;
   double largestPerTerrainSeen(std::size_t k) const;
+  /// Finds SectorRange[k] from Found[k].
+  void findSectorRange(std::size_t k);
   // Per lattice post: the light from surfaces it found (maxBands), then the terrain it
   // sees; then the same for each sector of the view.
   static constexpr std::size_t part = maxBands + 1;
@@ -188,6 +194,9 @@ private:
   // Per held lattice post. Variance -1: not gathered (no data there, or not asked for).
   std::vector<double> Variance;
   std::vector<Beyond> Found;
+  // The least and largest light per terrain seen (largest band) over the sectors where
+  // the post met terrain.
+  std::vector<std::array<double, 2>> SectorRange;
   std::vector<double> Received;
   std::vector<std::uint8_t> Edge; // Gathered::edge
   std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells

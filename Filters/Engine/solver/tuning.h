@@ -94,6 +94,10 @@ struct Tuning
   /// terrain it sees): its error estimate takes it, and it gathers where that misses its
   /// target.
   static constexpr double latticeReadBias = 0.1;
+  /// A post reads by the sectors of its view only where the corners' light per terrain
+  /// seen differs, across their sectors, by more than this share of its target; below
+  /// it the whole's read errs by no more than that width (docs/tuning.md).
+  static constexpr double latticeSectorWidthShare = 0.25;
   /// A lattice cell is refined where its corners spread more than this share of their
   /// target.
   static constexpr double latticeRefineShare = 0.5;

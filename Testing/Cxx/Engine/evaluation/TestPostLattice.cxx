@@ -244,6 +244,9 @@ TEST(PostLattice, ReadsEachSectorByTheShareOfTerrainThePostSeesThere)
   EXPECT_NEAR(read.perTerrainSeen[0], 10.0, 1e-12);
   EXPECT_EQ(read.whole, whole);
   EXPECT_EQ(read.spread, 0.0); // every corner found the same
+  // The two reads differ by at most the terrain seen times the corners' width across
+  // their sectors.
+  EXPECT_DOUBLE_EQ(lattice.around(2, 3).sectorWidth, 90.0);
   shares[dim] = 0.25, shares[bright] = 0.75;
   ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
   EXPECT_NEAR(read.perTerrainSeen[0], 0.75 * 100.0 + 0.25 * 10.0, 1e-12);
