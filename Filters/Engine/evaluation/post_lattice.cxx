@@ -74,13 +74,9 @@ bool PostLattice::seesTerrain(std::size_t k) const
   return this->terrainSeen(k) > minimumTerrainSeen;
 }
 
-double PostLattice::largestPerTerrainSeen(std::size_t k) const
+double PostLattice::perTerrainSeenIn(const Beyond& found, std::size_t start)
 {
-  const Beyond& found = this->Found[k];
-  double largest = -std::numeric_limits<double>::infinity();
-  for (int band = 0; band < maxBands; ++band)
-    largest = std::max(largest, found[band]);
-  return largest / this->terrainSeen(k);
+  return *std::max_element(&found[start], &found[start] + maxBands) / found[start + terrainSeenSlot];
 }
 
 void PostLattice::refine(double allowedSpread, double allowedFloor)
@@ -191,8 +187,7 @@ void PostLattice::findSectorRange(std::size_t k)
     const std::size_t start = sectorStart(q);
     if (!(found[start + terrainSeenSlot] > 0.0))
       continue;
-    const double perTerrainSeen =
-      *std::max_element(&found[start], &found[start] + maxBands) / found[start + terrainSeenSlot];
+    const double perTerrainSeen = perTerrainSeenIn(found, start);
     least = std::min(least, perTerrainSeen);
     largest = std::max(largest, perTerrainSeen);
   }
@@ -230,7 +225,7 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
     result.edgeCorner = result.edgeCorner || this->Edge[k] != 0;
     if (!this->seesTerrain(k))
       return; // tells nothing per terrain seen
-    const double largest = this->largestPerTerrainSeen(k);
+    const double largest = perTerrainSeenIn(this->Found[k], 0);
     result.largestPerTerrainSeen = std::max(result.largestPerTerrainSeen, largest);
     result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
     sectorLeast = std::min(sectorLeast, this->SectorRange[k][0]);
@@ -306,8 +301,7 @@ bool PostLattice::readBySector(double u, double v, const PerSector<double>& shar
       const Beyond& found = this->Found[corners[n].k];
       if (!(found[start + terrainSeenSlot] > minimumTerrainSeen))
         continue;
-      const double perTerrainSeen =
-        *std::max_element(&found[start], &found[start] + maxBands) / found[start + terrainSeenSlot];
+      const double perTerrainSeen = perTerrainSeenIn(found, start);
       largest = std::max(largest, perTerrainSeen);
       least = std::min(least, perTerrainSeen);
     }

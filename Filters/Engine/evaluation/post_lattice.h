@@ -176,7 +176,6 @@ private:
   double terrainSeen(std::size_t k) const { return this->Found[k][terrainSeenSlot]; }
   /// Whether lattice post k sees enough terrain to tell what terrain sends.
   bool seesTerrain(std::size_t k) const;
-  double largestPerTerrainSeen(std::size_t k) const;
   /// Finds SectorRange[k] from Found[k].
   void findSectorRange(std::size_t k);
   // Per lattice post: the light from surfaces it found (maxBands), then the terrain it
@@ -186,6 +185,9 @@ private:
   static constexpr std::size_t terrainSeenSlot = maxBands;
   static constexpr std::size_t sectorStart(int q) { return part * (1 + q); }
   static constexpr double minimumTerrainSeen = 1e-6;
+  /// A lattice post's light per terrain seen (largest band) in its part from `start`
+  /// (0: the whole view, or sectorStart(q)), where it saw terrain.
+  static double perTerrainSeenIn(const Beyond& found, std::size_t start);
 
   int Step, Nx, Ny; // lattice posts each way
   int CoarseX, CoarseY; // coarse cells each way

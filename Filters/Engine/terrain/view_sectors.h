@@ -3,7 +3,7 @@
 // (0: from +x to the diagonal toward +y). A post on a ridge sees the terrain on one
 // side of it, while the lattice posts around it see every side: kept apart by sector,
 // the light they gathered from surfaces is read by the terrain the post sees in each
-// (PostLattice::perTerrainSeenAt; docs/tuning.md, "Reads by sector of the view").
+// (PostLattice::readBySector; docs/tuning.md, "Reads by sector of the view").
 
 #include <array>
 #include <cmath>
