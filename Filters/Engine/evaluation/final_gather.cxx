@@ -50,6 +50,9 @@ FinalGather::FinalGather(const GatherInputs& inputs)
   , HierarchyTerrain(inputs.hierarchyTerrain)
   , SkySamples(inputs.sky ? std::make_unique<SkyImportance>(*inputs.sky) : nullptr)
 {
+  // The near part of a post's view as the map's terrainByPart takes it.
+  if (this->Horizons && this->Horizons->map())
+    this->NearViewDistance = nearViewPosts * this->Horizons->map()->postSpacing();
   if (this->Suns.size() <= maximumSunsPerHit)
     return;
   double sum = 0.0;
@@ -270,8 +273,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   if (horizons && post && this->Horizons->map())
     belowHorizon.emplace(*this->Horizons, post, normal);
   Spectrum surfaces{};
-  PerSector<Spectrum> bySector{};
-  PerSector<double> seenBySector{};
+  PerViewPart<Spectrum> byPart{};
+  PerViewPart<double> seenByPart{};
   // Each ray's estimate of what surfaces send (largest band); its spread sets how many
   // rays are needed. A pilot of budget.pilot rays of their own sets how many rays the
   // point needs; the estimate then comes from that many fresh stratified rays. Rays that
@@ -288,8 +291,8 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
     sum = sumOfSquares = interreflected = reflectanceSeen = 0.0;
     backRays = 0;
     surfaces = Spectrum{};
-    bySector = PerSector<Spectrum>{};
-    seenBySector = PerSector<double>{};
+    byPart = PerViewPart<Spectrum>{};
+    seenByPart = PerViewPart<double>{};
     // One ray's estimate of what surfaces send (largest band).
     auto gather = [&](int k, double s, double t) -> double {
       TerrainDirections::Sample below;
@@ -303,8 +306,9 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       const PolygonElement* leaf = this->Rays.firstHit(point, normal, d, hit) ? this->leafAt(hit) : nullptr;
       if (!leaf)
         return 0.0;
-      const int sector = sectorOf(d.x, d.y);
-      seenBySector[sector] += weight;
+      const double dx = hit.point.x - point.x, dy = hit.point.y - point.y;
+      const int part = viewPartOf(sectorOf(d.x, d.y), dx * dx + dy * dy > this->NearViewDistance * this->NearViewDistance);
+      seenByPart[part] += weight;
       // The back of a one-sided surface sends nothing.
       const Vec3 front = frontAt(hit, *leaf);
       if (!(glm::dot(front, d) < 0.0))
@@ -316,7 +320,7 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
       double bounced = 0.0;
       const Spectrum b = this->radiosityAt(*leaf, hit, front, sunSample, point, &bounced);
       for (int band = 0; band < maxBands; ++band)
-        surfaces[band] += weight * b[band], bySector[sector][band] += weight * b[band];
+        surfaces[band] += weight * b[band], byPart[part][band] += weight * b[band];
       interreflected += weight * bounced;
       reflectanceSeen += weight * largestBand(leaf->reflectance());
       return weight * largestBand(b);
@@ -348,11 +352,11 @@ GatheredLight FinalGather::irradianceAt(const Vec3& point, const Vec3& normal, c
   for (int band = 0; band < maxBands; ++band)
   {
     result.surfaces[band] = surfaces[band] * perRay;
-    for (int q = 0; q < viewSectors; ++q)
-      result.surfacesBySector[q][band] = bySector[q][band] * perRay;
+    for (int part = 0; part < viewParts; ++part)
+      result.surfacesByPart[part][band] = byPart[part][band] * perRay;
   }
-  for (int q = 0; q < viewSectors; ++q)
-    result.surfacesSeenBySector[q] = seenBySector[q] * perRay;
+  for (int part = 0; part < viewParts; ++part)
+    result.surfacesSeenByPart[part] = seenByPart[part] * perRay;
   if (this->Sky)
     result.skyViewFactor = openOmega / pi;
   result.rays += count;

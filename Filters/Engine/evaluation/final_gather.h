@@ -31,11 +31,12 @@ class Visibility;
 struct GatheredLight
 {
   Spectrum surfaces{};
-  /// `surfaces` split by the sector of the view each ray went toward (they sum to it),
-  /// and the view factor of the surfaces the rays met there (fronts and backs): their
-  /// ratio is the mean radiosity of what the point sees in that sector.
-  PerSector<Spectrum> surfacesBySector{};
-  PerSector<double> surfacesSeenBySector{};
+  /// `surfaces` split by the part of the view each ray met its surface in (its sector,
+  /// and whether the hit lies beyond nearViewPosts posts; they sum to it), and the view
+  /// factor of the surfaces the rays met there (fronts and backs): their ratio is the
+  /// mean radiosity of what the point sees in that part.
+  PerViewPart<Spectrum> surfacesByPart{};
+  PerViewPart<double> surfacesSeenByPart{};
   Spectrum sky{};
   double skyViewFactor = 0.0;
   int rays = 0;
@@ -200,6 +201,7 @@ private:
   const LeafLight* Leaves;
   const double DetailDistance;
   const FarTerrain* HierarchyTerrain;
+  double NearViewDistance = 0.0; // where a hit's view part is far (m, horizontally)
   std::unique_ptr<SkyImportance> SkySamples; // without horizons: rays drawn by the sky's radiance
   std::vector<double> SunCumulative; // running sums of the suns' largest bands; empty: all suns at each hit
 };

@@ -300,8 +300,9 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // The sky is its horizons'. The light from surfaces comes from the terrain the post
   // sees, 1 - its sky view factor less the void (directions that leave the terrain
   // below the horizontal; docs/tuning.md): that times what the lattice's posts around
-  // found per terrain seen, in each sector of the view by the post's share of terrain
-  // there (a ridge's post sees one side of it, its corners every side).
+  // found per terrain seen, in each part of the view by the post's share of terrain
+  // there (a ridge's post sees one side of it and the far terrain below, its corners
+  // every side and the slopes near them).
   // Read between them it errs by at most their spread, plus the bias of reading light
   // from surfaces between posts (Tuning::latticeReadBias); the post reads it where that
   // meets its target, else gathers. The error of what the lattice's posts read from the
@@ -315,23 +316,25 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   const double wholeSpread = terrainSeen * (around.largestPerTerrainSeen - around.leastPerTerrainSeen);
   if (wholeSpread > limit)
     return false;
-  // It errs by the corners' spread in the whole or in its sectors; and where the reads
-  // by sector and of the whole disagree, the post's view is not its corners': either
+  // It errs by the corners' spread in the whole or in its parts; and where the reads
+  // by part and of the whole disagree, the post's view is not its corners': either
   // may be off by their difference. Only the whole's spread decides (as the lattice's
   // cells were refined by it): deciding by all of it gathered a quarter more rays on
   // steep DEMs for no gain in accuracy (docs/tuning.md).
   // Where the corners' sectors differ too little to matter (most posts of gentle
-  // terrain, which see little of it), the post reads the whole and errs by that width
-  // instead: its shares of terrain took a third of their points' time.
-  const double sectorWidth = terrainSeen * around.sectorWidth;
-  const bool bySector = sectorWidth > Tuning::latticeSectorWidthShare * limit;
-  PostLattice::SectorRead read;
-  if (!this->Lattice->readBySector(i, j, bySector ? this->terrainSharesAt(post, normal) : PerSector<double>{}, read))
+  // terrain, which see little of it), the post reads the whole and errs by the width
+  // across their parts instead: its shares of terrain took a third of their points'
+  // time. (Deciding by that width too sent twice the posts to their shares, whose near
+  // terrain costs more than their sectors; docs/tuning.md.)
+  const double partWidth = terrainSeen * around.partWidth;
+  const bool byPart = terrainSeen * around.sectorWidth > Tuning::latticeSectorWidthShare * limit;
+  PostLattice::PartRead read;
+  if (!this->Lattice->readByPart(i, j, byPart ? this->terrainSharesAt(post, normal) : PerViewPart<double>{}, read))
     return false;
-  const double spread = bySector ? std::max(wholeSpread, terrainSeen * read.spread) +
+  const double spread = byPart ? std::max(wholeSpread, terrainSeen * read.spread) +
       terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole))
-                                 : wholeSpread + sectorWidth;
-  const Spectrum& perTerrainSeen = bySector ? read.perTerrainSeen : read.whole;
+                               : wholeSpread + partWidth;
+  const Spectrum& perTerrainSeen = byPart ? read.perTerrainSeen : read.whole;
   for (int band = 0; band < maxBands; ++band)
     result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * perTerrainSeen[band]);
   result.irradiance[SkyLight] = sky.irradiance;
@@ -344,14 +347,14 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   return true;
 }
 
-PerSector<double> PointEvaluator::terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal) const
+PerViewPart<double> PointEvaluator::terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal) const
 {
-  PerSector<double> shares = this->Horizons ? this->Horizons->terrainBySector(post, normal) : PerSector<double>{};
+  PerViewPart<double> shares = this->Horizons ? this->Horizons->terrainByPart(post, normal) : PerViewPart<double>{};
   double sum = 0.0;
   for (const double share : shares)
     sum += share;
   for (double& share : shares)
-    share = sum > 0.0 ? share / sum : 1.0 / viewSectors;
+    share = sum > 0.0 ? share / sum : 1.0 / viewParts;
   return shares;
 }
 
@@ -491,18 +494,18 @@ void PointEvaluator::gatherLatticePosts(
         continue;
       PostLattice::Gathered gathered;
       gathered.reflected = result.irradiance[ReflectedLight];
-      gathered.reflectedBySector = light.surfacesBySector;
+      gathered.reflectedByPart = light.surfacesByPart;
       gathered.variance = result.gatherVariance;
       gathered.terrainSeen = sky.terrainSeen();
-      // Its terrain by sector: the surfaces its rays met there, scaled to the terrain
-      // its horizons show in all. From the map's shares instead, a sector whose
-      // horizons show next to no terrain where its rays met some (the thin band of
-      // flat ground) would divide their light by next to nothing.
+      // Its terrain by part: the surfaces its rays met there, scaled to the terrain its
+      // horizons show in all. From the map's shares instead, a part whose horizons show
+      // next to no terrain where its rays met some (the thin band of flat ground) would
+      // divide their light by next to nothing.
       double met = 0.0;
-      for (const double seen : light.surfacesSeenBySector)
+      for (const double seen : light.surfacesSeenByPart)
         met += seen;
-      for (int q = 0; q < viewSectors; ++q)
-        gathered.terrainBySector[q] = met > 0.0 ? gathered.terrainSeen * light.surfacesSeenBySector[q] / met : 0.0;
+      for (int part = 0; part < viewParts; ++part)
+        gathered.terrainByPart[part] = met > 0.0 ? gathered.terrainSeen * light.surfacesSeenByPart[part] / met : 0.0;
       gathered.received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
       gathered.edge = !grid.surroundedByCells(i, j);
       lattice.set(i, j, gathered);

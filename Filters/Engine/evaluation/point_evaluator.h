@@ -163,9 +163,9 @@ private:
   /// The lattice's posts of one pass this process gathers (its share where the work is
   /// split).
   void gatherLatticePosts(const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const;
-  /// The shares of the terrain a post sees in each sector of its view (summing to 1;
+  /// The shares of the terrain a post sees in each part of its view (summing to 1;
   /// even where its horizons show none): what its read weighs the lattice's by.
-  PerSector<double> terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal) const;
+  PerViewPart<double> terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal) const;
   /// Post (i, j), between gathered lattice posts that agree on the radiosity of the
   /// terrain they see, takes its light from surfaces from them and its sky from its
   /// horizons, without a gather: true, with `result` (its sun already in it) filled.

@@ -35,7 +35,7 @@ PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* spli
   const std::size_t posts = this->Held.count();
   this->Variance.assign(posts, -1.0);
   this->Found.resize(posts);
-  this->SectorRange.assign(posts, { 0.0, 0.0 });
+  this->Ranges.assign(posts, { 0.0, 0.0, 0.0, 0.0 });
   this->Received.assign(posts, 0.0);
   this->Edge.assign(posts, 0);
   const std::size_t cells = this->HeldCells.empty() ? 0
@@ -141,6 +141,27 @@ int PostLattice::cornersAt(double u, double v, std::array<WeightedCorner, 4>& co
   return count;
 }
 
+int PostLattice::widerCornersAt(double u, double v, std::array<WeightedCorner, 16>& corners, double& total) const
+{
+  const NodeGrid grid = this->nodeGridAt(u, v);
+  const int i0 = static_cast<int>(std::floor(grid.x)), j0 = static_cast<int>(std::floor(grid.y));
+  int count = 0;
+  total = 0.0;
+  for (int b = std::max(0, j0 - 1); b <= std::min(grid.nodesY - 1, j0 + 2); ++b)
+    for (int a = std::max(0, i0 - 1); a <= std::min(grid.nodesX - 1, i0 + 2); ++a)
+    {
+      const double w = std::max(0.0, 1.0 - 0.5 * std::abs(grid.x - a)) * std::max(0.0, 1.0 - 0.5 * std::abs(grid.y - b));
+      if (!(w > 0.0) || !this->Held.holds(a * grid.side, b * grid.side))
+        continue;
+      const std::size_t k = this->index(a * grid.side, b * grid.side);
+      if (this->Variance[k] < 0.0)
+        continue;
+      corners[count++] = { k, w };
+      total += w;
+    }
+  return count;
+}
+
 template <class Value, class NodeValue>
 bool PostLattice::interpolate(double u, double v, const NodeValue& nodeValue, Value& result) const
 {
@@ -165,33 +186,47 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   for (int band = 0; band < maxBands; ++band)
     found[band] = gathered.reflected[band];
   found[terrainSeenSlot] = std::max(0.0, gathered.terrainSeen);
-  for (int q = 0; q < viewSectors; ++q)
+  for (int part = 0; part < viewParts; ++part)
   {
     for (int band = 0; band < maxBands; ++band)
-      found[sectorStart(q) + band] = gathered.reflectedBySector[q][band];
-    found[sectorStart(q) + terrainSeenSlot] = std::max(0.0, gathered.terrainBySector[q]);
+      found[partStart(part) + band] = gathered.reflectedByPart[part][band];
+    found[partStart(part) + terrainSeenSlot] = std::max(0.0, gathered.terrainByPart[part]);
   }
   this->Received[k] = gathered.received;
   this->Edge[k] = gathered.edge ? 1 : 0;
-  this->findSectorRange(k);
+  this->findRanges(k);
 }
 
-void PostLattice::findSectorRange(std::size_t k)
+void PostLattice::findRanges(std::size_t k)
 {
-  // Over every sector that met terrain, however little: a post's read by sector and its
-  // whole's are both weighted means of these.
+  // Over every part (and sector) that met terrain, however little: a post's read by
+  // part and its whole's are both weighted means of these.
   const Beyond& found = this->Found[k];
-  double least = std::numeric_limits<double>::infinity(), largest = -least;
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::array<double, 4> range{ infinity, -infinity, infinity, -infinity };
+  auto widen = [&](double* leastAndLargest, double perTerrainSeen) {
+    leastAndLargest[0] = std::min(leastAndLargest[0], perTerrainSeen);
+    leastAndLargest[1] = std::max(leastAndLargest[1], perTerrainSeen);
+  };
   for (int q = 0; q < viewSectors; ++q)
   {
-    const std::size_t start = sectorStart(q);
-    if (!(found[start + terrainSeenSlot] > 0.0))
-      continue;
-    const double perTerrainSeen = perTerrainSeenIn(found, start);
-    least = std::min(least, perTerrainSeen);
-    largest = std::max(largest, perTerrainSeen);
+    Beyond sector{};
+    for (const bool beyond : { false, true })
+    {
+      const std::size_t start = partStart(viewPartOf(q, beyond));
+      if (!(found[start + terrainSeenSlot] > 0.0))
+        continue;
+      widen(&range[0], perTerrainSeenIn(found, start));
+      for (std::size_t slot = 0; slot < slots; ++slot)
+        sector[slot] += found[start + slot];
+    }
+    if (sector[terrainSeenSlot] > 0.0)
+      widen(&range[2], perTerrainSeenIn(sector, 0));
   }
-  this->SectorRange[k] = largest >= least ? std::array<double, 2>{ least, largest } : std::array<double, 2>{ 0.0, 0.0 };
+  for (int r = 0; r < 4; r += 2)
+    if (!(range[r + 1] >= range[r]))
+      range[r] = range[r + 1] = 0.0;
+  this->Ranges[k] = range;
 }
 
 void PostLattice::share()
@@ -202,7 +237,7 @@ void PostLattice::share()
   this->Held.share(this->Received, latticeTag + 2);
   this->Held.share(this->Edge, latticeTag + 3);
   for (std::size_t k = 0; k < this->Found.size(); ++k)
-    this->findSectorRange(k);
+    this->findRanges(k);
 }
 
 template <class Corner>
@@ -217,7 +252,8 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
 {
   Around result;
   result.leastPerTerrainSeen = std::numeric_limits<double>::infinity();
-  double sectorLeast = result.leastPerTerrainSeen, sectorLargest = -sectorLeast;
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::array<double, 4> ranges{ infinity, -infinity, infinity, -infinity };
   this->forEachCorner(cell, [&](std::size_t k) {
     if (this->Variance[k] < 0.0)
       return;
@@ -228,10 +264,11 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
     const double largest = perTerrainSeenIn(this->Found[k], 0);
     result.largestPerTerrainSeen = std::max(result.largestPerTerrainSeen, largest);
     result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
-    sectorLeast = std::min(sectorLeast, this->SectorRange[k][0]);
-    sectorLargest = std::max(sectorLargest, this->SectorRange[k][1]);
+    for (int r = 0; r < 4; r += 2)
+      ranges[r] = std::min(ranges[r], this->Ranges[k][r]), ranges[r + 1] = std::max(ranges[r + 1], this->Ranges[k][r + 1]);
   });
-  result.sectorWidth = sectorLargest >= sectorLeast ? sectorLargest - sectorLeast : 0.0;
+  result.partWidth = ranges[1] >= ranges[0] ? ranges[1] - ranges[0] : 0.0;
+  result.sectorWidth = ranges[3] >= ranges[2] ? ranges[3] - ranges[2] : 0.0;
   if (result.leastPerTerrainSeen > result.largestPerTerrainSeen) // no corner sees terrain
     result.leastPerTerrainSeen = result.largestPerTerrainSeen = 0.0;
   return result;
@@ -256,20 +293,20 @@ bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
 
 bool PostLattice::perTerrainSeenAt(double u, double v, Spectrum& reflected) const
 {
-  SectorRead read;
-  if (!this->readBySector(u, v, PerSector<double>{}, read))
+  PartRead read;
+  if (!this->readByPart(u, v, PerViewPart<double>{}, read))
     return false;
   reflected = read.whole;
   return true;
 }
 
-bool PostLattice::readBySector(double u, double v, const PerSector<double>& shares, SectorRead& read) const
+bool PostLattice::readByPart(double u, double v, const PerViewPart<double>& shares, PartRead& read) const
 {
   // The whole's: a ratio of the corners' sums (each weighted by the terrain it sees)
   // rather than a mean of their ratios: a corner that sees next to no terrain (an open
   // ridge between valleys) tells next to nothing of what terrain sends, and counting
   // its ratio as 0 read too little light from surfaces on gentle terrain
-  // (docs/tuning.md). Then only the sectors the post sees terrain in, from the corners'
+  // (docs/tuning.md). Then only the parts the post sees terrain in, from the corners'
   // values in place (every post of a DEM takes one).
   std::array<WeightedCorner, 4> corners;
   double total = 0.0;
@@ -283,17 +320,52 @@ bool PostLattice::readBySector(double u, double v, const PerSector<double>& shar
   const double terrainSeen = count > 0 ? sum(terrainSeenSlot) : 0.0;
   if (!(terrainSeen > minimumTerrainSeen))
     return false;
-  read = SectorRead{};
+  read = PartRead{};
   for (int band = 0; band < maxBands; ++band)
     read.whole[band] = sum(band) / terrainSeen;
+  // The corners' sums in each part the post sees terrain in (and its sector's other
+  // part). The far parts of a view are much the same for the lattice's posts around:
+  // read from 4 x 4 of them, their noise (few of a post's rays go far) is a quarter.
+  std::array<WeightedCorner, 16> wider;
+  double widerTotal = 0.0;
+  bool seesFar = false;
   for (int q = 0; q < viewSectors; ++q)
+    seesFar = seesFar || shares[viewPartOf(q, true)] > 0.0;
+  const int widerCount = seesFar ? this->widerCornersAt(u, v, wider, widerTotal) : 0;
+  std::array<std::array<double, slots>, viewParts> partSums;
+  for (int part = 0; part < viewParts; ++part)
   {
-    if (!(shares[q] > 0.0))
+    if (!(shares[part] > 0.0 || shares[part ^ 1] > 0.0))
       continue;
-    const std::size_t start = sectorStart(q);
-    const double seen = sum(start + terrainSeenSlot);
+    const std::size_t start = partStart(part);
+    const bool fromWider = part % 2 == 1 && widerCount > 0;
+    for (std::size_t slot = 0; slot < slots; ++slot)
+    {
+      double value = 0.0;
+      if (fromWider)
+      {
+        for (int n = 0; n < widerCount; ++n)
+          value += wider[n].weight * this->Found[wider[n].k][start + slot];
+        partSums[part][slot] = value / widerTotal;
+      }
+      else
+        partSums[part][slot] = sum(start + slot);
+    }
+  }
+  for (int part = 0; part < viewParts; ++part)
+  {
+    if (!(shares[part] > 0.0))
+      continue;
+    const std::size_t start = partStart(part);
+    // Where no corner met terrain in this part, its sector's (both parts), else the whole's.
+    const std::array<double, slots>& own = partSums[part];
+    const std::array<double, slots>& other = partSums[part ^ 1];
+    const double seen = own[terrainSeenSlot], sectorSeen = seen + other[terrainSeenSlot];
     for (int band = 0; band < maxBands; ++band)
-      read.perTerrainSeen[band] += shares[q] * (seen > minimumTerrainSeen ? sum(start + band) / seen : read.whole[band]);
+      read.perTerrainSeen[band] += shares[part] *
+        (seen > minimumTerrainSeen ? own[band] / seen
+            : sectorSeen > minimumTerrainSeen ? (own[band] + other[band]) / sectorSeen
+                                              : read.whole[band]);
     // The spread between the corners that met terrain there.
     double largest = -std::numeric_limits<double>::infinity(), least = std::numeric_limits<double>::infinity();
     for (int n = 0; n < count; ++n)
@@ -306,7 +378,7 @@ bool PostLattice::readBySector(double u, double v, const PerSector<double>& shar
       least = std::min(least, perTerrainSeen);
     }
     if (largest >= least)
-      read.spread += shares[q] * (largest - least);
+      read.spread += shares[part] * (largest - least);
   }
   return true;
 }

@@ -6,7 +6,7 @@
 //   misses the many small exchanges inside rough terrain (issue: about half of them on
 //   a steep fractal DEM). Read between the lattice's gathered posts instead, a hit's
 //   second bounce is as exact as their first. A post that reads its own light from
-//   surfaces reads it by the sectors of its view it sees terrain in (view_sectors.h).
+//   surfaces reads it by the parts of its view it sees terrain in (view_sectors.h).
 // - Rays: a post's gather takes as many rays as a pilot of its own says are needed. The
 //   lattice's posts tell their neighbours the spread of one ray's estimate instead (the
 //   largest at a corner of the lattice cell: neighbours see much the same terrain),
@@ -62,12 +62,12 @@ public:
     Spectrum reflected{};          ///< light from surfaces
     double variance = 0.0;         ///< of one ray's estimate
     double terrainSeen = 0.0;      ///< PostSky::Value::terrainSeen()
-    /// The light from surfaces by the sector of the view it comes from
-    /// (GatheredLight::surfacesBySector), and terrainSeen split as its rays met
-    /// surfaces there (GatheredLight::surfacesSeenBySector): their ratio is the mean
-    /// radiosity its rays met in that sector, bounded whatever its horizons show there.
-    PerSector<Spectrum> reflectedBySector{};
-    PerSector<double> terrainBySector{};
+    /// The light from surfaces by the part of the view it comes from
+    /// (GatheredLight::surfacesByPart), and terrainSeen split as its rays met surfaces
+    /// there (GatheredLight::surfacesSeenByPart): their ratio is the mean radiosity its
+    /// rays met in that part, bounded whatever its horizons show there.
+    PerViewPart<Spectrum> reflectedByPart{};
+    PerViewPart<double> terrainByPart{};
     double received = 0.0;         ///< from the sun and its horizons' sky (largest bands)
     bool edge = false;             ///< on the terrain's edge (see Around::edgeCorner)
   };
@@ -97,8 +97,11 @@ public:
     double largestPerTerrainSeen = 0.0;
     double leastPerTerrainSeen = 0.0;
     /// The width of the corners' light per terrain seen (largest band) across the
-    /// sectors of their views they met terrain in: a post's read by sector
-    /// (readBySector) and its whole's differ by at most its terrain seen times this.
+    /// parts of their views they met terrain in: a post's read by part (readByPart)
+    /// and its whole's differ by at most its terrain seen times this.
+    double partWidth = 0.0;
+    /// The same across the sectors of their views (both parts of each together): how
+    /// much which way a post sees its terrain can matter.
     double sectorWidth = 0.0;
     bool edgeCorner = false;
   };
@@ -112,19 +115,19 @@ public:
   /// about terrainSeen times this. False where none around holds a value or sees
   /// terrain.
   bool perTerrainSeenAt(double u, double v, Spectrum& reflected) const;
-  /// What a post that sees `shares` of its terrain in each sector of its view (summing
-  /// to 1; HorizonSky::terrainBySector) reads: each sector's light per terrain seen
-  /// (the corners' sums of light over their sums of terrain met there; a sector where
-  /// none met terrain takes the whole's) weighed by its share; the whole's, as
-  /// perTerrainSeenAt; and what the first may err by, as Around's spread for the whole:
-  /// in each sector the spread of the corners' light per terrain seen there (largest
-  /// band), weighed by its share. False where perTerrainSeenAt is.
-  struct SectorRead
+  /// What a post that sees `shares` of its terrain in each part of its view (summing
+  /// to 1; HorizonSky::terrainByPart) reads: each part's light per terrain seen (the
+  /// corners' sums of light over their sums of terrain met there; a part where none
+  /// met terrain takes its sector's, else the whole's) weighed by its share; the
+  /// whole's, as perTerrainSeenAt; and what the first may err by, as Around's spread
+  /// for the whole: in each part the spread of the corners' light per terrain seen
+  /// there (largest band), weighed by its share. False where perTerrainSeenAt is.
+  struct PartRead
   {
     Spectrum perTerrainSeen{}, whole{};
     double spread = 0.0;
   };
-  bool readBySector(double u, double v, const PerSector<double>& shares, SectorRead& read) const;
+  bool readByPart(double u, double v, const PerViewPart<double>& shares, PartRead& read) const;
 
 private:
   /// Where lattice post (li, lj) is in the held values; throws unless held.
@@ -162,6 +165,9 @@ private:
     double weight;
   };
   int cornersAt(double u, double v, std::array<WeightedCorner, 4>& corners, double& total) const;
+  /// The same over the gathered lattice posts within two of its node spacings, with
+  /// tent weights (1 - d / 2 each way): 4 x 4 of them.
+  int widerCornersAt(double u, double v, std::array<WeightedCorner, 16>& corners, double& total) const;
   /// The lattice grid that grid parameters (u, v) read from (its posts `side` lattice
   /// posts apart) and where they lie in it.
   struct NodeGrid
@@ -176,17 +182,17 @@ private:
   double terrainSeen(std::size_t k) const { return this->Found[k][terrainSeenSlot]; }
   /// Whether lattice post k sees enough terrain to tell what terrain sends.
   bool seesTerrain(std::size_t k) const;
-  /// Finds SectorRange[k] from Found[k].
-  void findSectorRange(std::size_t k);
+  /// Finds Ranges[k] from Found[k].
+  void findRanges(std::size_t k);
   // Per lattice post: the light from surfaces it found (maxBands), then the terrain it
-  // sees; then the same for each sector of the view.
-  static constexpr std::size_t part = maxBands + 1;
-  using Beyond = std::array<double, part * (1 + viewSectors)>;
+  // sees; then the same for each part of the view.
+  static constexpr std::size_t slots = maxBands + 1;
+  using Beyond = std::array<double, slots * (1 + viewParts)>;
   static constexpr std::size_t terrainSeenSlot = maxBands;
-  static constexpr std::size_t sectorStart(int q) { return part * (1 + q); }
+  static constexpr std::size_t partStart(int part) { return slots * (1 + part); }
   static constexpr double minimumTerrainSeen = 1e-6;
-  /// A lattice post's light per terrain seen (largest band) in its part from `start`
-  /// (0: the whole view, or sectorStart(q)), where it saw terrain.
+  /// A lattice post's light per terrain seen (largest band) in what starts at `start`
+  /// (0: the whole view, or partStart(part)), where it saw terrain.
   static double perTerrainSeenIn(const Beyond& found, std::size_t start);
 
   int Step, Nx, Ny; // lattice posts each way
@@ -196,9 +202,9 @@ private:
   // Per held lattice post. Variance -1: not gathered (no data there, or not asked for).
   std::vector<double> Variance;
   std::vector<Beyond> Found;
-  // The least and largest light per terrain seen (largest band) over the sectors where
-  // the post met terrain.
-  std::vector<std::array<double, 2>> SectorRange;
+  // The least and largest light per terrain seen (largest band) over the parts of its
+  // view where the post met terrain, then over the sectors.
+  std::vector<std::array<double, 4>> Ranges;
   std::vector<double> Received;
   std::vector<std::uint8_t> Edge; // Gathered::edge
   std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells

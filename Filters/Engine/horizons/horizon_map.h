@@ -116,6 +116,12 @@ public:
   /// The same as it lies: below the horizontal where the terrain ahead falls away,
   /// -pi/2 where none lies ahead (the DEM's edge or missing data beyond the post).
   double trueElevation(const Post& post, int a) const { return this->trueElevationAt(this->cellOf(post), a); }
+  /// The mean distance between neighbouring posts (m), by the mean map.
+  double postSpacing() const;
+  /// tan of the highest elevation, seen from `post`, of the terrain toward azimuth a
+  /// within `distance` (m, horizontally): the grid's triangles sampled every post
+  /// spacing, up to the grid's edge or a missing cell; -inf where none is sampled.
+  double nearTangent(const Post& post, int a, double distance) const;
   /// Where a post's horizons lie in the map (its window's order), for elevationAt.
   std::size_t cellOf(const Post& post) const
   {

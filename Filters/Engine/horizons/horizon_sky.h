@@ -77,12 +77,14 @@ public:
   /// - this of terrain. The map's horizons interpolated over its sectors, as hiddenAt
   /// takes low ones (hiddenAt at a post gives it too, as HiddenSky::voidSolidAngle / pi).
   double voidAt(const HorizonMap::Post& post, const Vec3& normal) const;
-  /// The projected solid angle (sr) of the terrain a post sees in each sector of its
-  /// view (view_sectors.h): between its plane and the map's true horizon (below the
-  /// horizontal too), a piece per sector, with its plane at its middle and its horizon
-  /// averaged over its azimuths. Which way a post sees its terrain, for the lattice's
-  /// reads (PostLattice::perTerrainSeenAt).
-  PerSector<double> terrainBySector(const HorizonMap::Post& post, const Vec3& normal) const;
+  /// The projected solid angle (sr) of the terrain a post sees in each part of its
+  /// view (view_sectors.h): toward each of the map's azimuths, between its plane and the
+  /// map's true horizon (below the horizontal too), near up to the highest elevation of
+  /// the terrain within nearViewPosts posts (HorizonMap::nearTangent) and beyond above
+  /// it; each azimuth's wedge, half-way to its neighbours, in the sectors it lies in.
+  /// Which way and how far a post sees its terrain, for the lattice's reads
+  /// (PostLattice::readByPart).
+  PerViewPart<double> terrainByPart(const HorizonMap::Post& post, const Vec3& normal) const;
   const HorizonMap* map() const { return this->Map; }
 
   struct SinCos
@@ -186,7 +188,7 @@ private:
     std::vector<MapPiece> pieces; // piecesPerSector after each azimuth
     std::vector<MapPiece> sectors; // each azimuth to the next, whole
     /// Each azimuth's wedge, half-way to its neighbours: its halves' widths (radians)
-    /// and the sectors of the view they lie in (terrainBySector).
+    /// and the sectors of the view they lie in (terrainByPart).
     struct Wedge
     {
       double before, after;

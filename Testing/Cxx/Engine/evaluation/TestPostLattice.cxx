@@ -208,27 +208,29 @@ TEST(PostLattice, TellsWhetherACornerLiesOnTheTerrainsEdge)
   EXPECT_FALSE(inside.around(3, 3).edgeCorner);
 }
 
-// A post reads each sector's light per terrain seen, weighed by the share of its own
+// A post reads each part's light per terrain seen, weighed by the share of its own
 // terrain seen there: a post on a ridge that sees only the dim side reads the dim
 // side's light, not the mean of the lattice posts that see both sides.
-TEST(PostLattice, ReadsEachSectorByTheShareOfTerrainThePostSeesThere)
+TEST(PostLattice, ReadsEachPartByTheShareOfTerrainThePostSeesThere)
 {
   PostLattice lattice(9, 9, 4);
-  const int bright = sectorOf(1.0, 0.1), dim = sectorOf(-1.0, 0.1), unseen = sectorOf(0.1, -1.0);
-  ASSERT_NE(bright, dim);
-  ASSERT_NE(unseen, bright);
-  ASSERT_NE(unseen, dim);
-  // A corner that finds 10 W/m^2 from 0.1 of terrain on the bright side, `dimLight`
-  // from 0.1 on the dim side.
+  const int brightSector = sectorOf(1.0, 0.1), dimSector = sectorOf(-1.0, 0.1);
+  const int bright = viewPartOf(brightSector, false), dim = viewPartOf(dimSector, true);
+  const int unseen = viewPartOf(sectorOf(0.1, -1.0), false);
+  ASSERT_NE(brightSector, dimSector);
+  ASSERT_NE(unseen / 2, brightSector);
+  ASSERT_NE(unseen / 2, dimSector);
+  // A corner that finds 10 W/m^2 from 0.1 of terrain near it on the bright side,
+  // `dimLight` from 0.1 beyond on the dim side.
   auto twoSided = [&](double dimLight) {
     PostLattice::Gathered g;
     g.variance = 1.0;
     g.terrainSeen = 0.2;
     g.received = 100.0;
-    g.reflectedBySector[bright] = uniformSpectrum(10.0);
-    g.reflectedBySector[dim] = uniformSpectrum(dimLight);
+    g.reflectedByPart[bright] = uniformSpectrum(10.0);
+    g.reflectedByPart[dim] = uniformSpectrum(dimLight);
     g.reflected = uniformSpectrum(10.0 + dimLight);
-    g.terrainBySector[bright] = g.terrainBySector[dim] = 0.1;
+    g.terrainByPart[bright] = g.terrainByPart[dim] = 0.1;
     return g;
   };
   for (int j : { 0, 4, 8 })
@@ -237,29 +239,30 @@ TEST(PostLattice, ReadsEachSectorByTheShareOfTerrainThePostSeesThere)
   Spectrum whole;
   ASSERT_TRUE(lattice.perTerrainSeenAt(2.0, 3.0, whole));
   EXPECT_DOUBLE_EQ(whole[0], 55.0);
-  PostLattice::SectorRead read;
-  PerSector<double> shares{};
+  PostLattice::PartRead read;
+  PerViewPart<double> shares{};
   shares[dim] = 1.0;
-  ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, read));
   EXPECT_NEAR(read.perTerrainSeen[0], 10.0, 1e-12);
   EXPECT_EQ(read.whole, whole);
   EXPECT_EQ(read.spread, 0.0); // every corner found the same
   // The two reads differ by at most the terrain seen times the corners' width across
-  // their sectors.
-  EXPECT_DOUBLE_EQ(lattice.around(2, 3).sectorWidth, 90.0);
+  // their parts.
+  EXPECT_DOUBLE_EQ(lattice.around(2, 3).partWidth, 90.0);
   shares[dim] = 0.25, shares[bright] = 0.75;
-  ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, read));
   EXPECT_NEAR(read.perTerrainSeen[0], 0.75 * 100.0 + 0.25 * 10.0, 1e-12);
-  // A sector where no lattice post met terrain takes the whole's light per terrain seen.
-  shares = PerSector<double>{};
-  shares[unseen] = 0.5, shares[bright] = 0.5;
-  ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
+  // A part where no lattice post met terrain takes its sector's other part's light per
+  // terrain seen, and in a sector where none met terrain, the whole's.
+  shares = PerViewPart<double>{};
+  shares[unseen] = 0.5, shares[viewPartOf(brightSector, true)] = 0.5;
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, read));
   EXPECT_NEAR(read.perTerrainSeen[0], 0.5 * 55.0 + 0.5 * 100.0, 1e-12);
-  // The spread is each sector's between the corners, by the post's shares: one corner
+  // The spread is each part's between the corners, by the post's shares: one corner
   // finding twice the dim side's light per terrain seen spreads it by 10.
   lattice.set(4, 4, twoSided(2.0));
-  shares = PerSector<double>{};
+  shares = PerViewPart<double>{};
   shares[dim] = 0.5, shares[bright] = 0.5;
-  ASSERT_TRUE(lattice.readBySector(2.0, 3.0, shares, read));
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, read));
   EXPECT_NEAR(read.spread, 0.5 * 10.0, 1e-12);
 }

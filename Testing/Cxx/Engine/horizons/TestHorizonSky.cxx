@@ -147,11 +147,14 @@ TEST(HorizonSky, TellsTheSectorsAPostSeesTerrainIn)
   const Visibility rays(scene);
   const HorizonMap map(*valley);
   const HorizonSky horizons(rays, open, &map);
-  auto sum = [](const PerSector<double>& sectors) {
+  auto sum = [](const PerViewPart<double>& parts) {
     double total = 0.0;
-    for (const double s : sectors)
+    for (const double s : parts)
       total += s;
     return total;
+  };
+  auto inSector = [](const PerViewPart<double>& parts, int q) {
+    return parts[viewPartOf(q, false)] + parts[viewPartOf(q, true)];
   };
   EXPECT_EQ(sectorOf(1.0, 0.1), 0);
   EXPECT_EQ(sectorOf(0.1, 1.0), 1);
@@ -159,7 +162,7 @@ TEST(HorizonSky, TellsTheSectorsAPostSeesTerrainIn)
   EXPECT_EQ(sectorOf(1.0, -0.1), 7);
   const HorizonMap::Post bottom = map.find(valley->post(40, 40));
   ASSERT_TRUE(bottom);
-  const PerSector<double> level = horizons.terrainBySector(bottom, Vec3(0, 0, 1));
+  const PerViewPart<double> level = horizons.terrainByPart(bottom, Vec3(0, 0, 1));
   EXPECT_NEAR(sum(level) / pi, PostSky::at(bottom, Vec3(0, 0, 1), horizons, open).terrainSeen(), 0.01);
   // Toward azimuth phi the far side stands at elevation h, tan h = 0.5 |sin phi|: the
   // sector's terrain is the integral of sin^2 h / 2 over it.
@@ -172,20 +175,30 @@ TEST(HorizonSky, TellsTheSectorsAPostSeesTerrainIn)
       const double phi = (q + (k + 0.5) / steps) * 0.25 * pi, t2 = 0.25 * std::pow(std::sin(phi), 2);
       expected += 0.5 * t2 / (1.0 + t2) * 0.25 * pi / steps;
     }
-    EXPECT_NEAR(level[q], expected, 0.05 * expected) << q;
+    EXPECT_NEAR(inSector(level, q), expected, 0.05 * expected) << q;
+    // The walls rise from the bottom at the horizon's own elevation: all of it near.
+    EXPECT_LT(level[viewPartOf(q, true)], 1e-3 * expected) << q;
   }
   const Vec3 sideNormal = glm::normalize(Vec3(0.0, -0.5, 1.0));
   const HorizonMap::Post side = map.find(valley->post(40, 41));
   ASSERT_TRUE(side);
-  const PerSector<double> sloped = horizons.terrainBySector(side, sideNormal);
+  const PerViewPart<double> sloped = horizons.terrainByPart(side, sideNormal);
   const double seen = PostSky::at(side, sideNormal, horizons, open).terrainSeen();
   ASSERT_GT(seen, 0.05);
   EXPECT_NEAR(sum(sloped) / pi, seen, 0.08 * seen); // a piece's terms averaged over 45 deg
   for (const double x : { 1.0, -1.0 })
   {
-    EXPECT_LT(sloped[sectorOf(x, 0.1)] + sloped[sectorOf(0.1 * x, 1.0)], 0.01 * sum(sloped)) << x;
-    EXPECT_GT(sloped[sectorOf(0.1 * x, -1.0)], 0.1 * sum(sloped)) << x;
+    EXPECT_LT(inSector(sloped, sectorOf(x, 0.1)) + inSector(sloped, sectorOf(0.1 * x, 1.0)), 0.01 * sum(sloped)) << x;
+    EXPECT_GT(inSector(sloped, sectorOf(0.1 * x, -1.0)), 0.1 * sum(sloped)) << x;
   }
+  // Across the valley (-y), 10 m down to the bottom and up the far side: within 40 m
+  // (4 posts) the far side rises to tan 0.25 (10 m up at 40 m), beyond to tan 0.476
+  // at the grid's edge. Toward -y alone the near band, from the plane (tan -0.5) to
+  // atan 0.25, is 0.237 per radian of azimuth, the far band above it 0.135; the sector
+  // from -y to the next diagonal sees its far side farther off (near 0.143, far 0.099).
+  const int across = sectorOf(0.1, -1.0);
+  EXPECT_GT(sloped[viewPartOf(across, false)], 1.2 * sloped[viewPartOf(across, true)]);
+  EXPECT_GT(sloped[viewPartOf(across, true)], 0.5 * sloped[viewPartOf(across, false)]);
 }
 
 TEST(HorizonSky, AgreesWithBruteForceRaysOnRoughTerrainUnderAClearSky)
