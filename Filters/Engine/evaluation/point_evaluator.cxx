@@ -324,17 +324,21 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // Where the corners' sectors differ too little to matter (most posts of gentle
   // terrain, which see little of it), the post reads the whole and errs by the width
   // across their parts instead: its shares of terrain took a third of their points'
-  // time. (Deciding by that width too sent twice the posts to their shares, whose near
-  // terrain costs more than their sectors; docs/tuning.md.)
-  const double partWidth = terrainSeen * around.partWidth;
-  const bool byPart = terrainSeen * around.sectorWidth > Tuning::latticeSectorWidthShare * limit;
+  // time. Likewise a post reads by sector alone where the corners' near and far parts
+  // differ too little to matter, and errs by that difference too: its near terrain
+  // costs more than its sectors (docs/tuning.md).
+  const double allowed = Tuning::latticeSectorWidthShare * limit;
+  const bool bySector = terrainSeen * around.sectorWidth > allowed;
+  const bool byDistance = bySector && terrainSeen * around.distanceWidth > allowed;
   PostLattice::PartRead read;
-  if (!this->Lattice->readByPart(i, j, byPart ? this->terrainSharesAt(post, normal) : PerViewPart<double>{}, read))
+  if (!this->Lattice->readByPart(
+        i, j, bySector ? this->terrainSharesAt(post, normal, byDistance) : PerViewPart<double>{}, byDistance, read))
     return false;
-  const double spread = byPart ? std::max(wholeSpread, terrainSeen * read.spread) +
-      terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole))
-                               : wholeSpread + partWidth;
-  const Spectrum& perTerrainSeen = byPart ? read.perTerrainSeen : read.whole;
+  const double spread = bySector ? std::max(wholeSpread, terrainSeen * read.spread) +
+      terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole)) +
+      (byDistance ? 0.0 : terrainSeen * around.distanceWidth)
+                                 : wholeSpread + terrainSeen * around.partWidth;
+  const Spectrum& perTerrainSeen = bySector ? read.perTerrainSeen : read.whole;
   for (int band = 0; band < maxBands; ++band)
     result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * perTerrainSeen[band]);
   result.irradiance[SkyLight] = sky.irradiance;
@@ -347,9 +351,10 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   return true;
 }
 
-PerViewPart<double> PointEvaluator::terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal) const
+PerViewPart<double> PointEvaluator::terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal, bool nearAndFar) const
 {
-  PerViewPart<double> shares = this->Horizons ? this->Horizons->terrainByPart(post, normal) : PerViewPart<double>{};
+  PerViewPart<double> shares =
+    this->Horizons ? this->Horizons->terrainByPart(post, normal, nearAndFar) : PerViewPart<double>{};
   double sum = 0.0;
   for (const double share : shares)
     sum += share;

@@ -164,8 +164,9 @@ private:
   /// split).
   void gatherLatticePosts(const TerrainPatch& root, bool hornNormals, bool firstPass, PostLattice& lattice) const;
   /// The shares of the terrain a post sees in each part of its view (summing to 1;
-  /// even where its horizons show none): what its read weighs the lattice's by.
-  PerViewPart<double> terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal) const;
+  /// even where its horizons show none; HorizonSky::terrainByPart): what its read
+  /// weighs the lattice's by.
+  PerViewPart<double> terrainSharesAt(const HorizonMap::Post& post, const Vec3& normal, bool nearAndFar) const;
   /// Post (i, j), between gathered lattice posts that agree on the radiosity of the
   /// terrain they see, takes its light from surfaces from them and its sky from its
   /// horizons, without a gather: true, with `result` (its sun already in it) filled.

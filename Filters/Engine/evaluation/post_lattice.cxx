@@ -35,7 +35,7 @@ PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* spli
   const std::size_t posts = this->Held.count();
   this->Variance.assign(posts, -1.0);
   this->Found.resize(posts);
-  this->Ranges.assign(posts, { 0.0, 0.0, 0.0, 0.0 });
+  this->Ranges.assign(posts, { 0.0, 0.0, 0.0, 0.0, 0.0 });
   this->Received.assign(posts, 0.0);
   this->Edge.assign(posts, 0);
   const std::size_t cells = this->HeldCells.empty() ? 0
@@ -203,7 +203,7 @@ void PostLattice::findRanges(std::size_t k)
   // part and its whole's are both weighted means of these.
   const Beyond& found = this->Found[k];
   const double infinity = std::numeric_limits<double>::infinity();
-  std::array<double, 4> range{ infinity, -infinity, infinity, -infinity };
+  std::array<double, 5> range{ infinity, -infinity, infinity, -infinity, 0.0 };
   auto widen = [&](double* leastAndLargest, double perTerrainSeen) {
     leastAndLargest[0] = std::min(leastAndLargest[0], perTerrainSeen);
     leastAndLargest[1] = std::max(leastAndLargest[1], perTerrainSeen);
@@ -211,17 +211,21 @@ void PostLattice::findRanges(std::size_t k)
   for (int q = 0; q < viewSectors; ++q)
   {
     Beyond sector{};
+    std::array<double, 2> byDistance{ -1.0, -1.0 };
     for (const bool beyond : { false, true })
     {
       const std::size_t start = partStart(viewPartOf(q, beyond));
       if (!(found[start + terrainSeenSlot] > 0.0))
         continue;
-      widen(&range[0], perTerrainSeenIn(found, start));
+      byDistance[beyond ? 1 : 0] = perTerrainSeenIn(found, start);
+      widen(&range[0], byDistance[beyond ? 1 : 0]);
       for (std::size_t slot = 0; slot < slots; ++slot)
         sector[slot] += found[start + slot];
     }
     if (sector[terrainSeenSlot] > 0.0)
       widen(&range[2], perTerrainSeenIn(sector, 0));
+    if (byDistance[0] >= 0.0 && byDistance[1] >= 0.0)
+      range[4] = std::max(range[4], std::abs(byDistance[1] - byDistance[0]));
   }
   for (int r = 0; r < 4; r += 2)
     if (!(range[r + 1] >= range[r]))
@@ -254,6 +258,7 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
   result.leastPerTerrainSeen = std::numeric_limits<double>::infinity();
   const double infinity = std::numeric_limits<double>::infinity();
   std::array<double, 4> ranges{ infinity, -infinity, infinity, -infinity };
+  double distanceWidth = 0.0;
   this->forEachCorner(cell, [&](std::size_t k) {
     if (this->Variance[k] < 0.0)
       return;
@@ -266,7 +271,9 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
     result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
     for (int r = 0; r < 4; r += 2)
       ranges[r] = std::min(ranges[r], this->Ranges[k][r]), ranges[r + 1] = std::max(ranges[r + 1], this->Ranges[k][r + 1]);
+    distanceWidth = std::max(distanceWidth, this->Ranges[k][4]);
   });
+  result.distanceWidth = distanceWidth;
   result.partWidth = ranges[1] >= ranges[0] ? ranges[1] - ranges[0] : 0.0;
   result.sectorWidth = ranges[3] >= ranges[2] ? ranges[3] - ranges[2] : 0.0;
   if (result.leastPerTerrainSeen > result.largestPerTerrainSeen) // no corner sees terrain
@@ -294,13 +301,14 @@ bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
 bool PostLattice::perTerrainSeenAt(double u, double v, Spectrum& reflected) const
 {
   PartRead read;
-  if (!this->readByPart(u, v, PerViewPart<double>{}, read))
+  if (!this->readByPart(u, v, PerViewPart<double>{}, false, read))
     return false;
   reflected = read.whole;
   return true;
 }
 
-bool PostLattice::readByPart(double u, double v, const PerViewPart<double>& shares, PartRead& read) const
+bool PostLattice::readByPart(
+  double u, double v, const PerViewPart<double>& shares, bool byDistance, PartRead& read) const
 {
   // The whole's: a ratio of the corners' sums (each weighted by the terrain it sees)
   // rather than a mean of their ratios: a corner that sees next to no terrain (an open
@@ -323,62 +331,77 @@ bool PostLattice::readByPart(double u, double v, const PerViewPart<double>& shar
   read = PartRead{};
   for (int band = 0; band < maxBands; ++band)
     read.whole[band] = sum(band) / terrainSeen;
-  // The corners' sums in each part the post sees terrain in (and its sector's other
-  // part). The far parts of a view are much the same for the lattice's posts around:
-  // read from 4 x 4 of them, their noise (few of a post's rays go far) is a quarter.
+  // The far parts of a view are much the same for the lattice's posts around: read
+  // from 4 x 4 of them, their noise (few of a post's rays go far) is a quarter.
   std::array<WeightedCorner, 16> wider;
   double widerTotal = 0.0;
   bool seesFar = false;
-  for (int q = 0; q < viewSectors; ++q)
+  for (int q = 0; q < viewSectors && byDistance; ++q)
     seesFar = seesFar || shares[viewPartOf(q, true)] > 0.0;
   const int widerCount = seesFar ? this->widerCornersAt(u, v, wider, widerTotal) : 0;
-  std::array<std::array<double, slots>, viewParts> partSums;
-  for (int part = 0; part < viewParts; ++part)
-  {
-    if (!(shares[part] > 0.0 || shares[part ^ 1] > 0.0))
-      continue;
+  auto partSums = [&](int part, std::array<double, slots>& sums) {
     const std::size_t start = partStart(part);
-    const bool fromWider = part % 2 == 1 && widerCount > 0;
+    if (!(part % 2 == 1 && widerCount > 0))
+    {
+      for (std::size_t slot = 0; slot < slots; ++slot)
+        sums[slot] = sum(start + slot);
+      return;
+    }
+    sums = {};
+    for (int n = 0; n < widerCount; ++n)
+      for (std::size_t slot = 0; slot < slots; ++slot)
+        sums[slot] += wider[n].weight * this->Found[wider[n].k][start + slot];
+    for (double& value : sums)
+      value /= widerTotal;
+  };
+  for (int q = 0; q < viewSectors; ++q)
+  {
+    const int nearPart = viewPartOf(q, false);
+    if (!(shares[nearPart] > 0.0 || shares[nearPart + 1] > 0.0))
+      continue;
+    std::array<double, slots> near, far;
+    partSums(nearPart, near);
+    partSums(nearPart + 1, far);
+    std::array<double, slots> sector;
     for (std::size_t slot = 0; slot < slots; ++slot)
+      sector[slot] = near[slot] + far[slot];
+    // Each part by its own light per terrain seen where a corner met terrain there,
+    // else its sector's, else the whole's; without the distance, the sector's.
+    for (const bool beyond : { false, true })
     {
-      double value = 0.0;
-      if (fromWider)
-      {
-        for (int n = 0; n < widerCount; ++n)
-          value += wider[n].weight * this->Found[wider[n].k][start + slot];
-        partSums[part][slot] = value / widerTotal;
-      }
-      else
-        partSums[part][slot] = sum(start + slot);
-    }
-  }
-  for (int part = 0; part < viewParts; ++part)
-  {
-    if (!(shares[part] > 0.0))
-      continue;
-    const std::size_t start = partStart(part);
-    // Where no corner met terrain in this part, its sector's (both parts), else the whole's.
-    const std::array<double, slots>& own = partSums[part];
-    const std::array<double, slots>& other = partSums[part ^ 1];
-    const double seen = own[terrainSeenSlot], sectorSeen = seen + other[terrainSeenSlot];
-    for (int band = 0; band < maxBands; ++band)
-      read.perTerrainSeen[band] += shares[part] *
-        (seen > minimumTerrainSeen ? own[band] / seen
-            : sectorSeen > minimumTerrainSeen ? (own[band] + other[band]) / sectorSeen
-                                              : read.whole[band]);
-    // The spread between the corners that met terrain there.
-    double largest = -std::numeric_limits<double>::infinity(), least = std::numeric_limits<double>::infinity();
-    for (int n = 0; n < count; ++n)
-    {
-      const Beyond& found = this->Found[corners[n].k];
-      if (!(found[start + terrainSeenSlot] > minimumTerrainSeen))
+      const double share = shares[nearPart + (beyond ? 1 : 0)];
+      if (!(share > 0.0))
         continue;
-      const double perTerrainSeen = perTerrainSeenIn(found, start);
-      largest = std::max(largest, perTerrainSeen);
-      least = std::min(least, perTerrainSeen);
+      const std::array<double, slots>& own = !byDistance ? sector : beyond ? far : near;
+      for (int band = 0; band < maxBands; ++band)
+        read.perTerrainSeen[band] += share *
+          (own[terrainSeenSlot] > minimumTerrainSeen          ? own[band] / own[terrainSeenSlot]
+              : sector[terrainSeenSlot] > minimumTerrainSeen ? sector[band] / sector[terrainSeenSlot]
+                                                             : read.whole[band]);
+      // The spread between the corners that met terrain there.
+      double largest = -std::numeric_limits<double>::infinity(), least = std::numeric_limits<double>::infinity();
+      for (int n = 0; n < count; ++n)
+      {
+        const Beyond& found = this->Found[corners[n].k];
+        const double* part = &found[partStart(nearPart + (beyond ? 1 : 0))];
+        const double* other = &found[partStart(nearPart + (beyond ? 0 : 1))];
+        double seen = part[terrainSeenSlot], light = *std::max_element(part, part + maxBands);
+        if (!byDistance) // both parts together
+        {
+          seen += other[terrainSeenSlot];
+          light = 0.0;
+          for (int band = 0; band < maxBands; ++band)
+            light = std::max(light, part[band] + other[band]);
+        }
+        if (!(seen > minimumTerrainSeen))
+          continue;
+        const double perTerrainSeen = light / seen;
+        largest = std::max(largest, perTerrainSeen);
+        least = std::min(least, perTerrainSeen);
+      }
+      if (largest >= least)
+        read.spread += share * (largest - least);
     }
-    if (largest >= least)
-      read.spread += shares[part] * (largest - least);
   }
   return true;
 }

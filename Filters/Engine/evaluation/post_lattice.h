@@ -103,6 +103,10 @@ public:
     /// The same across the sectors of their views (both parts of each together): how
     /// much which way a post sees its terrain can matter.
     double sectorWidth = 0.0;
+    /// The largest difference between a corner's near and far parts of a sector (where
+    /// it met terrain in both): how much how far a post sees its terrain can matter. A
+    /// read by sector and by part differ by at most the post's terrain seen times this.
+    double distanceWidth = 0.0;
     bool edgeCorner = false;
   };
   Around around(int i, int j) const;
@@ -117,17 +121,19 @@ public:
   bool perTerrainSeenAt(double u, double v, Spectrum& reflected) const;
   /// What a post that sees `shares` of its terrain in each part of its view (summing
   /// to 1; HorizonSky::terrainByPart) reads: each part's light per terrain seen (the
-  /// corners' sums of light over their sums of terrain met there; a part where none
-  /// met terrain takes its sector's, else the whole's) weighed by its share; the
-  /// whole's, as perTerrainSeenAt; and what the first may err by, as Around's spread
-  /// for the whole: in each part the spread of the corners' light per terrain seen
-  /// there (largest band), weighed by its share. False where perTerrainSeenAt is.
+  /// corners' sums of light over their sums of terrain met there, the far parts' over
+  /// 4 x 4 lattice posts; a part where none met terrain takes its sector's, else the
+  /// whole's) weighed by its share; without `byDistance`, each sector's (both parts
+  /// together) by its share of both. Also the whole's, as perTerrainSeenAt; and what
+  /// the first may err by, as Around's spread for the whole: in each part (or sector)
+  /// the spread of the corners' light per terrain seen there (largest band), weighed
+  /// by its share. False where perTerrainSeenAt is.
   struct PartRead
   {
     Spectrum perTerrainSeen{}, whole{};
     double spread = 0.0;
   };
-  bool readByPart(double u, double v, const PerViewPart<double>& shares, PartRead& read) const;
+  bool readByPart(double u, double v, const PerViewPart<double>& shares, bool byDistance, PartRead& read) const;
 
 private:
   /// Where lattice post (li, lj) is in the held values; throws unless held.
@@ -203,8 +209,8 @@ private:
   std::vector<double> Variance;
   std::vector<Beyond> Found;
   // The least and largest light per terrain seen (largest band) over the parts of its
-  // view where the post met terrain, then over the sectors.
-  std::vector<std::array<double, 4>> Ranges;
+  // view where the post met terrain, then over the sectors; then Around::distanceWidth's.
+  std::vector<std::array<double, 5>> Ranges;
   std::vector<double> Received;
   std::vector<std::uint8_t> Edge; // Gathered::edge
   std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells

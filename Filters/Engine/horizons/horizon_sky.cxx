@@ -486,7 +486,7 @@ HorizonSky::ElevationTerms HorizonSky::lowTerms(double u) const
   return { 0.5 * u + 0.25 * sine, 0.25 * versine };
 }
 
-PerViewPart<double> HorizonSky::terrainByPart(const HorizonMap::Post& post, const Vec3& normal) const
+PerViewPart<double> HorizonSky::terrainByPart(const HorizonMap::Post& post, const Vec3& normal, bool nearAndFar) const
 {
   PerViewPart<double> result{};
   const MapAzimuths& table = this->MapTable;
@@ -511,9 +511,9 @@ PerViewPart<double> HorizonSky::terrainByPart(const HorizonMap::Post& post, cons
       return top > plane ? toward * (terms.along - 0.5 * plane) + normal.z * terms.up : 0.0;
     };
     const double whole = band(horizon);
-    if (!(whole > 0.0))
+    if (!(whole > 0.0) || !nearAndFar)
     {
-      nearBands[a] = farBands[a] = 0.0;
+      nearBands[a] = std::max(0.0, whole), farBands[a] = 0.0;
       continue;
     }
     const double nearTangent = this->Map->nearTangent(post, a, nearDistance);

@@ -82,9 +82,10 @@ public:
   /// map's true horizon (below the horizontal too), near up to the highest elevation of
   /// the terrain within nearViewPosts posts (HorizonMap::nearTangent) and beyond above
   /// it; each azimuth's wedge, half-way to its neighbours, in the sectors it lies in.
+  /// Without `nearAndFar`, each sector's whole in its near part (no terrain walked).
   /// Which way and how far a post sees its terrain, for the lattice's reads
   /// (PostLattice::readByPart).
-  PerViewPart<double> terrainByPart(const HorizonMap::Post& post, const Vec3& normal) const;
+  PerViewPart<double> terrainByPart(const HorizonMap::Post& post, const Vec3& normal, bool nearAndFar = true) const;
   const HorizonMap* map() const { return this->Map; }
 
   struct SinCos

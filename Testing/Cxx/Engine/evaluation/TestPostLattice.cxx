@@ -242,7 +242,7 @@ TEST(PostLattice, ReadsEachPartByTheShareOfTerrainThePostSeesThere)
   PostLattice::PartRead read;
   PerViewPart<double> shares{};
   shares[dim] = 1.0;
-  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, read));
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, true, read));
   EXPECT_NEAR(read.perTerrainSeen[0], 10.0, 1e-12);
   EXPECT_EQ(read.whole, whole);
   EXPECT_EQ(read.spread, 0.0); // every corner found the same
@@ -250,19 +250,53 @@ TEST(PostLattice, ReadsEachPartByTheShareOfTerrainThePostSeesThere)
   // their parts.
   EXPECT_DOUBLE_EQ(lattice.around(2, 3).partWidth, 90.0);
   shares[dim] = 0.25, shares[bright] = 0.75;
-  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, read));
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, true, read));
   EXPECT_NEAR(read.perTerrainSeen[0], 0.75 * 100.0 + 0.25 * 10.0, 1e-12);
   // A part where no lattice post met terrain takes its sector's other part's light per
   // terrain seen, and in a sector where none met terrain, the whole's.
   shares = PerViewPart<double>{};
   shares[unseen] = 0.5, shares[viewPartOf(brightSector, true)] = 0.5;
-  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, read));
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, true, read));
   EXPECT_NEAR(read.perTerrainSeen[0], 0.5 * 55.0 + 0.5 * 100.0, 1e-12);
   // The spread is each part's between the corners, by the post's shares: one corner
   // finding twice the dim side's light per terrain seen spreads it by 10.
   lattice.set(4, 4, twoSided(2.0));
   shares = PerViewPart<double>{};
   shares[dim] = 0.5, shares[bright] = 0.5;
-  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, read));
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, true, read));
   EXPECT_NEAR(read.spread, 0.5 * 10.0, 1e-12);
+}
+
+// Near and far in one sector: a post that sees only the far terrain reads the far
+// part's light; by sector alone, the sector's (both parts together), and the two
+// differ by at most the corners' distance width.
+TEST(PostLattice, ReadsTheNearAndFarPartsOfASectorApart)
+{
+  PostLattice lattice(9, 9, 4);
+  const int q = sectorOf(1.0, 0.1), near = viewPartOf(q, false), far = viewPartOf(q, true);
+  for (int j : { 0, 4, 8 })
+    for (int i : { 0, 4, 8 })
+    {
+      PostLattice::Gathered g;
+      g.variance = 1.0;
+      g.terrainSeen = 0.4;
+      g.received = 100.0;
+      g.reflectedByPart[near] = uniformSpectrum(30.0); // 100 per terrain seen from 0.3
+      g.reflectedByPart[far] = uniformSpectrum(2.0);   // 20 from 0.1
+      g.reflected = uniformSpectrum(32.0);
+      g.terrainByPart[near] = 0.3, g.terrainByPart[far] = 0.1;
+      lattice.set(i, j, g);
+    }
+  EXPECT_DOUBLE_EQ(lattice.around(2, 3).distanceWidth, 80.0);
+  EXPECT_DOUBLE_EQ(lattice.around(2, 3).sectorWidth, 0.0); // one sector only
+  PostLattice::PartRead read;
+  PerViewPart<double> shares{};
+  shares[far] = 1.0;
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, true, read));
+  EXPECT_NEAR(read.perTerrainSeen[0], 20.0, 1e-12);
+  shares = PerViewPart<double>{};
+  shares[near] = 1.0; // the sector's whole share, as terrainByPart gives it without the distance
+  ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, false, read));
+  EXPECT_NEAR(read.perTerrainSeen[0], 32.0 / 0.4, 1e-12);
+  EXPECT_LE(std::abs(read.perTerrainSeen[0] - 20.0), lattice.around(2, 3).distanceWidth);
 }
