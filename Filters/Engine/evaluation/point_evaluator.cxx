@@ -326,18 +326,30 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // across their parts instead: its shares of terrain took a third of their points'
   // time. Likewise a post reads by sector alone where the corners' near and far parts
   // differ too little to matter, and errs by that difference too: its near terrain
-  // costs more than its sectors (docs/tuning.md).
-  const double allowed = Tuning::latticeSectorWidthShare * limit;
-  const bool bySector = terrainSeen * around.sectorWidth > allowed;
-  const bool byDistance = bySector && terrainSeen * around.distanceWidth > allowed;
+  // costs more than its sectors.
+  const bool bySector = terrainSeen * around.sectorWidth > Tuning::latticeSectorWidthShare * limit;
+  bool byDistance = bySector && terrainSeen * around.distanceWidth > Tuning::latticeDistanceWidthShare * limit;
   PostLattice::PartRead read;
-  if (!this->Lattice->readByPart(
-        i, j, bySector ? this->terrainSharesAt(post, normal, byDistance) : PerViewPart<double>{}, byDistance, read))
+  double spread = 0.0;
+  auto readAndSpread = [&]() {
+    if (!this->Lattice->readByPart(
+          i, j, bySector ? this->terrainSharesAt(post, normal, byDistance) : PerViewPart<double>{}, byDistance, read))
+      return false;
+    spread = bySector ? std::max(wholeSpread, terrainSeen * read.spread) +
+        terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole)) +
+        (byDistance ? 0.0 : terrainSeen * around.distanceWidth)
+                      : wholeSpread + terrainSeen * around.partWidth;
+    return true;
+  };
+  if (!readAndSpread())
     return false;
-  const double spread = bySector ? std::max(wholeSpread, terrainSeen * read.spread) +
-      terrainSeen * std::abs(largestBand(read.perTerrainSeen) - largestBand(read.whole)) +
-      (byDistance ? 0.0 : terrainSeen * around.distanceWidth)
-                                 : wholeSpread + terrainSeen * around.partWidth;
+  // By sector, it may miss its target by what the skipped parts could change: then by part.
+  if (bySector && !byDistance && spread > limit && around.distanceWidth > 0.0)
+  {
+    byDistance = true;
+    if (!readAndSpread())
+      return false;
+  }
   const Spectrum& perTerrainSeen = bySector ? read.perTerrainSeen : read.whole;
   for (int band = 0; band < maxBands; ++band)
     result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * perTerrainSeen[band]);

@@ -74,9 +74,22 @@ bool PostLattice::seesTerrain(std::size_t k) const
   return this->terrainSeen(k) > minimumTerrainSeen;
 }
 
-double PostLattice::perTerrainSeenIn(const Beyond& found, std::size_t start)
+double PostLattice::perTerrainSeenIn(const double* part)
 {
-  return *std::max_element(&found[start], &found[start] + maxBands) / found[start + terrainSeenSlot];
+  return *std::max_element(part, part + maxBands) / part[terrainSeenSlot];
+}
+
+PostLattice::Slots PostLattice::partOf(std::size_t k, int part) const
+{
+  const Beyond& found = this->Found[k];
+  const int q = part / 2;
+  Slots result;
+  for (std::size_t slot = 0; slot < slots; ++slot)
+    result[slot] = part % 2 == 1 ? found[farStart(q) + slot] : found[sectorStart(q) + slot] - found[farStart(q) + slot];
+  // A near part of none but the far's rounding is none.
+  if (part % 2 == 0 && !(result[terrainSeenSlot] > 1e-9 * found[sectorStart(q) + terrainSeenSlot]))
+    result = Slots{};
+  return result;
 }
 
 void PostLattice::refine(double allowedSpread, double allowedFloor)
@@ -186,11 +199,17 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   for (int band = 0; band < maxBands; ++band)
     found[band] = gathered.reflected[band];
   found[terrainSeenSlot] = std::max(0.0, gathered.terrainSeen);
-  for (int part = 0; part < viewParts; ++part)
+  for (int q = 0; q < viewSectors; ++q)
   {
+    const int near = viewPartOf(q, false), far = viewPartOf(q, true);
     for (int band = 0; band < maxBands; ++band)
-      found[partStart(part) + band] = gathered.reflectedByPart[part][band];
-    found[partStart(part) + terrainSeenSlot] = std::max(0.0, gathered.terrainByPart[part]);
+    {
+      found[sectorStart(q) + band] = gathered.reflectedByPart[near][band] + gathered.reflectedByPart[far][band];
+      found[farStart(q) + band] = gathered.reflectedByPart[far][band];
+    }
+    const double nearSeen = std::max(0.0, gathered.terrainByPart[near]), farSeen = std::max(0.0, gathered.terrainByPart[far]);
+    found[sectorStart(q) + terrainSeenSlot] = nearSeen + farSeen;
+    found[farStart(q) + terrainSeenSlot] = farSeen;
   }
   this->Received[k] = gathered.received;
   this->Edge[k] = gathered.edge ? 1 : 0;
@@ -210,20 +229,18 @@ void PostLattice::findRanges(std::size_t k)
   };
   for (int q = 0; q < viewSectors; ++q)
   {
-    Beyond sector{};
+    if (!(found[sectorStart(q) + terrainSeenSlot] > 0.0))
+      continue;
+    widen(&range[2], perTerrainSeenIn(&found[sectorStart(q)]));
     std::array<double, 2> byDistance{ -1.0, -1.0 };
     for (const bool beyond : { false, true })
     {
-      const std::size_t start = partStart(viewPartOf(q, beyond));
-      if (!(found[start + terrainSeenSlot] > 0.0))
+      const Slots part = this->partOf(k, viewPartOf(q, beyond));
+      if (!(part[terrainSeenSlot] > 0.0))
         continue;
-      byDistance[beyond ? 1 : 0] = perTerrainSeenIn(found, start);
+      byDistance[beyond ? 1 : 0] = perTerrainSeenIn(part.data());
       widen(&range[0], byDistance[beyond ? 1 : 0]);
-      for (std::size_t slot = 0; slot < slots; ++slot)
-        sector[slot] += found[start + slot];
     }
-    if (sector[terrainSeenSlot] > 0.0)
-      widen(&range[2], perTerrainSeenIn(sector, 0));
     if (byDistance[0] >= 0.0 && byDistance[1] >= 0.0)
       range[4] = std::max(range[4], std::abs(byDistance[1] - byDistance[0]));
   }
@@ -266,7 +283,7 @@ PostLattice::Around PostLattice::aroundCell(const Cell& cell) const
     result.edgeCorner = result.edgeCorner || this->Edge[k] != 0;
     if (!this->seesTerrain(k))
       return; // tells nothing per terrain seen
-    const double largest = perTerrainSeenIn(this->Found[k], 0);
+    const double largest = perTerrainSeenIn(this->Found[k].data());
     result.largestPerTerrainSeen = std::max(result.largestPerTerrainSeen, largest);
     result.leastPerTerrainSeen = std::min(result.leastPerTerrainSeen, largest);
     for (int r = 0; r < 4; r += 2)
@@ -339,32 +356,39 @@ bool PostLattice::readByPart(
   for (int q = 0; q < viewSectors && byDistance; ++q)
     seesFar = seesFar || shares[viewPartOf(q, true)] > 0.0;
   const int widerCount = seesFar ? this->widerCornersAt(u, v, wider, widerTotal) : 0;
-  auto partSums = [&](int part, std::array<double, slots>& sums) {
-    const std::size_t start = partStart(part);
-    if (!(part % 2 == 1 && widerCount > 0))
-    {
-      for (std::size_t slot = 0; slot < slots; ++slot)
-        sums[slot] = sum(start + slot);
-      return;
-    }
-    sums = {};
-    for (int n = 0; n < widerCount; ++n)
-      for (std::size_t slot = 0; slot < slots; ++slot)
-        sums[slot] += wider[n].weight * this->Found[wider[n].k][start + slot];
-    for (double& value : sums)
-      value /= widerTotal;
+  auto sums = [&](std::size_t start, Slots& result) {
+    for (std::size_t slot = 0; slot < slots; ++slot)
+      result[slot] = sum(start + slot);
   };
   for (int q = 0; q < viewSectors; ++q)
   {
     const int nearPart = viewPartOf(q, false);
     if (!(shares[nearPart] > 0.0 || shares[nearPart + 1] > 0.0))
       continue;
-    std::array<double, slots> near, far;
-    partSums(nearPart, near);
-    partSums(nearPart + 1, far);
-    std::array<double, slots> sector;
-    for (std::size_t slot = 0; slot < slots; ++slot)
-      sector[slot] = near[slot] + far[slot];
+    Slots sector, near{}, far{};
+    sums(sectorStart(q), sector);
+    if (byDistance)
+    {
+      // The near part: the sector's less the far, both between the corners; the far
+      // part over the wider lattice posts where there are any; the sector, as read,
+      // both.
+      sums(farStart(q), far);
+      for (std::size_t slot = 0; slot < slots; ++slot)
+        near[slot] = sector[slot] - far[slot];
+      if (!(near[terrainSeenSlot] > 1e-9 * sector[terrainSeenSlot]))
+        near = Slots{};
+      if (widerCount > 0)
+      {
+        far = Slots{};
+        for (int n = 0; n < widerCount; ++n)
+          for (std::size_t slot = 0; slot < slots; ++slot)
+            far[slot] += wider[n].weight * this->Found[wider[n].k][farStart(q) + slot];
+        for (double& value : far)
+          value /= widerTotal;
+      }
+      for (std::size_t slot = 0; slot < slots; ++slot)
+        sector[slot] = near[slot] + far[slot];
+    }
     // Each part by its own light per terrain seen where a corner met terrain there,
     // else its sector's, else the whole's; without the distance, the sector's.
     for (const bool beyond : { false, true })
@@ -372,7 +396,7 @@ bool PostLattice::readByPart(
       const double share = shares[nearPart + (beyond ? 1 : 0)];
       if (!(share > 0.0))
         continue;
-      const std::array<double, slots>& own = !byDistance ? sector : beyond ? far : near;
+      const Slots& own = !byDistance ? sector : beyond ? far : near;
       for (int band = 0; band < maxBands; ++band)
         read.perTerrainSeen[band] += share *
           (own[terrainSeenSlot] > minimumTerrainSeen          ? own[band] / own[terrainSeenSlot]
@@ -382,20 +406,11 @@ bool PostLattice::readByPart(
       double largest = -std::numeric_limits<double>::infinity(), least = std::numeric_limits<double>::infinity();
       for (int n = 0; n < count; ++n)
       {
-        const Beyond& found = this->Found[corners[n].k];
-        const double* part = &found[partStart(nearPart + (beyond ? 1 : 0))];
-        const double* other = &found[partStart(nearPart + (beyond ? 0 : 1))];
-        double seen = part[terrainSeenSlot], light = *std::max_element(part, part + maxBands);
-        if (!byDistance) // both parts together
-        {
-          seen += other[terrainSeenSlot];
-          light = 0.0;
-          for (int band = 0; band < maxBands; ++band)
-            light = std::max(light, part[band] + other[band]);
-        }
-        if (!(seen > minimumTerrainSeen))
+        const Slots part = byDistance ? this->partOf(corners[n].k, nearPart + (beyond ? 1 : 0)) : Slots{};
+        const double* values = byDistance ? part.data() : &this->Found[corners[n].k][sectorStart(q)];
+        if (!(values[terrainSeenSlot] > minimumTerrainSeen))
           continue;
-        const double perTerrainSeen = light / seen;
+        const double perTerrainSeen = perTerrainSeenIn(values);
         largest = std::max(largest, perTerrainSeen);
         least = std::min(least, perTerrainSeen);
       }

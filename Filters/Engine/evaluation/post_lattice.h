@@ -191,15 +191,20 @@ private:
   /// Finds Ranges[k] from Found[k].
   void findRanges(std::size_t k);
   // Per lattice post: the light from surfaces it found (maxBands), then the terrain it
-  // sees; then the same for each part of the view.
+  // sees; then the same for each sector of the view (both parts), then for each
+  // sector's far part (its near part is the sector's less that): a read by sector
+  // touches what it did before the parts.
   static constexpr std::size_t slots = maxBands + 1;
-  using Beyond = std::array<double, slots * (1 + viewParts)>;
+  using Slots = std::array<double, slots>;
+  using Beyond = std::array<double, slots * (1 + 2 * viewSectors)>;
   static constexpr std::size_t terrainSeenSlot = maxBands;
-  static constexpr std::size_t partStart(int part) { return slots * (1 + part); }
+  static constexpr std::size_t sectorStart(int q) { return slots * (1 + q); }
+  static constexpr std::size_t farStart(int q) { return slots * (1 + viewSectors + q); }
   static constexpr double minimumTerrainSeen = 1e-6;
-  /// A lattice post's light per terrain seen (largest band) in what starts at `start`
-  /// (0: the whole view, or partStart(part)), where it saw terrain.
-  static double perTerrainSeenIn(const Beyond& found, std::size_t start);
+  /// Light per terrain seen (largest band) of a part's slots, where it saw terrain.
+  static double perTerrainSeenIn(const double* part);
+  /// Lattice post k's slots of part `part` (view_sectors.h's numbering).
+  Slots partOf(std::size_t k, int part) const;
 
   int Step, Nx, Ny; // lattice posts each way
   int CoarseX, CoarseY; // coarse cells each way

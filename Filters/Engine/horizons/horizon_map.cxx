@@ -478,7 +478,7 @@ double HorizonMap::postSpacing() const
   return std::sqrt(std::abs(this->Ux * this->Vy - this->Vx * this->Uy));
 }
 
-double HorizonMap::nearTangent(const Post& post, int a, double distance) const
+double HorizonMap::nearTangent(const Post& post, int a, double distance, double enough) const
 {
   const TerrainGrid& t = this->Terrain;
   const int nx = t.postsX(), ny = t.postsY();
@@ -502,6 +502,8 @@ double HorizonMap::nearTangent(const Post& post, int a, double distance) const
                                   : height(i + 1, j + 1) + (1.0 - s) * (height(i, j + 1) - height(i + 1, j + 1)) +
         (1.0 - w) * (height(i + 1, j) - height(i + 1, j + 1));
     highest = std::max(highest, (z - z0) / r);
+    if (highest >= enough)
+      break;
   }
   return highest;
 }

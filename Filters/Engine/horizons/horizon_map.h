@@ -120,8 +120,9 @@ public:
   double postSpacing() const;
   /// tan of the highest elevation, seen from `post`, of the terrain toward azimuth a
   /// within `distance` (m, horizontally): the grid's triangles sampled every post
-  /// spacing, up to the grid's edge or a missing cell; -inf where none is sampled.
-  double nearTangent(const Post& post, int a, double distance) const;
+  /// spacing, up to the grid's edge or a missing cell, or until one reaches `enough`;
+  /// -inf where none is sampled.
+  double nearTangent(const Post& post, int a, double distance, double enough) const;
   /// Where a post's horizons lie in the map (its window's order), for elevationAt.
   std::size_t cellOf(const Post& post) const
   {

@@ -507,17 +507,21 @@ PerViewPart<double> HorizonSky::terrainByPart(const HorizonMap::Post& post, cons
     const double horizon = this->Map->trueElevationAt(cell, a);
     const double plane = horizon_lines::atanOf(-toward * invNz);
     auto band = [&](double top) {
+      if (!(top > plane))
+        return 0.0;
       const ElevationTerms terms = lowTerms(top);
-      return top > plane ? toward * (terms.along - 0.5 * plane) + normal.z * terms.up : 0.0;
+      return toward * (terms.along - 0.5 * plane) + normal.z * terms.up;
     };
     const double whole = band(horizon);
+    nearBands[a] = std::max(0.0, whole), farBands[a] = 0.0;
     if (!(whole > 0.0) || !nearAndFar)
-    {
-      nearBands[a] = std::max(0.0, whole), farBands[a] = 0.0;
       continue;
-    }
-    const double nearTangent = this->Map->nearTangent(post, a, nearDistance);
-    const double nearTop = nearTangent > -1e300 ? std::min(horizon, horizon_lines::atanOf(nearTangent)) : plane;
+    // Near up to the highest terrain within the near distance, unless that reaches the
+    // horizon (the walk then stops).
+    const double nearTangent = this->Map->nearTangent(post, a, nearDistance, std::tan(horizon));
+    if (nearTangent >= std::tan(horizon))
+      continue;
+    const double nearTop = nearTangent > -1e300 ? horizon_lines::atanOf(nearTangent) : plane;
     nearBands[a] = nearTop > plane ? std::min(whole, band(nearTop)) : 0.0;
     farBands[a] = whole - nearBands[a];
   }

@@ -98,6 +98,13 @@ struct Tuning
   /// seen differs, across their sectors, by more than this share of its target; below
   /// it the whole's read errs by no more than that width (docs/tuning.md).
   static constexpr double latticeSectorWidthShare = 0.25;
+  /// A post reads its sectors' near and far parts apart where the corners' two parts
+  /// of a sector differ by more than this share of its target (times its terrain
+  /// seen), or where its read by sector, erring by that difference too, would miss
+  /// the target. Their cost falls mostly on posts that see little terrain, whose reads
+  /// they hardly move: at a quarter, a tenth of the gentle 1025^2's posts took them,
+  /// for a sixth more of its points' time (docs/tuning.md).
+  static constexpr double latticeDistanceWidthShare = 1.0;
   /// A lattice cell is refined where its corners spread more than this share of their
   /// target.
   static constexpr double latticeRefineShare = 0.5;
