@@ -513,8 +513,11 @@ PerViewPart<double> HorizonSky::terrainByPart(const HorizonMap::Post& post, cons
       return toward * (terms.along - 0.5 * plane) + normal.z * terms.up;
     };
     const double whole = band(horizon);
-    nearBands[a] = std::max(0.0, whole), farBands[a] = 0.0;
-    if (!(whole > 0.0) || !nearAndFar)
+    nearBands[a] = std::max(0.0, whole);
+    if (!nearAndFar)
+      continue;
+    farBands[a] = 0.0;
+    if (!(whole > 0.0))
       continue;
     // Near up to the highest terrain within the near distance, unless that reaches the
     // horizon (the walk then stops).
@@ -528,12 +531,12 @@ PerViewPart<double> HorizonSky::terrainByPart(const HorizonMap::Post& post, cons
   for (int a = 0; a < count; ++a)
   {
     const MapAzimuths::Wedge& wedge = table.wedges[a];
-    for (const bool beyond : { false, true })
-    {
-      const double value = beyond ? farBands[a] : nearBands[a];
-      result[viewPartOf(wedge.sectorBefore, beyond)] += wedge.before * value;
-      result[viewPartOf(wedge.sectorAfter, beyond)] += wedge.after * value;
-    }
+    result[viewPartOf(wedge.sectorBefore, false)] += wedge.before * nearBands[a];
+    result[viewPartOf(wedge.sectorAfter, false)] += wedge.after * nearBands[a];
+    if (!nearAndFar)
+      continue;
+    result[viewPartOf(wedge.sectorBefore, true)] += wedge.before * farBands[a];
+    result[viewPartOf(wedge.sectorAfter, true)] += wedge.after * farBands[a];
   }
   for (double& part : result)
     part = std::max(0.0, part);
