@@ -83,12 +83,32 @@ PostLattice::Slots PostLattice::partOf(std::size_t k, int part) const
 {
   const Beyond& found = this->Found[k];
   const int q = part / 2;
+  if (part % 2 == 0)
+    return nearSlots(&found[sectorStart(q)], &found[farStart(q)]);
+  Slots result;
+  std::copy_n(&found[farStart(q)], slots, result.begin());
+  return result;
+}
+
+PostLattice::Slots PostLattice::nearSlots(const double* sector, const double* far)
+{
   Slots result;
   for (std::size_t slot = 0; slot < slots; ++slot)
-    result[slot] = part % 2 == 1 ? found[farStart(q) + slot] : found[sectorStart(q) + slot] - found[farStart(q) + slot];
-  // A near part of none but the far's rounding is none.
-  if (part % 2 == 0 && !(result[terrainSeenSlot] > 1e-9 * found[sectorStart(q) + terrainSeenSlot]))
+    result[slot] = sector[slot] - far[slot];
+  if (!(result[terrainSeenSlot] > 1e-9 * sector[terrainSeenSlot]))
     result = Slots{};
+  return result;
+}
+
+PostLattice::Slots PostLattice::meanOver(
+  const WeightedCorner* corners, int count, double total, std::size_t start) const
+{
+  Slots result{};
+  for (int n = 0; n < count; ++n)
+    for (std::size_t slot = 0; slot < slots; ++slot)
+      result[slot] += corners[n].weight * this->Found[corners[n].k][start + slot];
+  for (double& value : result)
+    value /= total;
   return result;
 }
 
@@ -336,18 +356,15 @@ bool PostLattice::readByPart(
   std::array<WeightedCorner, 4> corners;
   double total = 0.0;
   const int count = this->cornersAt(u, v, corners, total);
-  auto sum = [&](std::size_t slot) {
-    double value = 0.0;
-    for (int n = 0; n < count; ++n)
-      value += corners[n].weight * this->Found[corners[n].k][slot];
-    return value / total;
-  };
-  const double terrainSeen = count > 0 ? sum(terrainSeenSlot) : 0.0;
+  if (count == 0)
+    return false;
+  const Slots whole = this->meanOver(corners.data(), count, total, 0);
+  const double terrainSeen = whole[terrainSeenSlot];
   if (!(terrainSeen > minimumTerrainSeen))
     return false;
   read = PartRead{};
   for (int band = 0; band < maxBands; ++band)
-    read.whole[band] = sum(band) / terrainSeen;
+    read.whole[band] = whole[band] / terrainSeen;
   // The far parts of a view are much the same for the lattice's posts around: read
   // from 4 x 4 of them, their noise (few of a post's rays go far) is a quarter.
   std::array<WeightedCorner, 16> wider;
@@ -356,36 +373,21 @@ bool PostLattice::readByPart(
   for (int q = 0; q < viewSectors && byDistance; ++q)
     seesFar = seesFar || shares[viewPartOf(q, true)] > 0.0;
   const int widerCount = seesFar ? this->widerCornersAt(u, v, wider, widerTotal) : 0;
-  auto sums = [&](std::size_t start, Slots& result) {
-    for (std::size_t slot = 0; slot < slots; ++slot)
-      result[slot] = sum(start + slot);
-  };
   for (int q = 0; q < viewSectors; ++q)
   {
     const int nearPart = viewPartOf(q, false);
     if (!(shares[nearPart] > 0.0 || shares[nearPart + 1] > 0.0))
       continue;
-    Slots sector, near{}, far{};
-    sums(sectorStart(q), sector);
+    Slots sector = this->meanOver(corners.data(), count, total, sectorStart(q)), near{}, far{};
     if (byDistance)
     {
       // The near part: the sector's less the far, both between the corners; the far
       // part over the wider lattice posts where there are any; the sector, as read,
       // both.
-      sums(farStart(q), far);
-      for (std::size_t slot = 0; slot < slots; ++slot)
-        near[slot] = sector[slot] - far[slot];
-      if (!(near[terrainSeenSlot] > 1e-9 * sector[terrainSeenSlot]))
-        near = Slots{};
+      far = this->meanOver(corners.data(), count, total, farStart(q));
+      near = nearSlots(sector.data(), far.data());
       if (widerCount > 0)
-      {
-        far = Slots{};
-        for (int n = 0; n < widerCount; ++n)
-          for (std::size_t slot = 0; slot < slots; ++slot)
-            far[slot] += wider[n].weight * this->Found[wider[n].k][farStart(q) + slot];
-        for (double& value : far)
-          value /= widerTotal;
-      }
+        far = this->meanOver(wider.data(), widerCount, widerTotal, farStart(q));
       for (std::size_t slot = 0; slot < slots; ++slot)
         sector[slot] = near[slot] + far[slot];
     }

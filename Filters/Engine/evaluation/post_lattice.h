@@ -205,6 +205,11 @@ private:
   static double perTerrainSeenIn(const double* part);
   /// Lattice post k's slots of part `part` (view_sectors.h's numbering).
   Slots partOf(std::size_t k, int part) const;
+  /// A sector's near part: its slots less its far part's (none where only the far's
+  /// rounding is left).
+  static Slots nearSlots(const double* sector, const double* far);
+  /// The weighted mean of `count` lattice posts' slots from `start`.
+  Slots meanOver(const WeightedCorner* corners, int count, double total, std::size_t start) const;
 
   int Step, Nx, Ny; // lattice posts each way
   int CoarseX, CoarseY; // coarse cells each way

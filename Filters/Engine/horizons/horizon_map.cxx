@@ -482,12 +482,10 @@ double HorizonMap::nearTangent(const Post& post, int a, double distance, double 
 {
   const TerrainGrid& t = this->Terrain;
   const int nx = t.postsX(), ny = t.postsY();
-  const float* xyz = t.vertices();
-  const double z0 = xyz[3 * post.index + 2];
+  const double z0 = t.vertices()[3 * post.index + 2];
   const double u0 = static_cast<double>(post.index % nx), v0 = static_cast<double>(post.index / nx);
   const double step = this->postSpacing(), du = this->AzimuthSteps[a][0], dv = this->AzimuthSteps[a][1];
   double highest = -std::numeric_limits<double>::infinity();
-  auto height = [&](int i, int j) { return xyz[3 * (static_cast<std::size_t>(j) * nx + i) + 2]; };
   for (double r = step; r <= distance * (1.0 + 1e-9) && step > 0.0; r += step)
   {
     const double u = u0 + r * du, v = v0 + r * dv;
@@ -496,11 +494,7 @@ double HorizonMap::nearTangent(const Post& post, int a, double distance, double 
     const int i = std::min(static_cast<int>(u), nx - 2), j = std::min(static_cast<int>(v), ny - 2);
     if (i < 0 || j < 0 || (!this->Complete && !t.cellValid(i, j)))
       break;
-    // On the cell's triangles, split as TerrainGrid::cellTriangles.
-    const double s = u - i, w = v - j;
-    const double z = s + w <= 1.0 ? height(i, j) + s * (height(i + 1, j) - height(i, j)) + w * (height(i, j + 1) - height(i, j))
-                                  : height(i + 1, j + 1) + (1.0 - s) * (height(i, j + 1) - height(i + 1, j + 1)) +
-        (1.0 - w) * (height(i + 1, j) - height(i + 1, j + 1));
+    const double z = t.onCellTriangles(i, j, u - i, v - j).z;
     highest = std::max(highest, (z - z0) / r);
     if (highest >= enough)
       break;

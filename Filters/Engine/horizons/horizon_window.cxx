@@ -338,20 +338,12 @@ void HorizonMap::sweepWindow(
   const double farLastU = far.postsX() - 1, farLastV = far.postsY() - 1;
   // The far surface at (U, V) on the line, in the window's frame: on the triangle of
   // its cell that rays meet (TerrainGrid::cellTriangles' split).
-  const float* farXyz = far.vertices();
   const Vec3 farShift = far.origin() - origin;
   auto farPoint = [&](double u, double v) {
     const int i = std::clamp(static_cast<int>(std::floor(u)), 0, far.postsX() - 2);
     const int j = std::clamp(static_cast<int>(std::floor(v)), 0, far.postsY() - 2);
     const double a = std::clamp(u - i, 0.0, 1.0), b = std::clamp(v - j, 0.0, 1.0);
-    auto corner = [&](int di, int dj) {
-      const float* c = farXyz + 3 * (static_cast<std::size_t>(j + dj) * far.postsX() + i + di);
-      return Vec3(c[0], c[1], c[2]);
-    };
-    const Vec3 p10 = corner(1, 0), p01 = corner(0, 1);
-    const Vec3 at = a + b <= 1.0 ? corner(0, 0) + a * (p10 - corner(0, 0)) + b * (p01 - corner(0, 0))
-                                 : corner(1, 1) + (1.0 - a) * (p01 - corner(1, 1)) + (1.0 - b) * (p10 - corner(1, 1));
-    const Vec3 position = at + farShift;
+    const Vec3 position = far.onCellTriangles(i, j, a, b) + farShift;
     return Point{ position.x * dx + position.y * dy, position.z };
   };
 

@@ -79,6 +79,19 @@ public:
 
   /// The surface at parameter (u, v) inside a valid cell (clamped to the grid).
   TerrainPoint surfacePoint(double u, double v) const;
+  /// The point of cell (i, j) at fractions (s, t) of its sides, on the triangle rays
+  /// meet there (cellTriangles' split), relative to origin(): from the stored floats
+  /// alone, for walks that take many.
+  Vec3 onCellTriangles(int i, int j, double s, double t) const
+  {
+    auto corner = [&](int di, int dj) {
+      const float* c = &this->Xyz[3 * this->postIndex(i + di, j + dj)];
+      return Vec3(c[0], c[1], c[2]);
+    };
+    const Vec3 p10 = corner(1, 0), p01 = corner(0, 1);
+    return s + t <= 1.0 ? corner(0, 0) + s * (p10 - corner(0, 0)) + t * (p01 - corner(0, 0))
+                        : corner(1, 1) + (1.0 - s) * (p01 - corner(1, 1)) + (1.0 - t) * (p10 - corner(1, 1));
+  }
   /// Area vector (area x unit normal) of cell (i, j): both triangles.
   Vec3 cellAreaVector(int i, int j) const;
   /// Sum over the whole cells of [i0, i1) x [j0, j1) (parallel for large ranges).
