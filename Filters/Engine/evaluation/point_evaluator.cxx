@@ -309,7 +309,13 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
   // hierarchy is in both (a gather's hits read the lattice too), so it does not decide;
   // nor does the sky's (no ray corrects it), nor anything else a process computes for
   // itself (a window's own hierarchy), and pieces read where one process does.
-  const double terrainSeen = sky.terrainSeen();
+  // Its terrain seen as rays meet it, as the lattice's posts take theirs: the map's,
+  // less what the map shows beyond the rays there (most of a post's terrain where it
+  // sees little of it, a ridge's; docs/tuning.md).
+  double mapExcess = 0.0;
+  if (!this->Lattice->mapExcessAt(i, j, sky.terrainSeen(), sky.voidViewFactor, mapExcess))
+    return false;
+  const double terrainSeen = std::max(0.0, sky.terrainSeen() - mapExcess);
   const double received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
   const double largestReflected = terrainSeen * std::max(0.0, around.largestPerTerrainSeen);
   const double limit = this->Options.errorTarget(received + largestReflected) - Tuning::latticeReadBias * largestReflected;
@@ -350,6 +356,9 @@ bool PointEvaluator::readFromLattice(const HorizonMap::Post& post, const Vec3& n
     if (!readAndSpread())
       return false;
   }
+  // Read by part, it may still miss its target: it gathers then.
+  if (spread > limit)
+    return false;
   const Spectrum& perTerrainSeen = bySector ? read.perTerrainSeen : read.whole;
   for (int band = 0; band < maxBands; ++band)
     result.irradiance[ReflectedLight][band] = std::max(0.0, terrainSeen * perTerrainSeen[band]);
@@ -514,15 +523,11 @@ void PointEvaluator::gatherLatticePosts(
       gathered.reflectedByPart = light.surfacesByPart;
       gathered.variance = result.gatherVariance;
       gathered.terrainSeen = sky.terrainSeen();
-      // Its terrain by part: the surfaces its rays met there, scaled to the terrain its
-      // horizons show in all. From the map's shares instead, a part whose horizons show
-      // next to no terrain where its rays met some (the thin band of flat ground) would
-      // divide their light by next to nothing.
-      double met = 0.0;
-      for (const double seen : light.surfacesSeenByPart)
-        met += seen;
-      for (int part = 0; part < viewParts; ++part)
-        gathered.terrainByPart[part] = met > 0.0 ? gathered.terrainSeen * light.surfacesSeenByPart[part] / met : 0.0;
+      gathered.voidSeen = sky.voidViewFactor;
+      // Its terrain by part: the surfaces its rays met there. From the map's shares
+      // instead, a part whose horizons show next to no terrain where its rays met some
+      // (the thin band of flat ground) would divide their light by next to nothing.
+      gathered.terrainByPart = light.surfacesSeenByPart;
       gathered.received = receivedBesideSurfaces(result.irradiance[SunLight], sky);
       gathered.edge = !grid.surroundedByCells(i, j);
       lattice.set(i, j, gathered);

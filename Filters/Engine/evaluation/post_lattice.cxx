@@ -4,6 +4,7 @@
 #include "terrain/grid_interpolation.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -37,6 +38,8 @@ PostLattice::PostLattice(int postsX, int postsY, int step, const WorkSplit* spli
   this->Found.resize(posts);
   this->Ranges.assign(posts, { 0.0, 0.0, 0.0, 0.0, 0.0 });
   this->Received.assign(posts, 0.0);
+  this->MapExcess.assign(posts, 0.0);
+  this->ExcessBasis.assign(posts, 0.0);
   this->Edge.assign(posts, 0);
   const std::size_t cells = this->HeldCells.empty() ? 0
     : static_cast<std::size_t>(this->HeldCells.i1 - this->HeldCells.i0 + 1) * (this->HeldCells.j1 - this->HeldCells.j0 + 1);
@@ -218,7 +221,14 @@ void PostLattice::set(int i, int j, const Gathered& gathered)
   Beyond& found = this->Found[k];
   for (int band = 0; band < maxBands; ++band)
     found[band] = gathered.reflected[band];
-  found[terrainSeenSlot] = std::max(0.0, gathered.terrainSeen);
+  // Per terrain the rays met: the light is theirs, and a reading post takes the map's
+  // excess off its own terrain seen (mapExcessAt).
+  double met = 0.0;
+  for (const double seen : gathered.terrainByPart)
+    met += std::max(0.0, seen);
+  found[terrainSeenSlot] = met;
+  this->MapExcess[k] = std::max(0.0, gathered.terrainSeen) - met;
+  this->ExcessBasis[k] = excessBasisOf(gathered.terrainSeen, gathered.voidSeen);
   for (int q = 0; q < viewSectors; ++q)
   {
     const int near = viewPartOf(q, false), far = viewPartOf(q, true);
@@ -277,6 +287,8 @@ void PostLattice::share()
   this->Held.share(this->Found, latticeTag + 1);
   this->Held.share(this->Received, latticeTag + 2);
   this->Held.share(this->Edge, latticeTag + 3);
+  this->Held.share(this->MapExcess, latticeTag + 4);
+  this->Held.share(this->ExcessBasis, latticeTag + 5);
   for (std::size_t k = 0; k < this->Found.size(); ++k)
     this->findRanges(k);
 }
@@ -333,6 +345,24 @@ bool PostLattice::reflectedAt(double u, double v, Spectrum& reflected) const
       return found;
     },
     reflected);
+}
+
+bool PostLattice::mapExcessAt(double u, double v, double terrainSeen, double voidSeen, double& excess) const
+{
+  std::array<WeightedCorner, 16> wider;
+  double total = 0.0;
+  const int count = this->widerCornersAt(u, v, wider, total);
+  if (count == 0)
+    return false;
+  // A ratio of sums: the noise of a post's rays that met little terrain weighs little.
+  double excessSum = 0.0, basisSum = 0.0;
+  for (int n = 0; n < count; ++n)
+  {
+    excessSum += wider[n].weight * this->MapExcess[wider[n].k];
+    basisSum += wider[n].weight * this->ExcessBasis[wider[n].k];
+  }
+  excess = basisSum > 0.0 ? excessSum / basisSum * excessBasisOf(terrainSeen, voidSeen) : 0.0;
+  return true;
 }
 
 bool PostLattice::perTerrainSeenAt(double u, double v, Spectrum& reflected) const

@@ -38,6 +38,9 @@ class PostLattice
 {
 public:
   static constexpr int defaultStep = 4;
+  /// How far from a post, in posts, the lattice posts its reads weigh can lie: the 4 x
+  /// 4 around it (widerCornersAt) on the coarse lattice, two of its cells.
+  static constexpr int readReach = 4 * defaultStep;
   /// With `split` and a `postsHalo` >= 0 (HeldPosts::haloFor a detail distance), the
   /// lattice posts within that many posts of this process's window, and the margin its
   /// cells read; every lattice post otherwise.
@@ -61,9 +64,10 @@ public:
   {
     Spectrum reflected{};          ///< light from surfaces
     double variance = 0.0;         ///< of one ray's estimate
-    double terrainSeen = 0.0;      ///< PostSky::Value::terrainSeen()
+    double terrainSeen = 0.0;      ///< PostSky::Value::terrainSeen(), from its horizons
+    double voidSeen = 0.0;         ///< PostSky::Value::voidViewFactor
     /// The light from surfaces by the part of the view it comes from
-    /// (GatheredLight::surfacesByPart), and terrainSeen split as its rays met surfaces
+    /// (GatheredLight::surfacesByPart), and the view factor of the terrain its rays met
     /// there (GatheredLight::surfacesSeenByPart): their ratio is the mean radiosity its
     /// rays met in that part, bounded whatever its horizons show there.
     PerViewPart<Spectrum> reflectedByPart{};
@@ -113,8 +117,20 @@ public:
   /// Light from surfaces at grid parameters (u, v), bilinear between the lattice's
   /// posts; false where none around holds a value.
   bool reflectedAt(double u, double v, Spectrum& reflected) const;
-  /// The light from surfaces the lattice's posts found over the part of their
-  /// hemisphere that is terrain (1 - sky view factor), both bilinear between them at
+  /// How much more terrain a post at grid parameters (u, v) that sees `terrainSeen`
+  /// and `voidSeen` by its horizons (PostSky::Value) sees by them than rays meet. The
+  /// lattice's light per terrain seen is per terrain its rays met, and the map counts a
+  /// little more, most of it per unit of void: a read spread the light over that excess
+  /// too, 5 % too much at posts that see little terrain and much void (a ridge's). The
+  /// lattice's posts around (4 x 4, as far parts) tell their excess per unit of their
+  /// own terrain seen and void, the void weighing excessVoidWeight times as much.
+  /// False where no lattice post around holds a value.
+  bool mapExcessAt(double u, double v, double terrainSeen, double voidSeen, double& excess) const;
+  /// The map's excess over the rays, per unit of terrain seen and void (fits over the
+  /// report's terrain scenes: 2.7-8.3; docs/tuning.md).
+  static constexpr double excessVoidWeight = 4.0;
+  /// The light from surfaces the lattice's posts found over the terrain their rays
+  /// met, both bilinear between them at
   /// grid parameters (u, v): a post there that sees terrainSeen of terrain receives
   /// about terrainSeen times this. False where none around holds a value or sees
   /// terrain.
@@ -222,6 +238,13 @@ private:
   // view where the post met terrain, then over the sectors; then Around::distanceWidth's.
   std::vector<std::array<double, 5>> Ranges;
   std::vector<double> Received;
+  // Gathered::terrainSeen less the terrain its rays met; its terrain seen and void as
+  // mapExcessAt weighs them.
+  std::vector<double> MapExcess, ExcessBasis;
+  static double excessBasisOf(double terrainSeen, double voidSeen)
+  {
+    return std::max(0.0, terrainSeen) + excessVoidWeight * std::max(0.0, voidSeen);
+  }
   std::vector<std::uint8_t> Edge; // Gathered::edge
   std::vector<std::uint8_t> Refined; // per coarse cell of HeldCells
 };

@@ -21,7 +21,7 @@ int TerrainWindow::haloPosts(double detailDistance, double postSpacing)
   if (!(postSpacing > 0.0))
     return -1;
   const double posts = std::ceil(3.0 * detailDistance / postSpacing);
-  return posts > 1e8 ? -1 : static_cast<int>(posts) + 2 * PostLattice::defaultStep + 3;
+  return posts > 1e8 ? -1 : static_cast<int>(posts) + PostLattice::readReach + 3;
 }
 
 TerrainWindow::Extent TerrainWindow::requested(const Extent& whole, const Extent& piece, int halo)
@@ -37,7 +37,7 @@ void TerrainWindow::checkHeld(
   // A window cut short (a source that gave less than asked, or a spacing it misjudged)
   // would give values that depend on the ranks.
   const int reach = HeldPosts::haloFor(grid, 3.0 * detailDistance);
-  const int needed = reach < 0 ? INT_MAX : reach + latticeCell;
+  const int needed = reach < 0 ? INT_MAX : reach + PostLattice::readReach;
   const int heldLow[2] = { held.i0, held.j0 }, heldHigh[2] = { held.i1, held.j1 };
   const int wholeLow[2] = { whole.i0, whole.j0 }, wholeHigh[2] = { whole.i1, whole.j1 };
   const int pieceLow[2] = { piece.i0, piece.j0 }, pieceHigh[2] = { piece.i1, piece.j1 };

@@ -16,8 +16,8 @@ struct TerrainWindow
 
   /// Posts of halo around a piece for posts `postSpacing` m apart: a post's rays see the
   /// full resolution within `detailDistance`, its hits' shadow rays as far again, and a
-  /// lattice read at hits once more; then the lattice's steps and a margin. -1: the
-  /// whole grid.
+  /// lattice read at hits once more; then the lattice posts a read weighs
+  /// (PostLattice::readReach) and a margin. -1: the whole grid.
   static int haloPosts(double detailDistance, double postSpacing);
   /// The window to ask the source for: `piece` grown by `halo` within `whole`, its low
   /// ends moved down to a multiple of the lattice's cell from whole's.

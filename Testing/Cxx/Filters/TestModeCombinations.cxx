@@ -301,21 +301,21 @@ TEST_P(TargetErrorKnob, TradesRaysForAccuracyAsTheEstimateSays)
 }
 
 // Left at its default, the floor in W/m^2 follows TargetError (2 at 0.008): the
-// coarse end saves the shaded posts' rays too; set, it stays what the user set.
+// coarse end saves the shaded posts' rays too; set (to 0: relative alone), it stays what the user set.
 TEST_P(TargetErrorKnob, TheFloorFollowsTheKnobUnlessSet)
 {
   auto terrain = Terrain();
   auto following = Lit(terrain);
   EXPECT_EQ(following->GetTargetErrorFloor(), -1.0);
   EXPECT_DOUBLE_EQ(following->GetEffectiveTargetErrorFloor(), 2.0);
-  following->SetTargetError(0.064);
-  EXPECT_DOUBLE_EQ(following->GetEffectiveTargetErrorFloor(), 16.0);
+  following->SetTargetError(0.016);
+  EXPECT_DOUBLE_EQ(following->GetEffectiveTargetErrorFloor(), 4.0);
   std::vector<double> errors;
   const std::vector<double> coarse = Solve(following, 1, &errors);
   auto set = Lit(terrain);
-  set->SetTargetError(0.064);
-  set->SetTargetErrorFloor(2.0);
-  EXPECT_DOUBLE_EQ(set->GetEffectiveTargetErrorFloor(), 2.0);
+  set->SetTargetError(0.016);
+  set->SetTargetErrorFloor(0.0);
+  EXPECT_DOUBLE_EQ(set->GetEffectiveTargetErrorFloor(), 0.0);
   const std::vector<double> atTwo = Solve(set, 1, &errors);
   auto raysOf = [](vtkRadiosityFilter* filter) {
     return filter->GetOutput()->GetFieldData()->GetArray("RaysPerPoint")->GetTuple1(0);

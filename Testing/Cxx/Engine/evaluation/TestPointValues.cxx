@@ -97,7 +97,7 @@ std::unique_ptr<LitHills> litHills(bool lattice)
   static const SkyHierarchy sky(CieGeneralSky(12, sun), 120.0, 6);
   auto hills = std::make_unique<LitHills>();
   hills->grid = makeGrid(97, 97, 30.0, [](double x, double y) {
-    return rollingHills(x, y) + 20.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
+    return rollingHills(x, y) + 30.0 * std::sin(x / 61.0) * std::cos(y / 83.0);
   });
   hills->grid->setUniformMaterial(uniformSpectrum(0.2), Spectrum{});
   hills->options.errorTolerance = 1e-3;

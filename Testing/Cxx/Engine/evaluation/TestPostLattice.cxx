@@ -39,6 +39,7 @@ TEST(PostLattice, RefinesOnlyTheCellsWhoseCornersDisagree)
     g.reflected = uniformSpectrum(reflected);
     g.variance = 1.0;
     g.terrainSeen = 0.5;
+    g.terrainByPart[0] = 0.5; // its rays met all its horizons show
     g.received = received;
     return g;
   };
@@ -95,7 +96,7 @@ TEST(PostLattice, ReadsBetweenItsPostsAndTellsTheLargestSpreadAround)
     PostLattice::Gathered g;
     g.reflected = uniformSpectrum(reflected);
     g.variance = variance;
-    g.terrainSeen = terrainSeen;
+    g.terrainSeen = g.terrainByPart[0] = terrainSeen;
     return g;
   };
   lattice.set(4, 0, gathered(10.0, 2.0, 0.1));
@@ -138,7 +139,7 @@ TEST(PostLattice, ReadsPerTerrainSeenByTheTerrainEachCornerSees)
     PostLattice::Gathered g;
     g.reflected = uniformSpectrum(reflected);
     g.variance = 1.0;
-    g.terrainSeen = terrainSeen;
+    g.terrainSeen = g.terrainByPart[0] = terrainSeen;
     return g;
   };
   lattice.set(0, 0, gathered(0.0, 0.0)); // an open ridge: no terrain seen
@@ -177,7 +178,7 @@ TEST(PostLattice, TellsWhetherACornerLiesOnTheTerrainsEdge)
     PostLattice::Gathered g;
     g.reflected = uniformSpectrum(1.0);
     g.variance = 1.0;
-    g.terrainSeen = 0.1;
+    g.terrainSeen = g.terrainByPart[0] = 0.1;
     g.received = 100.0;
     g.edge = edge;
     return g;
@@ -299,4 +300,48 @@ TEST(PostLattice, ReadsTheNearAndFarPartsOfASectorApart)
   ASSERT_TRUE(lattice.readByPart(2.0, 3.0, shares, false, read));
   EXPECT_NEAR(read.perTerrainSeen[0], 32.0 / 0.4, 1e-12);
   EXPECT_LE(std::abs(read.perTerrainSeen[0] - 20.0), lattice.around(2, 3).distanceWidth);
+}
+
+// The lattice's light per terrain seen is per terrain its rays met; where its horizons
+// show more (between azimuths, below the horizontal), a post that reads takes that
+// excess off its own terrain seen, in proportion to its terrain seen and void as the
+// lattice's posts around found it in theirs (the void weighing excessVoidWeight).
+TEST(PostLattice, TellsHowMuchMoreTerrainTheMapShowsThanTheRaysMet)
+{
+  PostLattice lattice(9, 9, 4);
+  Spectrum per;
+  double excess = -1.0;
+  EXPECT_FALSE(lattice.mapExcessAt(2.0, 3.0, 0.05, 0.01, excess)); // nothing gathered yet
+  auto gathered = [](double terrainSeen, double voidSeen, double met) {
+    PostLattice::Gathered g;
+    g.variance = 1.0;
+    g.terrainSeen = terrainSeen;
+    g.voidSeen = voidSeen;
+    g.terrainByPart[0] = met;
+    g.reflected = uniformSpectrum(100.0 * met); // 100 W/m^2 per terrain its rays met
+    g.received = 100.0;
+    return g;
+  };
+  // Every lattice post: 0.05 of terrain and 0.01 of void by its horizons, 0.045 met by
+  // its rays: an excess of 0.005 per 0.05 + 4 x 0.01 = 0.09.
+  for (int j : { 0, 4, 8 })
+    for (int i : { 0, 4, 8 })
+      lattice.set(i, j, gathered(0.05, 0.01, 0.045));
+  ASSERT_TRUE(lattice.perTerrainSeenAt(2.0, 3.0, per));
+  EXPECT_DOUBLE_EQ(per[0], 100.0);
+  const double perBasis = 0.005 / (0.05 + PostLattice::excessVoidWeight * 0.01);
+  ASSERT_TRUE(lattice.mapExcessAt(2.0, 3.0, 0.05, 0.01, excess));
+  EXPECT_NEAR(excess, 0.005, 1e-15);
+  // A post that sees less terrain but more void (a ridge's) loses more of its terrain.
+  ASSERT_TRUE(lattice.mapExcessAt(2.0, 3.0, 0.01, 0.02, excess));
+  EXPECT_NEAR(excess, perBasis * (0.01 + PostLattice::excessVoidWeight * 0.02), 1e-15);
+  ASSERT_TRUE(lattice.mapExcessAt(2.0, 3.0, 0.0, 0.0, excess));
+  EXPECT_EQ(excess, 0.0);
+  // A lattice post whose rays met more than its horizons show has a negative excess.
+  // The 3 x 3 lattice posts around (4, 4) weigh 1 there, 1/2 beside, 1/4 diagonally
+  // (their tent weights: 3 in all beside it), each by its own terrain seen and void (a
+  // ratio of sums).
+  lattice.set(4, 4, gathered(0.05, 0.0, 0.06));
+  ASSERT_TRUE(lattice.mapExcessAt(4.0, 4.0, 0.05, 0.0, excess));
+  EXPECT_NEAR(excess, 0.05 * (-0.01 + 3.0 * 0.005) / (0.05 + 3.0 * 0.09), 1e-15);
 }

@@ -23,8 +23,9 @@ using namespace terralux_test;
 
 TEST(TerrainWindow, AWindowHoldsThreeDetailDistancesAndTheLatticeFromACellOfIt)
 {
-  // 300 m at 30 m posts: 30 posts, the lattice's two steps of 4 and a margin of 3.
-  EXPECT_EQ(TerrainWindow::haloPosts(300.0, 30.0), 41);
+  // 300 m at 30 m posts: 30 posts, the lattice posts a read weighs (16 posts) and a
+  // margin of 3.
+  EXPECT_EQ(TerrainWindow::haloPosts(300.0, 30.0), 49);
   EXPECT_EQ(TerrainWindow::haloPosts(300.0, 0.0), -1);
   EXPECT_EQ(TerrainWindow::haloPosts(1e12, 1e-3), -1);
   // The piece [40, 59]^2 of a 100^2 grid grown by 10, its low ends moved down to a
@@ -40,8 +41,8 @@ TEST(TerrainWindow, AWindowHoldsThreeDetailDistancesAndTheLatticeFromACellOfIt)
   // window with room enough, passes; one cut short, or not on the lattice, does not.
   const auto grid = makeGrid(100, 100, 30.0, [](double x, double y) { return 0.01 * x + 0.02 * y; });
   EXPECT_NO_THROW(TerrainWindow::checkHeld(*grid, 90.0, { 0, 99, 0, 99 }, { 0, 99, 0, 99 }, { 40, 59, 40, 59 }));
-  EXPECT_NO_THROW(TerrainWindow::checkHeld(*grid, 90.0, { 0, 99, 0, 99 }, { 16, 83, 16, 83 }, { 40, 59, 40, 59 }));
-  EXPECT_THROW(TerrainWindow::checkHeld(*grid, 90.0, { 0, 99, 0, 99 }, { 32, 67, 32, 67 }, { 40, 59, 40, 59 }), Error);
+  EXPECT_NO_THROW(TerrainWindow::checkHeld(*grid, 90.0, { 0, 99, 0, 99 }, { 8, 91, 8, 91 }, { 40, 59, 40, 59 }));
+  EXPECT_THROW(TerrainWindow::checkHeld(*grid, 90.0, { 0, 99, 0, 99 }, { 16, 83, 16, 83 }, { 40, 59, 40, 59 }), Error);
   EXPECT_THROW(TerrainWindow::checkHeld(*grid, 90.0, { 0, 99, 0, 99 }, { 17, 83, 16, 83 }, { 40, 59, 40, 59 }), Error);
 }
 

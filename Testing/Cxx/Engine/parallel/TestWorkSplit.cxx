@@ -377,6 +377,8 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
     g.reflected = { light, 0.5 * light, 0.25 * light };
     g.variance = 0.5 + 0.01 * i;
     g.terrainSeen = 0.3 + 0.002 * j;
+    g.terrainByPart[0] = 0.29 + 0.002 * j; // its rays met a little less than its horizons show
+    g.voidSeen = 0.01;
     g.received = 100.0;
     g.edge = i == 0 || j == 0 || i == nx - 1 || j == ny - 1;
     return g;
@@ -399,8 +401,8 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
   runOnBandsAndBlocks(nx, ny, [&](const ThreadRanks::Split& split, bool pointToPoint, std::size_t parts) {
     PostLattice lattice(nx, ny, step, &split, halo);
     gatherLattice(lattice, &split);
-    // Each share sends to (or broadcasts from) each other process, per vector (four).
-    EXPECT_EQ(split.Shares + split.Sends, 2 * 4 * static_cast<int>(pointToPoint ? parts - 1 : parts));
+    // Each share sends to (or broadcasts from) each other process, per vector (six).
+    EXPECT_EQ(split.Shares + split.Sends, 2 * 6 * static_cast<int>(pointToPoint ? parts - 1 : parts));
     const HeldPosts read(nx, ny, &split, halo); // where gather rays read
     int differences = 0, coarse = 0, refined = 0;
     for (int j = read.own().j0; j <= read.own().j1; ++j)
@@ -417,6 +419,15 @@ TEST(WorkSplit, ProcessesHoldTheLatticeWithinTheDetailDistanceOfTheirWindowsOnly
         differences += foundPer != alone.perTerrainSeenAt(i, j, q) || (foundPer && p != q);
         if (i % (2 * step) == 1 && j % (2 * step) == 1)
           (alone.gatheredInPass(i - 1 + step, j - 1, false) ? refined : coarse) += 1;
+      }
+    // The window's own posts read the 4 x 4 lattice posts around them (mapExcessAt).
+    const WorkSplit::Window window = split.window(split.part()).clampedTo(nx, ny);
+    for (int j = window.j0; j <= window.j1; ++j)
+      for (int i = window.i0; i <= window.i1; ++i)
+      {
+        double e = 0.0, f = 0.0;
+        const bool found = lattice.mapExcessAt(i, j, 0.1, 0.02, e);
+        differences += found != alone.mapExcessAt(i, j, 0.1, 0.02, f) || e != f;
       }
     EXPECT_EQ(differences, 0) << "part " << split.part() << " of " << parts;
     EXPECT_GT(coarse, 0);
