@@ -32,6 +32,9 @@ def read(path):
 
 # What VTK prints before it aborts when it cannot open its X display.
 X_SERVER_LOST = "bad X server connection"
+# An X server of the example's own that does not reset when its last client leaves
+# (between two of an example's windows, where a window opened meanwhile lost it).
+XVFB_RUN = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset"]
 
 
 def values(data, name):
@@ -45,7 +48,7 @@ class Examples(unittest.TestCase):
         out = scratch_dir()
         command = [sys.executable, os.path.join(EXAMPLES, script), "--quick", "--output-dir", out] + list(arguments)
         if not os.environ.get("DISPLAY"):
-            command = ["xvfb-run", "-a"] + command
+            command = XVFB_RUN + command
         result = subprocess.run(command, capture_output=True, text=True, timeout=600)
         for attempt in range(2):
             if result.returncode == 0 or X_SERVER_LOST not in result.stderr:
@@ -55,8 +58,8 @@ class Examples(unittest.TestCase):
             # again on an X server of its own, at a display number drawn at random, since
             # xvfb-run -a processes starting together pick the same one.
             print("%s: %s; run again under a new xvfb-run" % (script, X_SERVER_LOST), file=sys.stderr)
-            example = command[2:] if command[0] == "xvfb-run" else command
-            again = ["xvfb-run", "-a", "-n", str(random.randint(100, 899))] + example
+            example = command[len(XVFB_RUN):] if command[0] == "xvfb-run" else command
+            again = XVFB_RUN + ["-n", str(random.randint(100, 899))] + example
             result = subprocess.run(again, capture_output=True, text=True, timeout=600)
         self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
         return out, result.stdout
@@ -166,7 +169,7 @@ class Examples(unittest.TestCase):
         command = [sys.executable, os.path.join(EXAMPLES, "building_on_dem.py"), "--quick", "--output-dir",
                    scratch_dir(), "--latitude", "10", "--longitude", "10"]
         if not os.environ.get("DISPLAY"):
-            command = ["xvfb-run", "-a"] + command
+            command = XVFB_RUN + command
         result = subprocess.run(command, capture_output=True, text=True, timeout=300)
         self.assertNotEqual(result.returncode, 0)
         self.assertIn("is not on the DEM", result.stderr)
