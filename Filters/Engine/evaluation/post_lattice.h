@@ -120,20 +120,19 @@ public:
   /// How much more terrain a post at grid parameters (u, v) that sees `terrainSeen`
   /// and `voidSeen` by its horizons (PostSky::Value) sees by them than rays meet. The
   /// lattice's light per terrain seen is per terrain its rays met, and the map counts a
-  /// little more, most of it per unit of void: a read spread the light over that excess
-  /// too, 5 % too much at posts that see little terrain and much void (a ridge's). The
+  /// little more, most of it per unit of void: a read would spread the light over that
+  /// excess too, most where a post sees little terrain and much void (a ridge's). The
   /// lattice's posts around (4 x 4, as far parts) tell their excess per unit of their
   /// own terrain seen and void, the void weighing excessVoidWeight times as much.
   /// False where no lattice post around holds a value.
   bool mapExcessAt(double u, double v, double terrainSeen, double voidSeen, double& excess) const;
-  /// The map's excess over the rays, per unit of terrain seen and void (fits over the
-  /// report's terrain scenes: 2.7-8.3; docs/tuning.md).
+  /// How much more of the map's excess over the rays a unit of void holds than a unit
+  /// of terrain seen (fitted over the report's terrain scenes, docs/tuning.md).
   static constexpr double excessVoidWeight = 4.0;
   /// The light from surfaces the lattice's posts found over the terrain their rays
-  /// met, both bilinear between them at
-  /// grid parameters (u, v): a post there that sees terrainSeen of terrain receives
-  /// about terrainSeen times this. False where none around holds a value or sees
-  /// terrain.
+  /// met, both bilinear between them at grid parameters (u, v): a post there that sees
+  /// terrainSeen of terrain receives about terrainSeen times this. False where none
+  /// around holds a value or sees terrain.
   bool perTerrainSeenAt(double u, double v, Spectrum& reflected) const;
   /// What a post that sees `shares` of its terrain in each part of its view (summing
   /// to 1; HorizonSky::terrainByPart) reads: each part's light per terrain seen (the

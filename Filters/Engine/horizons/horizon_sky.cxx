@@ -521,8 +521,9 @@ PerViewPart<double> HorizonSky::terrainByPart(const HorizonMap::Post& post, cons
       continue;
     // Near up to the highest terrain within the near distance, unless that reaches the
     // horizon (the walk then stops).
-    const double nearTangent = this->Map->nearTangent(post, a, nearDistance, std::tan(horizon));
-    if (nearTangent >= std::tan(horizon))
+    const double horizonTangent = std::tan(horizon);
+    const double nearTangent = this->Map->nearTangent(post, a, nearDistance, horizonTangent);
+    if (nearTangent >= horizonTangent)
       continue;
     const double nearTop = nearTangent > -1e300 ? horizon_lines::atanOf(nearTangent) : plane;
     nearBands[a] = nearTop > plane ? std::min(whole, band(nearTop)) : 0.0;

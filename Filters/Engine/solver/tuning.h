@@ -102,8 +102,7 @@ struct Tuning
   /// of a sector differ by more than this share of its target (times its terrain
   /// seen), or where its read by sector, erring by that difference too, would miss
   /// the target. Their cost falls mostly on posts that see little terrain, whose reads
-  /// they hardly move: at a quarter, a tenth of the gentle 1025^2's posts took them,
-  /// for a sixth more of its points' time (docs/tuning.md).
+  /// they hardly move (docs/tuning.md, "Near and far terrain").
   static constexpr double latticeDistanceWidthShare = 1.0;
   /// A lattice cell is refined where its corners spread more than this share of their
   /// target.
